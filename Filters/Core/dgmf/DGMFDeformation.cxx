@@ -1,0 +1,96 @@
+#include "dgmf/DGMFDeformation.h"
+
+#include <algorithm>
+
+namespace dgmf
+{
+
+std::vector<double> GatherVertexDeformation(const DelaunayMapping& mapping, const double* displacement)
+{
+  const std::size_t vertices = mapping.GetGraph().GetNumberOfVertices();
+  std::vector<double> d(3 * vertices, 0.0);
+  if (!displacement)
+  {
+    return d;
+  }
+  for (std::size_t v = 0; v < vertices; ++v)
+  {
+    const auto vertex = static_cast<std::int32_t>(v);
+    if (mapping.GetVertexKind(vertex) == NodeKind::MovingBoundary)
+    {
+      const double* source = displacement + 3 * static_cast<std::size_t>(mapping.GetVertexNode(vertex));
+      std::copy(source, source + 3, d.begin() + 3 * v);
+    }
+  }
+  return d;
+}
+
+void InterpolateMovingDeformation(const DelaunayMapping& mapping, const double* vertexDeformation,
+  std::int32_t element, const double* weights, double d[3])
+{
+  const DelaunayGraph& graph = mapping.GetGraph();
+  const std::int32_t* vertices = graph.GetElement(element);
+  const int n = graph.GetVerticesPerElement();
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  double weight = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    if (mapping.GetVertexKind(vertices[k]) == NodeKind::MovingBoundary)
+    {
+      const double* dk = vertexDeformation + 3 * static_cast<std::size_t>(vertices[k]);
+      sum[0] += weights[k] * dk[0];
+      sum[1] += weights[k] * dk[1];
+      sum[2] += weights[k] * dk[2];
+      weight += weights[k];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    d[c] = weight > 0.0 ? sum[c] / weight : 0.0;
+  }
+}
+
+void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMotion& motion,
+  const double* displacement, DeformationMode mode, const double* points, double* deformed,
+  const ParallelFor& parallelFor)
+{
+  const std::vector<double> vertexDeformation = mode == DeformationMode::DGMF2
+    ? GatherVertexDeformation(mapping, displacement)
+    : std::vector<double>();
+  const std::size_t nodes = mapping.GetNumberOfNodes();
+  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      const std::size_t begin = block * DelaunayMapping::BlockSize;
+      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const double* x = points + 3 * i;
+        double* out = deformed + 3 * i;
+        const NodeKind kind = mapping.GetNodeKind(i);
+        const double* own = displacement ? displacement + 3 * i : nullptr;
+        if (kind == NodeKind::MovingBoundary)
+        {
+          motion.Apply(1.0, x, own, out);
+          continue;
+        }
+        if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
+        {
+          std::copy(x, x + 3, out);
+          continue;
+        }
+        if (mode == DeformationMode::DGMF1)
+        {
+          motion.Apply(f[i], x, own, out);
+          continue;
+        }
+        double d[3];
+        InterpolateMovingDeformation(
+          mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
+        motion.Apply(f[i], x, d, out);
+      }
+    });
+}
+
+} // namespace dgmf

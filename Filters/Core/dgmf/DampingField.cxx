@@ -1,0 +1,76 @@
+#include "dgmf/DampingField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace dgmf
+{
+
+void ComputeBoundaryDistanceField(
+  const DelaunayMapping& mapping, double staticR0, double* r, const ParallelFor& parallelFor)
+{
+  if (!(staticR0 >= 1.0) || !std::isfinite(staticR0))
+  {
+    throw std::invalid_argument("the static-boundary value r0s must be a finite number >= 1");
+  }
+  const DelaunayGraph& graph = mapping.GetGraph();
+  std::vector<double> vertexR0(graph.GetNumberOfVertices());
+  for (std::size_t v = 0; v < vertexR0.size(); ++v)
+  {
+    vertexR0[v] =
+      mapping.GetVertexKind(static_cast<std::int32_t>(v)) == NodeKind::MovingBoundary ? 0.0 : staticR0;
+  }
+  const int n = graph.GetVerticesPerElement();
+  const std::size_t nodes = mapping.GetNumberOfNodes();
+  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      const std::size_t begin = block * DelaunayMapping::BlockSize;
+      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        if (mapping.IsBoundaryNode(i))
+        {
+          r[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 0.0 : staticR0;
+          continue;
+        }
+        const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+        const double* w = mapping.GetWeights(i);
+        double sum = 0.0;
+        for (int k = 0; k < n; ++k)
+        {
+          sum += w[k] * vertexR0[static_cast<std::size_t>(vertices[k])];
+        }
+        r[i] = std::min(sum, staticR0); // round-off must not leave [0, r0s]
+      }
+    });
+}
+
+void ComputeDampingFactor(const DelaunayMapping& mapping, DampingFunction u, const double* r,
+  double* f, const ParallelFor& parallelFor)
+{
+  const std::size_t nodes = mapping.GetNumberOfNodes();
+  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      const std::size_t begin = block * DelaunayMapping::BlockSize;
+      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        if (mapping.IsBoundaryNode(i))
+        {
+          f[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 1.0 : 0.0;
+        }
+        else
+        {
+          f[i] = EvaluateDamping(u, r[i]);
+        }
+      }
+    });
+}
+
+} // namespace dgmf

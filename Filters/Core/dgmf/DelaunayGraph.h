@@ -1,0 +1,113 @@
+/**
+ * @file DelaunayGraph.h
+ * @brief The Delaunay triangulation (2D) or tetrahedralization (3D) of the boundary nodes.
+ */
+#ifndef dgmf_DelaunayGraph_h
+#define dgmf_DelaunayGraph_h
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace dgmf
+{
+
+/**
+ * @class DelaunayGraph
+ * @brief Delaunay graph of a set of points, built with CGAL (exact predicates, inexact
+ * constructions), with point location by a walk that starts from a hint element.
+ *
+ * Vertices are the distinct input points; coincident input points share one vertex (see
+ * GetVertexOfPoint). Elements are the finite triangles (2D) or tetrahedra (3D), numbered
+ * 0..GetNumberOfElements()-1; an element's vertices are positively oriented.
+ *
+ * In 2D only x and y are used. Building throws std::invalid_argument when the points do not span
+ * the dimension (fewer than 3 (2D) or 4 (3D) points, or all collinear (2D) or coplanar (3D)), and
+ * when a coordinate is not finite.
+ *
+ * Locate() and ComputeWeights() are const and may be called from several threads at once.
+ */
+class DelaunayGraph
+{
+public:
+  /// Result of a point location.
+  struct Location
+  {
+    std::int32_t Element = -1; ///< element containing the point (or the nearest hull element)
+    double Weights[4] = { 0, 0, 0, 0 }; ///< barycentric coordinates, >= 0, sum 1 (dim+1 used)
+    bool Outside = false; ///< the point is outside the graph's convex hull (weights clamped)
+  };
+
+  /**
+   * Builds the graph of `count` points, `xyz` holding 3 coordinates per point.
+   * @param dimension 2 or 3
+   */
+  DelaunayGraph(int dimension, const double* xyz, std::size_t count);
+  ~DelaunayGraph();
+  DelaunayGraph(const DelaunayGraph&) = delete;
+  DelaunayGraph& operator=(const DelaunayGraph&) = delete;
+
+  /// 2 or 3.
+  int GetDimension() const { return this->Dimension; }
+  /// Number of vertices of an element: 3 in 2D, 4 in 3D.
+  int GetVerticesPerElement() const { return this->Dimension + 1; }
+  /// Number of distinct points.
+  std::size_t GetNumberOfVertices() const { return this->PointOfVertex.size(); }
+  /// Number of finite elements.
+  std::size_t GetNumberOfElements() const
+  {
+    return this->ElementVertices.size() / static_cast<std::size_t>(this->Dimension + 1);
+  }
+  /// The vertex of each input point (coincident input points share a vertex).
+  const std::vector<std::int32_t>& GetVertexOfPoint() const { return this->VertexOfPoint; }
+  /// The first input point at each vertex.
+  const std::vector<std::int32_t>& GetPointOfVertex() const { return this->PointOfVertex; }
+  /// The dim+1 vertices of element `e`.
+  const std::int32_t* GetElement(std::int32_t e) const
+  {
+    return this->ElementVertices.data() + static_cast<std::size_t>(e) * (this->Dimension + 1);
+  }
+  /// Coordinates (x, y, z) of vertex `v` (z is 0 in 2D).
+  const double* GetVertexPosition(std::int32_t v) const
+  {
+    return this->VertexPositions.data() + 3 * static_cast<std::size_t>(v);
+  }
+
+  /**
+   * Barycentric coordinates of `p` in element `e` (sub-element volume over element volume).
+   * Returns true when all are >= 0, i.e. `p` is in the element up to round-off.
+   */
+  bool ComputeWeights(std::int32_t e, const double p[3], double weights[4]) const;
+
+  /**
+   * Locates `p`: tests element `hint` first (if >= 0), and otherwise walks with CGAL from it.
+   * A point outside the convex hull gets the hull element across the hull face it lies beyond,
+   * with its barycentric coordinates clamped to >= 0 and normalised, and Outside = true.
+   */
+  Location Locate(const double p[3], std::int32_t hint) const;
+
+  /**
+   * Number of elements whose orientation is not positive when the vertices are moved to
+   * `vertexPositions` (3 doubles per vertex): the graph inversions that make DGM fail.
+   */
+  std::size_t CountInvertedElements(const double* vertexPositions) const;
+
+  /// Approximate memory used by the graph, in bytes.
+  std::size_t GetMemorySize() const;
+
+private:
+  struct Impl2;
+  struct Impl3;
+  int Dimension;
+  std::unique_ptr<Impl2> Triangulation2;
+  std::unique_ptr<Impl3> Triangulation3;
+  std::vector<std::int32_t> VertexOfPoint;
+  std::vector<std::int32_t> PointOfVertex;
+  std::vector<double> VertexPositions;
+  std::vector<std::int32_t> ElementVertices;
+};
+
+} // namespace dgmf
+
+#endif

@@ -1,0 +1,109 @@
+/**
+ * @file DelaunayMapping.h
+ * @brief The Delaunay graph of a mesh's boundary nodes and the location of every mesh node in it.
+ */
+#ifndef dgmf_DelaunayMapping_h
+#define dgmf_DelaunayMapping_h
+
+#include "dgmf/DelaunayGraph.h"
+#include "dgmf/NodeKind.h"
+#include "dgmf/ParallelFor.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace dgmf
+{
+
+/**
+ * @class DelaunayMapping
+ * @brief Steps 1-3 of the paper: the Delaunay graph of all boundary nodes (static and moving) of
+ * the original mesh, the element of every other node, and its barycentric coordinates.
+ *
+ * It depends only on the original node positions and on which nodes are boundary nodes of which
+ * kind, so one mapping serves every later motion of the same mesh (time steps, design loops).
+ *
+ * Nodes are located in mesh order, in fixed blocks of BlockSize nodes: the first node of a block
+ * is located by a CGAL walk from CGAL's default start, every other node first tests the element of
+ * the previous node and walks from it only when that fails. Mesh generators number nodes with
+ * spatial coherence, so most nodes are found without a walk. Because blocks are fixed, the result
+ * does not depend on the number of threads.
+ *
+ * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
+ * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
+ * own kind: a static node coincident with a moving one stays where it is.
+ */
+class DelaunayMapping
+{
+public:
+  /// Number of nodes per location block.
+  static constexpr std::size_t BlockSize = 4096;
+
+  /**
+   * @param dimension 2 (x, y used; all nodes in a plane z = constant) or 3
+   * @param points 3 coordinates per node
+   * @param kinds the kind of every node
+   * Throws std::invalid_argument when there are no boundary nodes, when the boundary nodes do
+   * not span the dimension, or when a coordinate is not finite.
+   */
+  DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
+    const NodeKind* kinds, const ParallelFor& parallelFor);
+
+  int GetDimension() const { return this->Graph->GetDimension(); }
+  std::size_t GetNumberOfNodes() const { return this->NodeElement.size(); }
+  const DelaunayGraph& GetGraph() const { return *this->Graph; }
+
+  /// Mesh node ids of the boundary nodes, increasing (the graph's input points, in order).
+  const std::vector<std::int32_t>& GetBoundaryNodes() const { return this->BoundaryNodes; }
+
+  /// The kind of node `i`, as given.
+  NodeKind GetNodeKind(std::size_t i) const { return this->Kinds[i]; }
+  /// True if node `i` is a boundary node (a graph vertex).
+  bool IsBoundaryNode(std::size_t i) const { return this->NodeElement[i] < 0; }
+  /// The graph vertex of boundary node `i` (only valid when IsBoundaryNode(i)).
+  std::int32_t GetVertexOfNode(std::size_t i) const { return -this->NodeElement[i] - 1; }
+  /// The graph element containing interior node `i` (only valid when !IsBoundaryNode(i)).
+  std::int32_t GetElementOfNode(std::size_t i) const { return this->NodeElement[i]; }
+  /// Barycentric coordinates of interior node `i` in its element (dim+1 values).
+  const double* GetWeights(std::size_t i) const
+  {
+    return this->Weights.data() + i * static_cast<std::size_t>(this->GetDimension() + 1);
+  }
+
+  /// Kind of graph vertex `v`: StaticBoundary or MovingBoundary.
+  NodeKind GetVertexKind(std::int32_t v) const { return this->VertexKind[static_cast<std::size_t>(v)]; }
+  /// The mesh node whose prescribed motion a graph vertex carries.
+  std::int32_t GetVertexNode(std::int32_t v) const { return this->VertexNode[static_cast<std::size_t>(v)]; }
+
+  /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
+  std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
+  /// Number of interior nodes whose location needed a CGAL walk (the others hit the hint).
+  std::size_t GetNumberOfWalks() const { return this->Walks; }
+  /// Number of moving graph vertices.
+  std::size_t GetNumberOfMovingVertices() const { return this->MovingVertices; }
+  /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
+  std::size_t GetNumberOfConflictingNodes() const { return this->ConflictingNodes; }
+
+  /// Approximate memory used, in bytes.
+  std::size_t GetMemorySize() const;
+
+private:
+  std::unique_ptr<DelaunayGraph> Graph;
+  std::vector<std::int32_t> BoundaryNodes;
+  std::vector<NodeKind> Kinds;
+  /// >= 0: element of an interior node; < 0: -(vertex + 1) for a boundary node.
+  std::vector<std::int32_t> NodeElement;
+  std::vector<double> Weights;
+  std::vector<NodeKind> VertexKind;
+  std::vector<std::int32_t> VertexNode;
+  std::size_t OutsideNodes = 0;
+  std::size_t Walks = 0;
+  std::size_t MovingVertices = 0;
+  std::size_t ConflictingNodes = 0;
+};
+
+} // namespace dgmf
+
+#endif

@@ -1,0 +1,29 @@
+/**
+ * @file NodeKind.h
+ * @brief The role of a mesh node in a deformation (the values of the boundary-marker array).
+ */
+#ifndef dgmf_NodeKind_h
+#define dgmf_NodeKind_h
+
+#include <cstdint>
+
+namespace dgmf
+{
+
+/// Role of a mesh node. The numeric values are those of the boundary-marker point array.
+enum class NodeKind : std::uint8_t
+{
+  Interior = 0,       ///< moves according to the method (not a vertex of the Delaunay graph)
+  StaticBoundary = 1, ///< boundary node that stays where it is (r0 = r0s)
+  MovingBoundary = 2  ///< boundary node with a prescribed motion (r0 = 0)
+};
+
+/// True for both kinds of boundary node (the vertices of the Delaunay graph).
+inline bool IsBoundary(NodeKind kind)
+{
+  return kind != NodeKind::Interior;
+}
+
+} // namespace dgmf
+
+#endif

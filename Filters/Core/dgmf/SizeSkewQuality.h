@@ -1,0 +1,63 @@
+/**
+ * @file SizeSkewQuality.h
+ * @brief Knupp's size-skew quality of a deformed cell relative to the same cell before deformation.
+ */
+#ifndef dgmf_SizeSkewQuality_h
+#define dgmf_SizeSkewQuality_h
+
+#include <cstddef>
+#include <cstdint>
+
+namespace dgmf
+{
+
+/// Cell shapes the size-skew metric covers. Corner order is VTK's for the same cell type.
+enum class CellShape : std::uint8_t
+{
+  Triangle,
+  Quad,
+  Tetra,
+  Hexahedron,
+  Wedge,
+  Pyramid
+};
+
+/// Number of corners of a shape (3, 4, 4, 8, 6, 5).
+int GetNumberOfCorners(CellShape shape);
+
+/// Quality of one cell.
+struct CellQuality
+{
+  double SizeSkew = 0.0; ///< in [0, 1]; 1 = same shape quality as ideal and unchanged size
+  bool Inverted = false; ///< a corner's Jacobian is <= 0 in the input cell's orientation
+};
+
+/**
+ * Size-skew metric (Knupp 2003) of a cell: f_size * f_skew (quads, hexahedra), f_size * f_shape
+ * (triangles, tetrahedra), and the corner-based extension documented in
+ * Documentation/quality.md for wedges and pyramids. The reference size is the same cell in the
+ * original mesh. An inverted cell scores 0.
+ * @param original 3 coordinates per corner, before deformation
+ * @param deformed 3 coordinates per corner, after deformation
+ */
+CellQuality ComputeSizeSkew(CellShape shape, const double* original, const double* deformed);
+
+/// Mean, minimum and inverted count over a set of cells.
+struct QualitySummary
+{
+  double Mean = 0.0;           ///< mean SizeSkew over the evaluated cells (0 if none)
+  double Minimum = 0.0;        ///< minimum SizeSkew over the evaluated cells (0 if none)
+  std::size_t Inverted = 0;    ///< number of inverted cells
+  std::size_t Evaluated = 0;   ///< cells with a supported shape
+  std::size_t NotComputed = 0; ///< cells of other types (their value is NaN)
+};
+
+/**
+ * Summary of per-cell values; NaN values are counted as not computed. `inverted` (may be null)
+ * flags inverted cells. The sum is taken in a fixed order, so the result is reproducible.
+ */
+QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted, std::size_t count);
+
+} // namespace dgmf
+
+#endif

@@ -1,0 +1,31 @@
+/**
+ * @file DGMFCellQuality.h
+ * @brief Per-cell SizeSkew of a deformed grid against its original points
+ * (private to the DGMF::Filters module).
+ */
+#ifndef DGMFCellQuality_h
+#define DGMFCellQuality_h
+
+#include "dgmf/ParallelFor.h"
+#include "dgmf/SizeSkewQuality.h"
+
+class vtkDoubleArray;
+class vtkUnsignedCharArray;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/**
+ * Fills `sizeSkew` (one value per cell, NaN for cell types the metric does not cover) and
+ * `inverted` (1 for an inverted cell) and returns the summary. `mesh` gives the connectivity;
+ * `originalPoints` and `deformedPoints` hold 3 doubles per point. Triangles, quads, pixels,
+ * tetrahedra, hexahedra, voxels, wedges and pyramids are covered.
+ */
+dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
+  const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
+  const dgmf::ParallelFor& parallelFor);
+
+} // namespace dgmf_vtk
+
+#endif

@@ -1,0 +1,194 @@
+/**
+ * @class   vtkDGMFDeformFilter
+ * @brief   Deforms a volume (3D) or planar (2D) mesh when its boundary moves, by Delaunay graph
+ *          mapping with damping functions (DGMF).
+ *
+ * vtkDGMFDeformFilter takes a vtkUnstructuredGrid whose boundary nodes carry a prescribed motion
+ * and moves every other node so that the mesh follows (Wang, Qin, Zhao, Chinese Journal of
+ * Aeronautics 31(11), 2018):
+ *
+ * 1. the Delaunay graph of all boundary nodes (static and moving) is built with CGAL;
+ * 2. every node is located in a graph element (triangle or tetrahedron), with barycentric
+ *    coordinates e_i;
+ * 3. r = sum e_i r0_i, with r0 = 0 on moving and r0 = StaticBoundaryR0 on static boundary nodes;
+ * 4. the damping factor f = u(r) (u chosen by DampingFunction; 0 for r > 1);
+ * 5. x' = c + R(f angles)(x - c) + f t + f d: the rigid motion (Translation t, RotationAngles
+ *    about RotationCenter c) and the shape deformation d, all scaled by f.
+ *
+ * The shape deformation d comes from the displacement point array (input array 0, 3 components):
+ * in DGMF2 mode (default) it is given at the moving boundary nodes and interpolated inside each
+ * graph element (paper Eq. 7); in DGMF1 mode every node's own value is used.
+ *
+ * Which nodes are boundary nodes, and which of them move, comes from the optional boundary-marker
+ * point array (input array 1, integer, 1 component): 0 = interior, 1 = static boundary,
+ * 2 = moving boundary. Without it, the boundary nodes are the nodes of the mesh's boundary faces
+ * (3D) or edges (2D), and a boundary node is moving where its displacement is non-zero.
+ *
+ * A mesh is 2D when it has no 3D cell and all its nodes have the same z; the graph is then 2D and
+ * the mesh can only rotate about z. Otherwise the graph is 3D.
+ *
+ * Output: the deformed grid, with every input point, cell and field array passed through, plus
+ * - point arrays `r` and `f`;
+ * - cell arrays `SizeSkew` (Knupp's size-skew metric relative to the same input cell; NaN for
+ *   cell types it does not cover) and `Inverted` (1 for an inverted cell), when ComputeQuality is on;
+ * - field data `SizeSkewMean`, `SizeSkewMinimum`, `InvertedCellCount`, `OutsideNodeCount`.
+ * Output points are always double precision. The input is never modified.
+ *
+ * The Delaunay graph and the node locations are kept between executions while the input's
+ * points, cells and boundary classification are unchanged: changing only the motion, the
+ * damping function or the displacement values re-runs only the cheap per-node pass.
+ *
+ * @warning Threaded with vtkSMPTools (see NumberOfThreads). Results are identical for any number
+ * of threads.
+ *
+ * @sa vtkWarpVector vtkTransformFilter
+ */
+#ifndef vtkDGMFDeformFilter_h
+#define vtkDGMFDeformFilter_h
+
+#include "DGMFFiltersModule.h" // for export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkDGMFDeformFilter* New();
+  vtkTypeMacro(vtkDGMFDeformFilter, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Damping functions of the paper's Table 1.
+  enum DampingFunctions
+  {
+    U1 = 1, ///< (1-r)^2 (r+1), the paper's choice
+    U2 = 2, ///< (1-r)^4 (4r+1), Wendland C2
+    U3 = 3, ///< (1-r)^6 (35r^2+18r+3)/3, Wendland C4
+    U4 = 4, ///< (1-r)^8 (32r^3+25r^2+8r+1), Wendland C6
+    U5 = 5, ///< (1-r)^3 (r+1)
+    U6 = 6, ///< (1-r)^2
+    U7 = 7  ///< 1-r
+  };
+
+  /// Where the shape deformation of the interior nodes comes from.
+  enum DeformationModes
+  {
+    DGMF1 = 1, ///< the displacement array is given at every node
+    DGMF2 = 2  ///< given at the moving boundary nodes, interpolated by paper Eq. 7
+  };
+
+  ///@{
+  /**
+   * Damping function u(r), one of DampingFunctions. Default: U1.
+   */
+  vtkSetClampMacro(DampingFunction, int, U1, U7);
+  vtkGetMacro(DampingFunction, int);
+  void SetDampingFunctionToU1() { this->SetDampingFunction(U1); }
+  void SetDampingFunctionToU2() { this->SetDampingFunction(U2); }
+  ///@}
+
+  ///@{
+  /**
+   * r0s, the value of r on the static boundary (>= 1). Larger values shrink the region that
+   * follows the moving body. Default: 1.
+   */
+  vtkSetClampMacro(StaticBoundaryR0, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(StaticBoundaryR0, double);
+  ///@}
+
+  ///@{
+  /**
+   * Rigid translation t of the moving boundary, in mesh units. Default: (0, 0, 0).
+   */
+  vtkSetVector3Macro(Translation, double);
+  vtkGetVector3Macro(Translation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Centre c of the rigid rotation. Default: (0, 0, 0).
+   */
+  vtkSetVector3Macro(RotationCenter, double);
+  vtkGetVector3Macro(RotationCenter, double);
+  ///@}
+
+  ///@{
+  /**
+   * Rigid rotation angles, in degrees, about the x, y and z axes through RotationCenter,
+   * right-handed, applied in the order x, y, z. A 2D mesh accepts only the angle about z.
+   * Default: (0, 0, 0).
+   */
+  vtkSetVector3Macro(RotationAngles, double);
+  vtkGetVector3Macro(RotationAngles, double);
+  ///@}
+
+  ///@{
+  /**
+   * DGMF1 or DGMF2 (see DeformationModes). Default: DGMF2.
+   */
+  vtkSetClampMacro(DeformationMode, int, DGMF1, DGMF2);
+  vtkGetMacro(DeformationMode, int);
+  void SetDeformationModeToDGMF1() { this->SetDeformationMode(DGMF1); }
+  void SetDeformationModeToDGMF2() { this->SetDeformationMode(DGMF2); }
+  ///@}
+
+  ///@{
+  /**
+   * Compute the SizeSkew and Inverted cell arrays and the quality summary. Default: on.
+   */
+  vtkSetMacro(ComputeQuality, bool);
+  vtkGetMacro(ComputeQuality, bool);
+  vtkBooleanMacro(ComputeQuality, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of threads; 0 uses all hardware threads (and the STDThread vtkSMPTools backend when
+   * the active backend is Sequential). Default: 0.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * Convenience for SetInputArrayToProcess: the point array with the shape-deformation
+   * displacement (index 0) and the boundary-marker point array (index 1).
+   */
+  void SetDisplacementArrayName(const char* name);
+  void SetBoundaryMarkerArrayName(const char* name);
+  ///@}
+
+  /// True when the last execution reused the cached Delaunay graph and node locations.
+  bool GetLastExecutionReusedGraph() const { return this->LastExecutionReusedGraph; }
+
+  /// Drops the cached graph and node locations (the next execution rebuilds them).
+  void ReleaseCache();
+
+protected:
+  vtkDGMFDeformFilter();
+  ~vtkDGMFDeformFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int DampingFunction = U1;
+  double StaticBoundaryR0 = 1.0;
+  double Translation[3] = { 0.0, 0.0, 0.0 };
+  double RotationCenter[3] = { 0.0, 0.0, 0.0 };
+  double RotationAngles[3] = { 0.0, 0.0, 0.0 };
+  int DeformationMode = DGMF2;
+  bool ComputeQuality = true;
+  int NumberOfThreads = 0;
+
+private:
+  vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
+  void operator=(const vtkDGMFDeformFilter&) = delete;
+
+  int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+
+  struct Cache;
+  std::unique_ptr<Cache> GraphCache;
+  bool LastExecutionReusedGraph = false;
+};
+
+#endif

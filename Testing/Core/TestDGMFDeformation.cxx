@@ -1,0 +1,300 @@
+// DGMF steps 3-6 on synthetic node sets: boundary exactness, r and f, continuity, threads.
+#include "SyntheticNodes.h"
+
+#include "dgmf/DGMFDeformation.h"
+#include "dgmf/DampingField.h"
+#include "dgmf/DelaunayMapping.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+struct Result
+{
+  std::vector<double> R, F, Points;
+};
+
+Result Deform(const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion, const double* displacement,
+  dgmf::DeformationMode mode, double r0s, const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
+{
+  dgmf::DelaunayMapping mapping(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
+  Result result;
+  result.R.resize(set.Size());
+  result.F.resize(set.Size());
+  result.Points.resize(3 * set.Size());
+  dgmf::ComputeBoundaryDistanceField(mapping, r0s, result.R.data(), parallelFor);
+  dgmf::ComputeDampingFactor(mapping, dgmf::DampingFunction::U1, result.R.data(), result.F.data(), parallelFor);
+  dgmf::DeformDGMF(mapping, result.F.data(), motion, displacement, mode, set.Points.data(),
+    result.Points.data(), parallelFor);
+  return result;
+}
+
+/// Independent computation of the prescribed position: rotation about z then the rest.
+void Prescribed2D(const double* x, double angleDegrees, const double* c, const double* t, const double* d, double* out)
+{
+  const double a = angleDegrees * Pi / 180.0;
+  const double dx = x[0] - c[0], dy = x[1] - c[1];
+  out[0] = c[0] + std::cos(a) * dx - std::sin(a) * dy + t[0] + d[0];
+  out[1] = c[1] + std::sin(a) * dx + std::cos(a) * dy + t[1] + d[1];
+  out[2] = x[2] + t[2] + d[2];
+}
+
+/// A ParallelFor that really uses two std::threads, splitting the range in two.
+void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
+{
+  const std::size_t middle = begin + (end - begin) / 2;
+  std::thread other([&]() { if (begin < middle) body(begin, middle); });
+  if (middle < end)
+  {
+    body(middle, end);
+  }
+  other.join();
+}
+} // namespace
+
+TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion2D)
+{
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
+  dgmf::RigidMotion motion;
+  motion.AnglesDegrees[2] = 90.0;
+  motion.Center[0] = 0.1;
+  motion.Center[1] = -0.2;
+  motion.Translation[0] = 0.3;
+  motion.Translation[1] = -0.1;
+  std::vector<double> displacement(3 * set.Size(), 0.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+    {
+      displacement[3 * i] = 0.05 * set.Points[3 * i + 1]; // a shape deformation on the body
+      displacement[3 * i + 1] = -0.02;
+    }
+  }
+  const Result result = Deform(set, motion, displacement.data(), dgmf::DeformationMode::DGMF2, 1.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    const double* x = set.Points.data() + 3 * i;
+    const double* y = result.Points.data() + 3 * i;
+    if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+    {
+      double expected[3];
+      Prescribed2D(x, 90.0, motion.Center, motion.Translation, displacement.data() + 3 * i, expected);
+      const double scale = std::max(1.0, std::hypot(expected[0], expected[1]));
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(y[c], expected[c], 1e-12 * scale) << "moving node " << i;
+      }
+      EXPECT_EQ(result.R[i], 0.0);
+      EXPECT_EQ(result.F[i], 1.0);
+    }
+    else if (set.Kinds[i] == dgmf::NodeKind::StaticBoundary)
+    {
+      EXPECT_EQ(std::memcmp(x, y, 3 * sizeof(double)), 0) << "static node " << i << " moved";
+      EXPECT_EQ(result.R[i], 1.0);
+      EXPECT_EQ(result.F[i], 0.0);
+    }
+    EXPECT_GE(result.F[i], 0.0);
+    EXPECT_LE(result.F[i], 1.0);
+    EXPECT_EQ(y[2], 0.0) << "a 2D node left its plane";
+  }
+}
+
+TEST(DGMFDeformation, RIsInterpolatedBetweenZeroAndStaticR0)
+{
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
+  dgmf::RigidMotion motion;
+  const Result result = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 2.5);
+  double smallest = 1e300, largest = -1e300;
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+    {
+      EXPECT_EQ(result.R[i], 0.0);
+    }
+    else if (set.Kinds[i] == dgmf::NodeKind::StaticBoundary)
+    {
+      EXPECT_EQ(result.R[i], 2.5);
+    }
+    else
+    {
+      smallest = std::min(smallest, result.R[i]);
+      largest = std::max(largest, result.R[i]);
+    }
+    // Without a motion nothing moves.
+    EXPECT_EQ(std::memcmp(set.Points.data() + 3 * i, result.Points.data() + 3 * i, 24), 0);
+  }
+  EXPECT_GE(smallest, 0.0);
+  EXPECT_LE(largest, 2.5);
+  EXPECT_LT(smallest, 0.5); // nodes near the circle
+  EXPECT_GT(largest, 2.0);  // nodes near the square
+  EXPECT_THROW(Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 0.5), std::invalid_argument);
+}
+
+TEST(DGMFDeformation, NodeOnASharedFaceGetsTheSameDeformationFromBothElements)
+{
+  // Paper Fig. 2: a node on the edge shared by two Delaunay triangles. The weight of each
+  // triangle's opposite vertex is 0 there, so Eq. 7 gives the same d from either triangle.
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare(16, 8, 0);
+  dgmf::DelaunayMapping mapping(2, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  const dgmf::DelaunayGraph& graph = mapping.GetGraph();
+  std::vector<double> displacement(3 * set.Size(), 0.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    displacement[3 * i] = set.Points[3 * i] * 0.3 + 0.1;
+    displacement[3 * i + 1] = -set.Points[3 * i + 1] * 0.7;
+  }
+  const std::vector<double> vertexDeformation = dgmf::GatherVertexDeformation(mapping, displacement.data());
+  int sharedEdgesTested = 0;
+  const auto elements = static_cast<std::int32_t>(graph.GetNumberOfElements());
+  for (std::int32_t a = 0; a < elements; ++a)
+  {
+    for (std::int32_t b = a + 1; b < elements; ++b)
+    {
+      const std::int32_t* va = graph.GetElement(a);
+      const std::int32_t* vb = graph.GetElement(b);
+      std::vector<std::int32_t> shared;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (va[i] == vb[j])
+            shared.push_back(va[i]);
+      if (shared.size() != 2)
+        continue;
+      // Only meaningful when an opposite vertex is moving: its weight must vanish on the edge.
+      bool oppositeMoving = false;
+      for (int i = 0; i < 3; ++i)
+      {
+        for (const std::int32_t v : { va[i], vb[i] })
+        {
+          if (v != shared[0] && v != shared[1] &&
+            mapping.GetVertexKind(v) == dgmf::NodeKind::MovingBoundary)
+          {
+            oppositeMoving = true;
+          }
+        }
+      }
+      if (!oppositeMoving)
+        continue;
+      // A point on the shared edge, at 3/8 of its length.
+      const double* p0 = graph.GetVertexPosition(shared[0]);
+      const double* p1 = graph.GetVertexPosition(shared[1]);
+      const double p[3] = { p0[0] + 0.375 * (p1[0] - p0[0]), p0[1] + 0.375 * (p1[1] - p0[1]), 0.0 };
+      double wa[4], wb[4];
+      graph.ComputeWeights(a, p, wa);
+      graph.ComputeWeights(b, p, wb);
+      double da[3], db[3];
+      dgmf::InterpolateMovingDeformation(mapping, vertexDeformation.data(), a, wa, da);
+      dgmf::InterpolateMovingDeformation(mapping, vertexDeformation.data(), b, wb, db);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(da[c], db[c], 1e-12) << "elements " << a << " and " << b;
+      }
+      ++sharedEdgesTested;
+    }
+  }
+  EXPECT_GT(sharedEdgesTested, 20);
+}
+
+TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion3D)
+{
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox();
+  dgmf::RigidMotion motion;
+  motion.AnglesDegrees[0] = 20.0;
+  motion.AnglesDegrees[1] = -35.0;
+  motion.AnglesDegrees[2] = 50.0;
+  motion.Translation[0] = 0.4;
+  motion.Translation[2] = -0.3;
+  const Result result = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0);
+  // Independent rotation: Rz(c) Ry(b) Rx(a), right-handed.
+  const double a = 20.0 * Pi / 180, b = -35.0 * Pi / 180, c = 50.0 * Pi / 180;
+  const double Rx[3][3] = { { 1, 0, 0 }, { 0, std::cos(a), -std::sin(a) }, { 0, std::sin(a), std::cos(a) } };
+  const double Ry[3][3] = { { std::cos(b), 0, std::sin(b) }, { 0, 1, 0 }, { -std::sin(b), 0, std::cos(b) } };
+  const double Rz[3][3] = { { std::cos(c), -std::sin(c), 0 }, { std::sin(c), std::cos(c), 0 }, { 0, 0, 1 } };
+  double RyRx[3][3] = {}, R[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        RyRx[i][j] += Ry[i][k] * Rx[k][j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        R[i][j] += Rz[i][k] * RyRx[k][j];
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    const double* x = set.Points.data() + 3 * i;
+    const double* y = result.Points.data() + 3 * i;
+    if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+    {
+      for (int r = 0; r < 3; ++r)
+      {
+        const double expected = R[r][0] * x[0] + R[r][1] * x[1] + R[r][2] * x[2] + motion.Translation[r];
+        EXPECT_NEAR(y[r], expected, 1e-12) << "moving node " << i;
+      }
+    }
+    else if (set.Kinds[i] == dgmf::NodeKind::StaticBoundary)
+    {
+      EXPECT_EQ(std::memcmp(x, y, 24), 0) << "static node " << i << " moved";
+    }
+    EXPECT_GE(result.F[i], 0.0);
+    EXPECT_LE(result.F[i], 1.0);
+  }
+}
+
+TEST(DGMFDeformation, InteriorNodesTurnByTheirDampedAngle)
+{
+  // Pure rotation about the circle's centre: a node at distance rho from the centre stays at rho
+  // and turns by f * angle (paper Eqs. 3-4).
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
+  dgmf::RigidMotion motion;
+  motion.AnglesDegrees[2] = 60.0;
+  const Result result = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    const double* x = set.Points.data() + 3 * i;
+    const double* y = result.Points.data() + 3 * i;
+    EXPECT_NEAR(std::hypot(x[0], x[1]), std::hypot(y[0], y[1]), 1e-12);
+    const double turned = std::remainder(std::atan2(y[1], y[0]) - std::atan2(x[1], x[0]), 2 * Pi);
+    EXPECT_NEAR(turned, result.F[i] * 60.0 * Pi / 180.0, 1e-12) << "node " << i;
+  }
+}
+
+TEST(DGMFDeformation, DGMF1UsesEachNodesOwnDisplacement)
+{
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
+  std::vector<double> displacement(3 * set.Size());
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    displacement[3 * i] = 0.1 * std::sin(set.Points[3 * i + 1]);
+    displacement[3 * i + 1] = 0.05;
+    displacement[3 * i + 2] = 0.0;
+  }
+  dgmf::RigidMotion none;
+  const Result result = Deform(set, none, displacement.data(), dgmf::DeformationMode::DGMF1, 1.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    const double f = set.Kinds[i] == dgmf::NodeKind::StaticBoundary ? 0.0 : result.F[i];
+    for (int c = 0; c < 2; ++c)
+    {
+      EXPECT_NEAR(result.Points[3 * i + c], set.Points[3 * i + c] + f * displacement[3 * i + c], 1e-15);
+    }
+  }
+}
+
+TEST(DGMFDeformation, SameBitsWithOneAndTwoThreads)
+{
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox(20000);
+  dgmf::RigidMotion motion;
+  motion.AnglesDegrees[1] = 30.0;
+  motion.Translation[2] = 0.2;
+  const Result serial = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, dgmf::SerialFor);
+  const Result threaded = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, TwoThreadFor);
+  EXPECT_EQ(std::memcmp(serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(serial.F.data(), threaded.F.data(), serial.F.size() * sizeof(double)), 0);
+}

@@ -1,0 +1,150 @@
+// The Delaunay graph (CGAL) and point location: barycentric coordinates, hints, degenerate input.
+#include "SyntheticNodes.h"
+
+#include "dgmf/DelaunayGraph.h"
+#include "dgmf/DelaunayMapping.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace
+{
+std::vector<double> BoundaryPoints(const dgmf_test::NodeSet& set)
+{
+  std::vector<double> xyz;
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (dgmf::IsBoundary(set.Kinds[i]))
+    {
+      xyz.insert(xyz.end(), set.Points.begin() + 3 * i, set.Points.begin() + 3 * i + 3);
+    }
+  }
+  return xyz;
+}
+
+/// Checks e_i >= 0, sum e_i = 1 and sum e_i x_i = p for every interior node.
+void CheckWeights(const dgmf_test::NodeSet& set)
+{
+  dgmf::DelaunayMapping mapping(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  const dgmf::DelaunayGraph& graph = mapping.GetGraph();
+  const int n = graph.GetVerticesPerElement();
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (mapping.IsBoundaryNode(i))
+    {
+      continue;
+    }
+    const double* w = mapping.GetWeights(i);
+    const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+    double sum = 0.0;
+    double p[3] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < n; ++k)
+    {
+      ASSERT_GE(w[k], 0.0) << "node " << i;
+      sum += w[k];
+      const double* x = graph.GetVertexPosition(vertices[k]);
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] += w[k] * x[c];
+      }
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-14) << "node " << i;
+    for (int c = 0; c < set.Dimension; ++c)
+    {
+      EXPECT_NEAR(p[c], set.Points[3 * i + c], 1e-12) << "node " << i << " coordinate " << c;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000u);
+  EXPECT_EQ(mapping.GetNumberOfOutsideNodes(), 0u);
+}
+} // namespace
+
+TEST(DelaunayGraph, BarycentricCoordinatesReproducePositions2D)
+{
+  CheckWeights(dgmf_test::CircleInSquare());
+}
+
+TEST(DelaunayGraph, BarycentricCoordinatesReproducePositions3D)
+{
+  CheckWeights(dgmf_test::SphereInBox());
+}
+
+TEST(DelaunayGraph, ElementsArePositivelyOriented)
+{
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox(10);
+  const std::vector<double> xyz = BoundaryPoints(set);
+  dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
+  EXPECT_GT(graph.GetNumberOfElements(), 100u);
+  std::vector<double> positions;
+  for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
+  {
+    const double* x = graph.GetVertexPosition(static_cast<std::int32_t>(v));
+    positions.insert(positions.end(), x, x + 3);
+  }
+  EXPECT_EQ(graph.CountInvertedElements(positions.data()), 0u);
+  // Mirroring every vertex inverts every element.
+  for (std::size_t k = 0; k < positions.size(); k += 3)
+  {
+    positions[k] = -positions[k];
+  }
+  EXPECT_EQ(graph.CountInvertedElements(positions.data()), graph.GetNumberOfElements());
+}
+
+TEST(DelaunayGraph, LocationDoesNotDependOnTheHint)
+{
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox(500);
+  const std::vector<double> xyz = BoundaryPoints(set);
+  dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
+  const double p[3] = { 2.1234, -1.5678, 3.3141 };
+  const dgmf::DelaunayGraph::Location fromScratch = graph.Locate(p, -1);
+  ASSERT_GE(fromScratch.Element, 0);
+  EXPECT_FALSE(fromScratch.Outside);
+  for (std::int32_t hint = 0; hint < static_cast<std::int32_t>(graph.GetNumberOfElements()); hint += 37)
+  {
+    const dgmf::DelaunayGraph::Location fromHint = graph.Locate(p, hint);
+    EXPECT_EQ(fromHint.Element, fromScratch.Element) << "hint " << hint;
+  }
+}
+
+TEST(DelaunayGraph, PointOutsideTheHullGetsTheNearestHullElement)
+{
+  const double square[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+  dgmf::DelaunayGraph graph(2, square, 4);
+  ASSERT_EQ(graph.GetNumberOfElements(), 2u);
+  const double p[3] = { 2.0, 0.5, 0.0 };
+  const dgmf::DelaunayGraph::Location location = graph.Locate(p, -1);
+  EXPECT_TRUE(location.Outside);
+  ASSERT_GE(location.Element, 0);
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_GE(location.Weights[k], 0.0);
+    sum += location.Weights[k];
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-15);
+}
+
+TEST(DelaunayGraph, CoincidentPointsShareAVertex)
+{
+  const double points[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0 };
+  dgmf::DelaunayGraph graph(2, points, 5);
+  EXPECT_EQ(graph.GetNumberOfVertices(), 4u);
+  EXPECT_EQ(graph.GetVertexOfPoint()[1], graph.GetVertexOfPoint()[3]);
+  EXPECT_EQ(graph.GetPointOfVertex()[graph.GetVertexOfPoint()[3]], 1);
+}
+
+TEST(DelaunayGraph, DegenerateInputIsRejected)
+{
+  const double collinear[] = { 0, 0, 0, 1, 1, 0, 2, 2, 0, 3, 3, 0 };
+  EXPECT_THROW(dgmf::DelaunayGraph(2, collinear, 4), std::invalid_argument);
+  const double coplanar[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0 };
+  EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5), std::invalid_argument);
+  const double notFinite[] = { 0, 0, 0, 1, 0, 0, NAN, 1, 0 };
+  EXPECT_THROW(dgmf::DelaunayGraph(2, notFinite, 3), std::invalid_argument);
+  EXPECT_THROW(dgmf::DelaunayGraph(4, collinear, 4), std::invalid_argument);
+}

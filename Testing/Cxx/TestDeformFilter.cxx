@@ -1,0 +1,473 @@
+// vtkDGMFDeformFilter on the shipped meshes: boundary exactness, quality, array pass-through,
+// input safety, caching, threads and bad input.
+#include "vtkDGMFDeformFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// Reads a shipped mesh and checks it is not empty (Debian 12's expat can make reads come back empty).
+vtkSmartPointer<vtkUnstructuredGrid> ReadData(const std::string& name, vtkIdType points, vtkIdType cells)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/" + name).c_str());
+  reader->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = reader->GetOutput();
+  EXPECT_EQ(mesh->GetNumberOfPoints(), points) << name;
+  EXPECT_EQ(mesh->GetNumberOfCells(), cells) << name;
+  return mesh;
+}
+
+/// Collects the error messages a VTK object emits.
+struct ErrorCatcher
+{
+  std::vector<std::string> Messages;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        static_cast<ErrorCatcher*>(clientData)->Messages.emplace_back(
+          callData ? static_cast<const char*>(callData) : "");
+      });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
+    object->AddObserver(vtkCommand::WarningEvent, this->Command);
+  }
+  bool Contains(const std::string& text) const
+  {
+    for (const std::string& m : this->Messages)
+    {
+      if (m.find(text) != std::string::npos)
+        return true;
+    }
+    return false;
+  }
+};
+
+double Field(vtkUnstructuredGrid* mesh, const char* name)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+  EXPECT_NE(a, nullptr) << name;
+  return a ? a->GetTuple1(0) : NAN;
+}
+
+/// Checks that moving nodes are exactly at x' = R(angle about z)(x - c) + c + t and static ones did not move.
+void CheckBoundaryExactness2D(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, double angle,
+  const double c[3], const double t[3])
+{
+  vtkDataArray* marker = input->GetPointData()->GetArray("BoundaryMarker");
+  ASSERT_NE(marker, nullptr);
+  const double a = angle * Pi / 180.0;
+  int moving = 0, fixed = 0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double x[3], y[3];
+    input->GetPoint(i, x);
+    output->GetPoint(i, y);
+    const int kind = static_cast<int>(marker->GetTuple1(i));
+    if (kind == 2)
+    {
+      const double ex = c[0] + std::cos(a) * (x[0] - c[0]) - std::sin(a) * (x[1] - c[1]) + t[0];
+      const double ey = c[1] + std::sin(a) * (x[0] - c[0]) + std::cos(a) * (x[1] - c[1]) + t[1];
+      const double scale = std::max(1.0, std::hypot(ex, ey));
+      EXPECT_NEAR(y[0], ex, 1e-12 * scale) << "moving node " << i;
+      EXPECT_NEAR(y[1], ey, 1e-12 * scale) << "moving node " << i;
+      ++moving;
+    }
+    else if (kind == 1)
+    {
+      EXPECT_EQ(std::memcmp(x, y, sizeof(x)), 0) << "static node " << i << " moved";
+      ++fixed;
+    }
+    EXPECT_EQ(y[2], x[2]);
+  }
+  EXPECT_GT(moving, 10);
+  EXPECT_GT(fixed, 10);
+}
+
+/// A byte-level fingerprint of a mesh: points, connectivity, and every array's values.
+std::string Fingerprint(vtkUnstructuredGrid* mesh)
+{
+  std::string bytes;
+  auto append = [&bytes](vtkDataArray* a)
+  {
+    bytes += a->GetName() ? a->GetName() : "";
+    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+    {
+      const double v = a->GetVariantValue(i).ToDouble();
+      bytes.append(reinterpret_cast<const char*>(&v), sizeof(v));
+    }
+  };
+  append(mesh->GetPoints()->GetData());
+  append(mesh->GetCells()->GetConnectivityArray());
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(mesh->GetPointData()),
+         static_cast<vtkFieldData*>(mesh->GetCellData()), mesh->GetFieldData() })
+  {
+    for (int k = 0; k < data->GetNumberOfArrays(); ++k)
+    {
+      if (data->GetArray(k))
+        append(data->GetArray(k));
+    }
+  }
+  return bytes;
+}
+} // namespace
+
+// Mesh sizes of the shipped files (Data/README.md).
+constexpr vtkIdType CirclePoints = CIRCLE_POINTS;
+constexpr vtkIdType CircleCells = CIRCLE_CELLS;
+constexpr vtkIdType SpherePoints = SPHERE_POINTS;
+constexpr vtkIdType SphereCells = SPHERE_CELLS;
+
+TEST(DeformFilter, RotatingCircle90DegreesHasNoInvertedCell)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetRotationAngles(0, 0, 90);
+  filter->Update();
+  vtkUnstructuredGrid* out = filter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), CirclePoints);
+  const double zero[3] = { 0, 0, 0 };
+  CheckBoundaryExactness2D(mesh, out, 90.0, zero, zero);
+  EXPECT_EQ(Field(out, "InvertedCellCount"), 0.0);
+  const double mean = Field(out, "SizeSkewMean");
+  const double minimum = Field(out, "SizeSkewMinimum");
+  std::cout << "rotating circle, 90 degrees, DGMF u1: SizeSkew mean " << mean << ", minimum "
+            << minimum << std::endl;
+  EXPECT_GT(minimum, 0.0);
+  EXPECT_LE(minimum, mean);
+  EXPECT_LE(mean, 1.0);
+}
+
+TEST(DeformFilter, RAndFOnTheBoundary)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetStaticBoundaryR0(1.5);
+  filter->SetRotationAngles(0, 0, 30);
+  filter->Update();
+  vtkUnstructuredGrid* out = filter->GetOutput();
+  vtkDataArray* r = out->GetPointData()->GetArray("r");
+  vtkDataArray* f = out->GetPointData()->GetArray("f");
+  vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
+  ASSERT_TRUE(r && f && marker);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const int kind = static_cast<int>(marker->GetTuple1(i));
+    if (kind == 2)
+    {
+      EXPECT_EQ(r->GetTuple1(i), 0.0);
+      EXPECT_EQ(f->GetTuple1(i), 1.0);
+    }
+    else if (kind == 1)
+    {
+      EXPECT_EQ(r->GetTuple1(i), 1.5);
+      EXPECT_EQ(f->GetTuple1(i), 0.0);
+    }
+    EXPECT_GE(f->GetTuple1(i), 0.0);
+    EXPECT_LE(f->GetTuple1(i), 1.0);
+  }
+}
+
+TEST(DeformFilter, SphereInBoxTranslationAndRotation)
+{
+  auto mesh = ReadData("sphere_in_box.vtu", SpherePoints, SphereCells);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetTranslation(0.5, -0.3, 0.2);
+  filter->SetRotationAngles(15, -20, 40);
+  filter->Update();
+  vtkUnstructuredGrid* out = filter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), SpherePoints);
+  EXPECT_EQ(Field(out, "InvertedCellCount"), 0.0);
+  std::cout << "sphere in box, translation + rotation: SizeSkew mean " << Field(out, "SizeSkewMean")
+            << ", minimum " << Field(out, "SizeSkewMinimum") << std::endl;
+  // Rigid motion of the sphere: distances between moving nodes are preserved, and the sphere's
+  // centre (the origin) moved by the translation: |y - t| = |x| for every sphere node.
+  vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3], y[3];
+    mesh->GetPoint(i, x);
+    out->GetPoint(i, y);
+    const int kind = static_cast<int>(marker->GetTuple1(i));
+    if (kind == 2)
+    {
+      const double before = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+      const double after = std::sqrt((y[0] - 0.5) * (y[0] - 0.5) + (y[1] + 0.3) * (y[1] + 0.3) +
+        (y[2] - 0.2) * (y[2] - 0.2));
+      EXPECT_NEAR(after, before, 1e-12);
+    }
+    else if (kind == 1)
+    {
+      EXPECT_EQ(std::memcmp(x, y, sizeof(x)), 0) << "static node " << i << " moved";
+    }
+  }
+}
+
+TEST(DeformFilter, EveryInputArrayReachesTheOutputAndTheInputIsUntouched)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  // Extra arrays of several kinds.
+  vtkNew<vtkFloatArray> pointFloat;
+  pointFloat->SetName("Temperature");
+  pointFloat->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    pointFloat->SetValue(i, static_cast<float>(i) * 0.5f);
+  mesh->GetPointData()->AddArray(pointFloat);
+  vtkNew<vtkIntArray> cellInt;
+  cellInt->SetName("Zone");
+  cellInt->SetNumberOfTuples(mesh->GetNumberOfCells());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfCells(); ++i)
+    cellInt->SetValue(i, static_cast<int>(i % 7));
+  mesh->GetCellData()->AddArray(cellInt);
+  vtkNew<vtkStringArray> fieldString;
+  fieldString->SetName("CaseName");
+  fieldString->InsertNextValue("circle");
+  mesh->GetFieldData()->AddArray(fieldString);
+
+  const std::string before = Fingerprint(mesh);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetDisplacementArrayName("Displacement");
+  filter->SetRotationAngles(0, 0, 45);
+  filter->Update();
+  EXPECT_EQ(Fingerprint(mesh), before) << "the input was modified";
+
+  vtkUnstructuredGrid* out = filter->GetOutput();
+  for (int k = 0; k < mesh->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    vtkAbstractArray* in = mesh->GetPointData()->GetAbstractArray(k);
+    vtkAbstractArray* o = out->GetPointData()->GetAbstractArray(in->GetName());
+    ASSERT_NE(o, nullptr) << in->GetName();
+    EXPECT_EQ(o->GetDataType(), in->GetDataType());
+    EXPECT_EQ(o->GetNumberOfValues(), in->GetNumberOfValues());
+    for (vtkIdType v = 0; v < in->GetNumberOfValues(); ++v)
+      ASSERT_EQ(o->GetVariantValue(v), in->GetVariantValue(v)) << in->GetName();
+  }
+  ASSERT_NE(out->GetCellData()->GetArray("Zone"), nullptr);
+  EXPECT_EQ(out->GetCellData()->GetArray("Zone")->GetDataType(), VTK_INT);
+  EXPECT_EQ(out->GetCellData()->GetArray("Zone")->GetTuple1(13), 13 % 7);
+  auto* name = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("CaseName"));
+  ASSERT_NE(name, nullptr);
+  EXPECT_EQ(name->GetValue(0), "circle");
+  EXPECT_NE(out->GetPointData()->GetArray("r"), nullptr);
+  EXPECT_NE(out->GetPointData()->GetArray("f"), nullptr);
+  ASSERT_NE(out->GetCellData()->GetArray("SizeSkew"), nullptr);
+  EXPECT_EQ(out->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), mesh->GetNumberOfCells());
+  EXPECT_NE(out->GetCellData()->GetArray("Inverted"), nullptr);
+}
+
+TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetRotationAngles(0, 0, 30);
+  filter->Update();
+  EXPECT_FALSE(filter->GetLastExecutionReusedGraph());
+
+  // New motion and damping function: the graph is reused, and the result equals a fresh filter's.
+  filter->SetRotationAngles(0, 0, 75);
+  filter->SetDampingFunction(vtkDGMFDeformFilter::U2);
+  filter->Update();
+  EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+  vtkNew<vtkDGMFDeformFilter> fresh;
+  fresh->SetInputData(mesh);
+  fresh->SetBoundaryMarkerArrayName("BoundaryMarker");
+  fresh->SetRotationAngles(0, 0, 75);
+  fresh->SetDampingFunction(vtkDGMFDeformFilter::U2);
+  fresh->Update();
+  EXPECT_EQ(Fingerprint(filter->GetOutput()), Fingerprint(fresh->GetOutput()));
+
+  // A new marking (one interior node made static) rebuilds the graph.
+  vtkNew<vtkUnstructuredGrid> remarked;
+  remarked->DeepCopy(mesh);
+  vtkDataArray* marker = remarked->GetPointData()->GetArray("BoundaryMarker");
+  vtkIdType interior = 0;
+  while (marker->GetTuple1(interior) != 0)
+    ++interior;
+  marker->SetTuple1(interior, 1);
+  marker->Modified();
+  filter->SetInputData(remarked);
+  filter->Update();
+  EXPECT_FALSE(filter->GetLastExecutionReusedGraph());
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("r")->GetTuple1(interior), 1.0);
+
+  // Moved input points rebuild the graph too.
+  vtkNew<vtkUnstructuredGrid> moved;
+  moved->DeepCopy(mesh);
+  double p[3];
+  moved->GetPoint(interior, p);
+  p[0] += 1e-3;
+  moved->GetPoints()->SetPoint(interior, p);
+  filter->SetInputData(moved);
+  filter->Update();
+  EXPECT_FALSE(filter->GetLastExecutionReusedGraph());
+  filter->SetRotationAngles(0, 0, 10);
+  filter->Update();
+  EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+}
+
+TEST(DeformFilter, SameBitsWithOneAndTwoThreads)
+{
+  auto mesh = ReadData("sphere_in_box.vtu", SpherePoints, SphereCells);
+  std::string results[2];
+  for (int threads = 1; threads <= 2; ++threads)
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(mesh);
+    filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+    filter->SetRotationAngles(10, 20, 30);
+    filter->SetNumberOfThreads(threads);
+    filter->Update();
+    results[threads - 1] = Fingerprint(filter->GetOutput());
+  }
+  EXPECT_EQ(results[0], results[1]);
+}
+
+TEST(DeformFilter, BoundaryFoundFromTheMeshWhenThereIsNoMarker)
+{
+  // The rotation given as a displacement of the circle nodes, without the marker array: the
+  // circle (non-zero displacement) moves, the square (zero displacement) is static.
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  vtkNew<vtkUnstructuredGrid> input;
+  input->DeepCopy(mesh);
+  vtkDataArray* marker = input->GetPointData()->GetArray("BoundaryMarker");
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("RotationDisplacement");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(input->GetNumberOfPoints());
+  const double a = 20.0 * Pi / 180.0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    input->GetPoint(i, x);
+    double d[3] = { 0, 0, 0 };
+    if (marker->GetTuple1(i) == 2)
+    {
+      d[0] = std::cos(a) * x[0] - std::sin(a) * x[1] - x[0];
+      d[1] = std::sin(a) * x[0] + std::cos(a) * x[1] - x[1];
+    }
+    displacement->SetTuple(i, d);
+  }
+  input->GetPointData()->AddArray(displacement);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(input);
+  filter->SetDisplacementArrayName("RotationDisplacement");
+  filter->Update();
+  vtkUnstructuredGrid* out = filter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), CirclePoints);
+  const double zero[3] = { 0, 0, 0 };
+  CheckBoundaryExactness2D(input, out, 20.0, zero, zero);
+  vtkDataArray* r = out->GetPointData()->GetArray("r");
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    const double expected = marker->GetTuple1(i) == 2 ? 0.0 : marker->GetTuple1(i) == 1 ? 1.0 : -1.0;
+    if (expected >= 0.0)
+      EXPECT_EQ(r->GetTuple1(i), expected) << "node " << i;
+    else
+      EXPECT_TRUE(r->GetTuple1(i) > 0.0 && r->GetTuple1(i) < 1.0) << "interior node " << i;
+  }
+}
+
+TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  struct Case
+  {
+    std::string Name;
+    std::function<void(vtkDGMFDeformFilter*, vtkUnstructuredGrid*)> Setup;
+    std::string Message;
+  };
+  vtkNew<vtkDoubleArray> twoComponents;
+  twoComponents->SetName("Flat");
+  twoComponents->SetNumberOfComponents(2);
+  twoComponents->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  twoComponents->Fill(0.0);
+  vtkNew<vtkDoubleArray> realMarker;
+  realMarker->SetName("RealMarker");
+  realMarker->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  realMarker->Fill(1.0);
+  vtkNew<vtkUnstructuredGrid> withBadArrays;
+  withBadArrays->DeepCopy(mesh);
+  withBadArrays->GetPointData()->AddArray(twoComponents);
+  withBadArrays->GetPointData()->AddArray(realMarker);
+  vtkNew<vtkUnstructuredGrid> empty;
+
+  const std::vector<Case> cases = {
+    { "missing marker array",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetBoundaryMarkerArrayName("NoSuchArray"); },
+      "'NoSuchArray' is not a point array" },
+    { "missing displacement array",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) {
+        f->SetBoundaryMarkerArrayName("BoundaryMarker");
+        f->SetDisplacementArrayName("Nope");
+      },
+      "'Nope' is not a point array" },
+    { "displacement with 2 components",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetDisplacementArrayName("Flat"); },
+      "it must have 3" },
+    { "marker that is not an integer array",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetBoundaryMarkerArrayName("RealMarker"); },
+      "must be an integer array" },
+    { "no array selected", [](vtkDGMFDeformFilter*, vtkUnstructuredGrid*) {}, "Select a boundary-marker array" },
+    { "rotation about x of a 2D mesh",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) {
+        f->SetBoundaryMarkerArrayName("BoundaryMarker");
+        f->SetRotationAngles(10, 0, 0);
+      },
+      "2D mesh" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    ErrorCatcher errors(filter);
+    c.Setup(filter, withBadArrays);
+    filter->SetInputData(withBadArrays);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.Name;
+    EXPECT_TRUE(errors.Contains(c.Message)) << c.Name << ": got "
+                                            << (errors.Messages.empty() ? "no message" : errors.Messages[0]);
+  }
+  vtkNew<vtkDGMFDeformFilter> filter;
+  ErrorCatcher errors(filter);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetInputData(empty);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.Contains("empty"));
+}
