@@ -36,7 +36,8 @@ INTERIOR, STATIC, MOVING = 0, 1, 2
 MARKER_ARRAY = "BoundaryMarker"
 DISPLACEMENT_ARRAY = "Displacement"
 
-_GMSH_CELL_TYPE = {2: 2, 3: 4}  # dimension -> gmsh element type (3-node triangle, 4-node tetrahedron)
+# dimension -> gmsh element type (2: 3-node triangle, 4: 4-node tetrahedron)
+_GMSH_CELL_TYPE = {2: 2, 3: 4}
 _VTK_CELL_TYPE = {2: VTK_TRIANGLE, 3: VTK_TETRA}
 
 # Options fixed so that two runs give the same mesh (and a user's gmshrc cannot change it).
@@ -62,14 +63,16 @@ _GMSH_OPTIONS = {
 
 def parse_args(description, size_min, size_max, dist_max):
     """Command line of a case script: an output path and the grading parameters."""
-    parser = argparse.ArgumentParser(description=description)
+    parser = argparse.ArgumentParser(description=description,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("output", help="path of the .vtu file to write")
     parser.add_argument("--size-min", type=float, default=size_min,
                         help="element size on the moving body (default %(default)s)")
     parser.add_argument("--size-max", type=float, default=size_max,
                         help="element size far from the body (default %(default)s)")
     parser.add_argument("--dist-max", type=float, default=dist_max,
-                        help="distance from the body at which size-max is reached (default %(default)s)")
+                        help="distance from the body where size-max is reached "
+                             "(default %(default)s)")
     return parser.parse_args()
 
 
@@ -241,8 +244,9 @@ def write_and_check(grid, path):
     reader.SetFileName(path)
     reader.Update()
     back = reader.GetOutput()
-    assert back.GetNumberOfPoints() == grid.GetNumberOfPoints(), f"{path}: point count differs on read"
-    assert back.GetNumberOfCells() == grid.GetNumberOfCells(), f"{path}: cell count differs on read"
+    counts = (back.GetNumberOfPoints(), back.GetNumberOfCells())
+    expected = (grid.GetNumberOfPoints(), grid.GetNumberOfCells())
+    assert counts == expected, f"{path}: read back {counts} points/cells, wrote {expected}"
     assert back.GetPointData().GetArray(MARKER_ARRAY) is not None, f"{path}: {MARKER_ARRAY} lost"
 
 

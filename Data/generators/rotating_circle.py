@@ -1,4 +1,5 @@
-"""Rotating circle (paper Fig. 7): circle of radius 1 at the origin in a square of side 10, triangles.
+"""Rotating circle (paper Fig. 7): circle of radius 1 at the origin in a square of side 10,
+triangles.
 
 Usage: pvpython rotating_circle.py OUTPUT.vtu [--size-min 0.1] [--size-max 0.8] [--dist-max 4]
 """
@@ -6,6 +7,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # keep Data/generators free of __pycache__
 import gmsh  # noqa: E402
 import meshgen  # noqa: E402
 

@@ -7,6 +7,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # keep Data/generators free of __pycache__
 import gmsh  # noqa: E402
 import meshgen  # noqa: E402
 

@@ -1,9 +1,9 @@
 """Twisted bar (paper Fig. 10): a bar 10 long and 1 thick (x in [-5, 5], y in [-0.5, 0.5]) in the
 outer rectangle x in [-45, 45], y in [-30, 60], triangles.
 
-The outer domain holds the bar, with at least 18 units to spare, after the bump
-y1 = y + A exp(1 - 1/(1 - (x/4)^2)) with A = 32 followed by a rotation of up to 45 degrees (either
-sense) about the origin; see Data/README.md.
+The outer domain keeps the bar at least 21 units (two bar lengths) away from it after the bump
+y1 = y + A exp(1 - 1/(1 - (x/4)^2)) with A = 32 combined with a rotation of up to 45 degrees (either
+sense, either order) about the origin: the bar then stays in x in [-23.1, 23.1], y in [-3.9, 32.5].
 
 Usage: pvpython twisted_bar.py OUTPUT.vtu [--size-min 0.1] [--size-max 4] [--dist-max 16]
 """
@@ -11,6 +11,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # keep Data/generators free of __pycache__
 import gmsh  # noqa: E402
 import meshgen  # noqa: E402
 

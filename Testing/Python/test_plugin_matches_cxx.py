@@ -37,7 +37,7 @@ def main():
         % (reference.GetNumberOfPoints(), source.GetNumberOfPoints()))
 
     reader = simple.XMLUnstructuredGridReader(FileName=[args.data])
-    deform = simple.DGMFDeform(Input=reader)
+    deform = DGMFDeform(Input=reader)  # noqa: F821 (defined by LoadPlugin)
     deform.BoundaryMarkerArray = ["POINTS", "BoundaryMarker"]
     deform.DisplacementArray = ["POINTS", "Displacement"]
     deform.RotationCenter = [0.0, 0.0, 0.0]
