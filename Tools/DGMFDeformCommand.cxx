@@ -37,6 +37,7 @@ const char* const Usage =
   "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
   "  --marker NAME           boundary-marker point array (default BoundaryMarker if present)\n"
   "  --displacement NAME     displacement point array (default Displacement if present)\n"
+  "  --method NAME           dgmf (default), dgm, dgrbf, rbf or idw\n"
   "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
   "  --damping 1..7          damping function u1..u7 (default 1)\n"
   "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
@@ -89,6 +90,20 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(const std::string& path)
   return mesh;
 }
 
+/// The filter's method for a command-line name, or -1.
+int MethodFromName(const std::string& name)
+{
+  const char* const names[] = { "dgmf", "dgm", "dgrbf", "rbf", "idw" };
+  for (int m = 0; m < 5; ++m)
+  {
+    if (name == names[m])
+    {
+      return m;
+    }
+  }
+  return -1;
+}
+
 double FieldValue(vtkUnstructuredGrid* mesh, const char* name)
 {
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
@@ -131,6 +146,10 @@ int main(int argc, char* argv[])
     else if (option == "--translate" && ReadDoubles(argc, argv, i, 3, v))
     {
       filter->SetTranslation(v);
+    }
+    else if (option == "--method" && i + 1 < argc && MethodFromName(argv[i + 1]) >= 0)
+    {
+      filter->SetMethod(MethodFromName(argv[++i]));
     }
     else if (option == "--mode" && ReadDoubles(argc, argv, i, 1, v) && (v[0] == 1 || v[0] == 2))
     {

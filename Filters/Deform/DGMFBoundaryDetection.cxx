@@ -12,6 +12,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 #include <utility>
 
@@ -19,7 +20,13 @@ namespace dgmf_vtk
 {
 namespace
 {
-void FindBoundaryNodes3D(vtkUnstructuredGrid* mesh, std::vector<std::uint8_t>& flags)
+void AddFacet(BoundaryFacets& facets, const vtkIdType* ids, vtkIdType count)
+{
+  facets.Ids.insert(facets.Ids.end(), ids, ids + count);
+  facets.Offsets.push_back(static_cast<vtkIdType>(facets.Ids.size()));
+}
+
+void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
   // The geometry filter works on a structure-only copy, so no array of the input goes through it.
   vtkNew<vtkUnstructuredGrid> structure;
@@ -35,20 +42,19 @@ void FindBoundaryNodes3D(vtkUnstructuredGrid* mesh, std::vector<std::uint8_t>& f
   {
     return;
   }
+  std::vector<vtkIdType> original;
   auto faces = vtk::TakeSmartPointer(boundary->GetPolys()->NewIterator());
   for (faces->GoToFirstCell(); !faces->IsDoneWithTraversal(); faces->GoToNextCell())
   {
     vtkIdType npts;
     const vtkIdType* pts;
     faces->GetCurrentCell(npts, pts);
+    original.resize(static_cast<std::size_t>(npts));
     for (vtkIdType k = 0; k < npts; ++k)
     {
-      const auto id = static_cast<std::size_t>(ids->GetTuple1(pts[k]));
-      if (id < flags.size())
-      {
-        flags[id] = 1;
-      }
+      original[k] = static_cast<vtkIdType>(ids->GetTuple1(pts[k]));
     }
+    AddFacet(facets, original.data(), npts);
   }
 }
 
@@ -60,14 +66,15 @@ struct PairHash
   }
 };
 
-void FindBoundaryNodes2D(vtkUnstructuredGrid* mesh, std::vector<std::uint8_t>& flags)
+void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
   // Count how many 2D cells use each edge (keyed by its end nodes); edges used once are on the
-  // boundary, and all their nodes (with mid-edge nodes of higher-order cells) are boundary nodes.
+  // boundary.
   using EdgeKey = std::pair<vtkIdType, vtkIdType>;
   std::unordered_map<EdgeKey, int, PairHash> uses;
   uses.reserve(static_cast<std::size_t>(2 * mesh->GetNumberOfCells()));
   vtkNew<vtkGenericCell> cell;
+  std::vector<vtkIdType> ids;
   for (int pass = 0; pass < 2; ++pass)
   {
     for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
@@ -89,10 +96,8 @@ void FindBoundaryNodes2D(vtkUnstructuredGrid* mesh, std::vector<std::uint8_t>& f
         }
         else if (uses[key] == 1)
         {
-          for (vtkIdType k = 0; k < edge->GetNumberOfIds(); ++k)
-          {
-            flags[static_cast<std::size_t>(edge->GetId(k))] = 1;
-          }
+          ids.assign(edge->GetPointer(0), edge->GetPointer(0) + edge->GetNumberOfIds());
+          AddFacet(facets, ids.data(), edge->GetNumberOfIds());
         }
       }
     }
@@ -100,18 +105,68 @@ void FindBoundaryNodes2D(vtkUnstructuredGrid* mesh, std::vector<std::uint8_t>& f
 }
 } // namespace
 
-std::vector<std::uint8_t> FindBoundaryNodes(vtkUnstructuredGrid* mesh, int dimension)
+BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension)
 {
-  std::vector<std::uint8_t> flags(static_cast<std::size_t>(mesh->GetNumberOfPoints()), 0);
+  BoundaryFacets facets;
   if (dimension == 2)
   {
-    FindBoundaryNodes2D(mesh, flags);
+    FindBoundaryEdges(mesh, facets);
   }
   else
   {
-    FindBoundaryNodes3D(mesh, flags);
+    FindBoundaryFaces(mesh, facets);
+  }
+  return facets;
+}
+
+std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints)
+{
+  std::vector<std::uint8_t> flags(static_cast<std::size_t>(numberOfPoints), 0);
+  for (vtkIdType id : facets.Ids)
+  {
+    if (id >= 0 && id < numberOfPoints)
+    {
+      flags[static_cast<std::size_t>(id)] = 1;
+    }
   }
   return flags;
+}
+
+std::vector<double> ComputeBoundaryNodeWeights(
+  const BoundaryFacets& facets, const double* points, vtkIdType numberOfPoints, int dimension)
+{
+  std::vector<double> weights(static_cast<std::size_t>(numberOfPoints), 0.0);
+  for (std::size_t f = 0; f < facets.Size(); ++f)
+  {
+    const vtkIdType* ids = facets.Ids.data() + facets.Offsets[f];
+    const vtkIdType count = facets.Offsets[f + 1] - facets.Offsets[f];
+    double measure = 0.0;
+    if (dimension == 2)
+    {
+      const double* a = points + 3 * ids[0];
+      const double* b = points + 3 * ids[1];
+      measure = std::hypot(b[0] - a[0], b[1] - a[1]);
+    }
+    else
+    {
+      // Polygon area from its Newell normal.
+      double normal[3] = { 0.0, 0.0, 0.0 };
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        const double* p = points + 3 * ids[k];
+        const double* q = points + 3 * ids[(k + 1) % count];
+        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+      }
+      measure = 0.5 * std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    }
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      weights[static_cast<std::size_t>(ids[k])] += measure / static_cast<double>(count);
+    }
+  }
+  return weights;
 }
 
 } // namespace dgmf_vtk

@@ -1,10 +1,12 @@
 /**
  * @file DGMFBoundaryDetection.h
- * @brief Finds the boundary nodes of a mesh when no boundary-marker array is given
- * (private to the DGMF::Filters module).
+ * @brief The boundary of a mesh: its boundary faces (3D) or edges (2D), the boundary nodes, and
+ * the boundary area (length) each node represents (private to the DGMF::Filters module).
  */
 #ifndef DGMFBoundaryDetection_h
 #define DGMFBoundaryDetection_h
+
+#include "vtkType.h"
 
 #include <cstdint>
 #include <vector>
@@ -14,14 +16,34 @@ class vtkUnstructuredGrid;
 namespace dgmf_vtk
 {
 
+/// The boundary facets of a mesh, as lists of input point ids.
+struct BoundaryFacets
+{
+  std::vector<vtkIdType> Offsets{ 0 }; ///< facet f uses Ids[Offsets[f] .. Offsets[f+1])
+  std::vector<vtkIdType> Ids;
+
+  std::size_t Size() const { return this->Offsets.size() - 1; }
+};
+
 /**
- * One flag per point: 1 for the nodes of the mesh's boundary, 0 otherwise.
- * - 3D meshes: the nodes of the boundary faces of the 3D cells, from vtkGeometryFilter (faces used
- *   by one cell), plus the nodes of any 2D cell of the grid (typically boundary patches).
- * - 2D meshes: the nodes of the edges used by exactly one 2D cell.
+ * The boundary of a mesh.
+ * - 3D meshes: the faces used by one 3D cell, from vtkGeometryFilter, plus any 2D cell of the
+ *   grid (typically boundary patches).
+ * - 2D meshes: the edges used by exactly one 2D cell (end nodes first, then mid-edge nodes of
+ *   higher-order cells).
  * Coincident nodes with different ids are kept apart (no point merging).
  */
-std::vector<std::uint8_t> FindBoundaryNodes(vtkUnstructuredGrid* mesh, int dimension);
+BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension);
+
+/// One flag per point: 1 for the nodes of the boundary facets.
+std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);
+
+/**
+ * One value per point: the boundary area (3D) or length (2D) a node represents, each facet's
+ * measure shared equally among its nodes; 0 for nodes on no facet. `points` holds 3 doubles per point.
+ */
+std::vector<double> ComputeBoundaryNodeWeights(
+  const BoundaryFacets& facets, const double* points, vtkIdType numberOfPoints, int dimension);
 
 } // namespace dgmf_vtk
 

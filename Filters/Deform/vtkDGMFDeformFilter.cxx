@@ -6,7 +6,12 @@
 
 #include "dgmf/DGMFDeformation.h"
 #include "dgmf/DampingField.h"
+#include "dgmf/BoundaryMotion.h"
+#include "dgmf/DGMDeformation.h"
+#include "dgmf/DGRBFDeformation.h"
 #include "dgmf/DelaunayMapping.h"
+#include "dgmf/IDWDeformation.h"
+#include "dgmf/RBFDeformation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -24,9 +29,11 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <sstream>
@@ -105,6 +112,23 @@ bool IsIntegerType(int type)
   }
 }
 
+/// Boundary nodes that carry no facet weight (marked, but on no boundary facet) get the mean.
+void FillMissingWeights(std::vector<double>& weights)
+{
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (double w : weights)
+  {
+    sum += w;
+    count += w > 0.0 ? 1 : 0;
+  }
+  const double mean = count > 0 ? sum / static_cast<double>(count) : 1.0;
+  for (double& w : weights)
+  {
+    w = w > 0.0 ? w : mean;
+  }
+}
+
 bool AllFinite(const double* values, std::size_t count)
 {
   for (std::size_t i = 0; i < count; ++i)
@@ -134,24 +158,38 @@ std::string SelectedArrayName(vtkAlgorithm* algorithm, int index)
 }
 } // namespace
 
-/// What the filter keeps between executions: the graph and node locations, and r.
+/// What the filter keeps between executions: the graph and node locations, r, and the boundary.
 struct vtkDGMFDeformFilter::Cache
 {
-  // The key: what the mapping depends on.
+  // The key of the mapping: what it depends on.
   vtkDataArray* PointsArray = nullptr;
   vtkMTimeType PointsMTime = 0;
   vtkCellArray* Cells = nullptr;
   vtkMTimeType CellsMTime = 0;
   int Dimension = 0;
   std::vector<dgmf::NodeKind> Kinds;
-  // The cached values.
+  // The cached mapping and r.
   std::unique_ptr<dgmf::DelaunayMapping> Mapping;
   double StaticR0 = 0.0;
   std::vector<double> R;
-  // Boundary detection (when there is no marker array) depends on the cells only.
+  // The mesh's boundary facets depend on the cells only.
   vtkCellArray* BoundaryCells = nullptr;
   vtkMTimeType BoundaryCellsMTime = 0;
-  std::vector<std::uint8_t> BoundaryFlags;
+  std::unique_ptr<dgmf_vtk::BoundaryFacets> Facets;
+};
+
+/// Everything one execution works from, checked.
+struct vtkDGMFDeformFilter::Inputs
+{
+  std::size_t NumberOfNodes = 0;
+  int Dimension = 3;
+  const double* Points = nullptr;
+  std::vector<double> PointCopy;    ///< the points as doubles, when they are not already
+  std::vector<double> Displacement; ///< 3 per node, empty when no array is selected
+  std::string DisplacementName;
+  std::vector<dgmf::NodeKind> Kinds;
+  dgmf::RigidMotion Motion;
+  dgmf::ParallelFor Parallel;
 };
 
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
@@ -208,50 +246,73 @@ int vtkDGMFDeformFilter::RequestData(
 int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
   this->LastExecutionReusedGraph = false;
+  Inputs inputs;
+  if (!this->GatherInputs(input, inputs))
+  {
+    return 0;
+  }
+  this->UpdateProgress(0.1);
+  if (this->Method == DGMF || this->Method == DGM || this->Method == DGRBF)
+  {
+    if (!this->UpdateMapping(input, inputs))
+    {
+      return 0;
+    }
+  }
+  this->UpdateProgress(0.6);
+  if (this->GetAbortExecute())
+  {
+    return 0;
+  }
+  return this->Deform(input, inputs, output) ? 1 : 0;
+}
+
+bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs)
+{
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   if (numberOfPoints == 0 || input->GetNumberOfCells() == 0)
   {
     vtkErrorMacro("The input mesh is empty (" << numberOfPoints << " points, "
                                               << input->GetNumberOfCells() << " cells).");
-    return 0;
+    return false;
   }
   const auto n = static_cast<std::size_t>(numberOfPoints);
-
-  std::vector<double> pointCopy;
-  const double* points = PointsAsDouble(input->GetPoints(), pointCopy);
-  if (!AllFinite(points, 3 * n))
+  inputs.NumberOfNodes = n;
+  inputs.Parallel = dgmf_vtk::MakeSMPParallelFor();
+  inputs.Points = PointsAsDouble(input->GetPoints(), inputs.PointCopy);
+  if (!AllFinite(inputs.Points, 3 * n))
   {
     vtkErrorMacro("The input mesh has NaN or infinite point coordinates.");
-    return 0;
+    return false;
   }
-  const int dimension = DetectDimension(input, points, n);
-  if (dimension < 0)
+  inputs.Dimension = DetectDimension(input, inputs.Points, n);
+  if (inputs.Dimension < 0)
   {
     vtkErrorMacro("The mesh has no 3D cell but its points do not all have the same z: 2D meshes "
                   "must lie in a plane z = constant.");
-    return 0;
+    return false;
   }
 
-  // --- Arrays: the displacement (index 0) and the boundary marker (index 1).
-  const std::string displacementName = SelectedArrayName(this, DisplacementArray);
+  // The displacement (index 0) and the boundary marker (index 1).
+  inputs.DisplacementName = SelectedArrayName(this, DisplacementArray);
   const std::string markerName = SelectedArrayName(this, MarkerArray);
   vtkDataArray* displacementArray = nullptr;
   vtkDataArray* markerArray = nullptr;
-  if (!displacementName.empty())
+  if (!inputs.DisplacementName.empty())
   {
-    displacementArray = input->GetPointData()->GetArray(displacementName.c_str());
+    displacementArray = input->GetPointData()->GetArray(inputs.DisplacementName.c_str());
     if (!displacementArray)
     {
-      vtkErrorMacro("The displacement array '" << displacementName
+      vtkErrorMacro("The displacement array '" << inputs.DisplacementName
                                                << "' is not a point array of the input.");
-      return 0;
+      return false;
     }
     if (displacementArray->GetNumberOfComponents() != 3)
     {
-      vtkErrorMacro("The displacement array '" << displacementName << "' has "
+      vtkErrorMacro("The displacement array '" << inputs.DisplacementName << "' has "
                                                << displacementArray->GetNumberOfComponents()
                                                << " components; it must have 3.");
-      return 0;
+      return false;
     }
   }
   if (!markerName.empty())
@@ -261,41 +322,39 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     {
       vtkErrorMacro("The boundary-marker array '" << markerName
                                                   << "' is not a point array of the input.");
-      return 0;
+      return false;
     }
     if (markerArray->GetNumberOfComponents() != 1 || !IsIntegerType(markerArray->GetDataType()))
     {
       vtkErrorMacro("The boundary-marker array '"
         << markerName << "' must be an integer array with 1 component (0 = interior, "
         << "1 = static boundary, 2 = moving boundary).");
-      return 0;
+      return false;
     }
   }
   if (!displacementArray && !markerArray)
   {
     vtkErrorMacro("Select a boundary-marker array (0 = interior, 1 = static, 2 = moving) or a "
                   "displacement array (boundary nodes with a non-zero displacement move).");
-    return 0;
+    return false;
   }
-
-  std::vector<double> displacement;
   if (displacementArray)
   {
-    displacement.resize(3 * n);
+    inputs.Displacement.resize(3 * n);
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      displacementArray->GetTuple(i, displacement.data() + 3 * i);
+      displacementArray->GetTuple(i, inputs.Displacement.data() + 3 * i);
     }
-    if (!AllFinite(displacement.data(), displacement.size()))
+    if (!AllFinite(inputs.Displacement.data(), inputs.Displacement.size()))
     {
-      vtkErrorMacro("The displacement array '" << displacementName
+      vtkErrorMacro("The displacement array '" << inputs.DisplacementName
                                                << "' has NaN or infinite values.");
-      return 0;
+      return false;
     }
   }
 
-  // --- Motion.
-  dgmf::RigidMotion motion;
+  // The rigid motion.
+  dgmf::RigidMotion& motion = inputs.Motion;
   for (int c = 0; c < 3; ++c)
   {
     motion.Translation[c] = this->Translation[c];
@@ -306,32 +365,31 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     !AllFinite(motion.AnglesDegrees, 3))
   {
     vtkErrorMacro("Translation, RotationCenter and RotationAngles must be finite.");
-    return 0;
+    return false;
   }
-  if (dimension == 2)
+  if (inputs.Dimension == 2)
   {
     if (motion.AnglesDegrees[0] != 0.0 || motion.AnglesDegrees[1] != 0.0 ||
       motion.Translation[2] != 0.0)
     {
       vtkErrorMacro("This is a 2D mesh (all points at z = "
-        << points[2] << "): it can only rotate about z and translate in x and y. Set the "
+        << inputs.Points[2] << "): it can only rotate about z and translate in x and y. Set the "
         << "rotation angles about x and y and the z translation to 0.");
-      return 0;
+      return false;
     }
-    for (std::size_t i = 0; i < displacement.size(); i += 3)
+    for (std::size_t i = 0; i < inputs.Displacement.size(); i += 3)
     {
-      if (displacement[i + 2] != 0.0)
+      if (inputs.Displacement[i + 2] != 0.0)
       {
         vtkErrorMacro("This is a 2D mesh, but the displacement array '"
-          << displacementName << "' has a non-zero z component (node " << i / 3 << ").");
-        return 0;
+          << inputs.DisplacementName << "' has a non-zero z component (node " << i / 3 << ").");
+        return false;
       }
     }
   }
 
-  // --- Node kinds.
-  Cache& cache = *this->GraphCache;
-  std::vector<dgmf::NodeKind> kinds(n, dgmf::NodeKind::Interior);
+  // The kind of every node: from the marker, or from the mesh's boundary and the displacement.
+  inputs.Kinds.assign(n, dgmf::NodeKind::Interior);
   if (markerArray)
   {
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
@@ -342,63 +400,73 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
         vtkErrorMacro("The boundary-marker array '"
           << markerName << "' has the value " << value << " at point " << i
           << "; allowed values are 0 (interior), 1 (static boundary) and 2 (moving boundary).");
-        return 0;
+        return false;
       }
-      kinds[i] = static_cast<dgmf::NodeKind>(static_cast<int>(value));
+      inputs.Kinds[i] = static_cast<dgmf::NodeKind>(static_cast<int>(value));
     }
   }
   else
   {
-    vtkCellArray* cells = input->GetCells();
-    if (cache.BoundaryCells != cells || cache.BoundaryCellsMTime != cells->GetMTime() ||
-      cache.BoundaryFlags.size() != n)
-    {
-      cache.BoundaryFlags = dgmf_vtk::FindBoundaryNodes(input, dimension);
-      cache.BoundaryCells = cells;
-      cache.BoundaryCellsMTime = cells->GetMTime();
-    }
+    const std::vector<std::uint8_t> flags =
+      dgmf_vtk::FlagBoundaryNodes(this->GetBoundaryFacets(input, inputs.Dimension), numberOfPoints);
     for (std::size_t i = 0; i < n; ++i)
     {
-      if (cache.BoundaryFlags[i])
+      if (flags[i])
       {
-        const double* d = displacement.data() + 3 * i;
-        kinds[i] = (d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0) ? dgmf::NodeKind::MovingBoundary
-                                                                : dgmf::NodeKind::StaticBoundary;
+        const double* d = inputs.Displacement.data() + 3 * i;
+        inputs.Kinds[i] = (d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0)
+          ? dgmf::NodeKind::MovingBoundary
+          : dgmf::NodeKind::StaticBoundary;
       }
     }
   }
-  std::size_t moving = 0;
-  for (dgmf::NodeKind kind : kinds)
-  {
-    moving += kind == dgmf::NodeKind::MovingBoundary ? 1 : 0;
-  }
-  if (moving == 0)
+  if (std::find(inputs.Kinds.begin(), inputs.Kinds.end(), dgmf::NodeKind::MovingBoundary) ==
+    inputs.Kinds.end())
   {
     vtkWarningMacro("No node is marked as moving: the output has the input's points.");
   }
-  this->UpdateProgress(0.1);
+  return true;
+}
 
-  // --- Steps 1-3: the Delaunay graph and the node locations (cached).
-  const dgmf::ParallelFor parallelFor = dgmf_vtk::MakeSMPParallelFor();
+const dgmf_vtk::BoundaryFacets& vtkDGMFDeformFilter::GetBoundaryFacets(
+  vtkUnstructuredGrid* input, int dimension)
+{
+  Cache& cache = *this->GraphCache;
+  vtkCellArray* cells = input->GetCells();
+  if (!cache.Facets || cache.BoundaryCells != cells || cache.BoundaryCellsMTime != cells->GetMTime())
+  {
+    cache.Facets = std::make_unique<dgmf_vtk::BoundaryFacets>(
+      dgmf_vtk::FindBoundaryFacets(input, dimension));
+    cache.BoundaryCells = cells;
+    cache.BoundaryCellsMTime = cells->GetMTime();
+  }
+  return *cache.Facets;
+}
+
+bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs)
+{
+  Cache& cache = *this->GraphCache;
   vtkDataArray* pointsArray = input->GetPoints()->GetData();
   vtkCellArray* cells = input->GetCells();
   const bool reuse = cache.Mapping && cache.PointsArray == pointsArray &&
     cache.PointsMTime == pointsArray->GetMTime() && cache.Cells == cells &&
-    cache.CellsMTime == cells->GetMTime() && cache.Dimension == dimension && cache.Kinds == kinds;
-  if (!reuse)
-  {
-    cache.Mapping.reset();
-    cache.R.clear();
-    cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(
-      dimension, points, n, kinds.data(), parallelFor);
-    cache.PointsArray = pointsArray;
-    cache.PointsMTime = pointsArray->GetMTime();
-    cache.Cells = cells;
-    cache.CellsMTime = cells->GetMTime();
-    cache.Dimension = dimension;
-    cache.Kinds = std::move(kinds);
-  }
+    cache.CellsMTime == cells->GetMTime() && cache.Dimension == inputs.Dimension &&
+    cache.Kinds == inputs.Kinds;
   this->LastExecutionReusedGraph = reuse;
+  if (reuse)
+  {
+    return true;
+  }
+  cache.Mapping.reset();
+  cache.R.clear();
+  cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(inputs.Dimension, inputs.Points,
+    inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel);
+  cache.PointsArray = pointsArray;
+  cache.PointsMTime = pointsArray->GetMTime();
+  cache.Cells = cells;
+  cache.CellsMTime = cells->GetMTime();
+  cache.Dimension = inputs.Dimension;
+  cache.Kinds = inputs.Kinds;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;
   if (mapping.GetNumberOfConflictingNodes() > 0)
   {
@@ -412,55 +480,140 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
                     << " nodes lie outside the Delaunay graph of the boundary nodes (is the whole "
                        "outer boundary marked?); they use the nearest hull element.");
   }
-  this->UpdateProgress(0.6);
-  if (this->GetAbortExecute())
-  {
-    return 0;
-  }
+  return true;
+}
 
-  // --- Steps 3-4: r (cached with the mapping) and f.
-  if (cache.R.size() != n || cache.StaticR0 != this->StaticBoundaryR0)
-  {
-    cache.R.resize(n);
-    dgmf::ComputeBoundaryDistanceField(mapping, this->StaticBoundaryR0, cache.R.data(), parallelFor);
-    cache.StaticR0 = this->StaticBoundaryR0;
-  }
-  vtkNew<vtkDoubleArray> rArray;
-  rArray->SetName("r");
-  rArray->SetNumberOfTuples(numberOfPoints);
-  std::copy(cache.R.begin(), cache.R.end(), rArray->GetPointer(0));
-  vtkNew<vtkDoubleArray> fArray;
-  fArray->SetName("f");
-  fArray->SetNumberOfTuples(numberOfPoints);
-  dgmf::ComputeDampingFactor(mapping,
-    static_cast<dgmf::DampingFunction>(this->DampingFunction), cache.R.data(),
-    fArray->GetPointer(0), parallelFor);
+namespace
+{
+void AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
+}
 
-  // --- Steps 5-6: the new positions.
+void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->InsertNextValue(static_cast<vtkIdType>(value));
+  fieldData->AddArray(array);
+}
+
+const char* MethodName(int method)
+{
+  static const char* const names[] = { "DGMF", "DGM", "DGRBF", "RBF", "IDW" };
+  return names[method];
+}
+} // namespace
+
+bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
+{
+  const std::size_t n = inputs.NumberOfNodes;
+  const double* displacement = inputs.Displacement.empty() ? nullptr : inputs.Displacement.data();
   vtkNew<vtkDoubleArray> deformed;
   deformed->SetNumberOfComponents(3);
-  deformed->SetNumberOfTuples(numberOfPoints);
-  dgmf::DeformDGMF(mapping, fArray->GetPointer(0), motion,
-    displacement.empty() ? nullptr : displacement.data(),
-    static_cast<dgmf::DeformationMode>(this->DeformationMode), points, deformed->GetPointer(0),
-    parallelFor);
-  this->UpdateProgress(0.8);
+  deformed->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  double* out = deformed->GetPointer(0);
 
-  // --- Output: the input's structure and arrays, the new points, r, f and the quality.
+  // Copy the input's structure and arrays first; the method adds its own arrays and values.
   output->CopyStructure(input);
   output->GetPointData()->PassData(input->GetPointData());
   output->GetCellData()->PassData(input->GetCellData());
   output->GetFieldData()->PassData(input->GetFieldData());
+  vtkFieldData* fieldData = output->GetFieldData();
+
+  if (this->Method == DGMF)
+  {
+    Cache& cache = *this->GraphCache;
+    const dgmf::DelaunayMapping& mapping = *cache.Mapping;
+    if (cache.R.size() != n || cache.StaticR0 != this->StaticBoundaryR0)
+    {
+      cache.R.resize(n);
+      dgmf::ComputeBoundaryDistanceField(mapping, this->StaticBoundaryR0, cache.R.data(), inputs.Parallel);
+      cache.StaticR0 = this->StaticBoundaryR0;
+    }
+    vtkNew<vtkDoubleArray> rArray;
+    rArray->SetName("r");
+    rArray->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    std::copy(cache.R.begin(), cache.R.end(), rArray->GetPointer(0));
+    vtkNew<vtkDoubleArray> fArray;
+    fArray->SetName("f");
+    fArray->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    dgmf::ComputeDampingFactor(mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
+      cache.R.data(), fArray->GetPointer(0), inputs.Parallel);
+    dgmf::DeformDGMF(mapping, fArray->GetPointer(0), inputs.Motion, displacement,
+      static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out, inputs.Parallel);
+    output->GetPointData()->AddArray(rArray);
+    output->GetPointData()->AddArray(fArray);
+    AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
+  }
+  else
+  {
+    // The comparison methods interpolate the total boundary motion.
+    dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
+      inputs.Dimension, inputs.Points, n, inputs.Kinds.data(), inputs.Motion, displacement);
+    if (this->Method == DGM)
+    {
+      const dgmf::DelaunayMapping& mapping = *this->GraphCache->Mapping;
+      const std::size_t inverted =
+        dgmf::DeformDGM(mapping, boundary, inputs.Points, out, inputs.Parallel);
+      AddFieldCount(fieldData, "InvertedGraphElementCount", inverted);
+      AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
+      if (inverted > 0)
+      {
+        vtkWarningMacro(<< inverted << " Delaunay graph elements are inverted by the motion: "
+                                      "DGM's mesh may be invalid (see InvertedCellCount).");
+      }
+    }
+    else if (this->Method == DGRBF)
+    {
+      const dgmf::DelaunayMapping& mapping = *this->GraphCache->Mapping;
+      dgmf::DeformDGRBF(mapping, boundary, this->SupportRadius, inputs.Points, out, inputs.Parallel);
+      AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
+    }
+    else if (this->Method == RBF)
+    {
+      dgmf::RBFParameters parameters;
+      parameters.SupportRadius = this->SupportRadius;
+      parameters.Greedy = this->RBFGreedy;
+      parameters.GreedyTolerance = this->RBFGreedyTolerance;
+      parameters.GreedyMaximumPoints = static_cast<std::size_t>(this->RBFGreedyMaximumPoints);
+      const dgmf::RBFInterpolation rbf(boundary, parameters);
+      dgmf::DeformRBF(rbf, inputs.Points, n, out, inputs.Parallel);
+      AddFieldCount(fieldData, "RBFCentreCount", rbf.GetNumberOfCentres());
+      AddFieldValue(fieldData, "RBFBoundaryError", rbf.GetBoundaryError());
+    }
+    else
+    {
+      const std::vector<double> weights = dgmf_vtk::ComputeBoundaryNodeWeights(
+        this->GetBoundaryFacets(input, inputs.Dimension), inputs.Points,
+        static_cast<vtkIdType>(n), inputs.Dimension);
+      boundary.Weights.resize(boundary.Size());
+      for (std::size_t b = 0; b < boundary.Size(); ++b)
+      {
+        // A marked node that is on no boundary facet counts as an average node.
+        boundary.Weights[b] = weights[static_cast<std::size_t>(boundary.Nodes[b])];
+      }
+      FillMissingWeights(boundary.Weights);
+      dgmf::IDWParameters parameters;
+      parameters.Alpha = this->IDWAlpha;
+      parameters.ReferenceLength = this->IDWReferenceLength;
+      const double referenceLength =
+        dgmf::DeformIDW(boundary, parameters, inputs.Points, n, out, inputs.Parallel);
+      AddFieldValue(fieldData, "IDWReferenceLength", referenceLength);
+    }
+  }
+  vtkNew<vtkStringArray> methodName;
+  methodName->SetName("Method");
+  methodName->InsertNextValue(MethodName(this->Method));
+  fieldData->AddArray(methodName);
+  this->UpdateProgress(0.8);
+
   vtkNew<vtkPoints> newPoints;
   newPoints->SetData(deformed);
   output->SetPoints(newPoints);
-  output->GetPointData()->AddArray(rArray);
-  output->GetPointData()->AddArray(fArray);
-
-  vtkNew<vtkIdTypeArray> outsideCount;
-  outsideCount->SetName("OutsideNodeCount");
-  outsideCount->InsertNextValue(static_cast<vtkIdType>(mapping.GetNumberOfOutsideNodes()));
-  output->GetFieldData()->AddArray(outsideCount);
 
   if (this->ComputeQuality)
   {
@@ -469,29 +622,21 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     vtkNew<vtkUnsignedCharArray> inverted;
     inverted->SetName("Inverted");
     const dgmf::QualitySummary summary = dgmf_vtk::ComputeCellQuality(
-      input, points, deformed->GetPointer(0), sizeSkew, inverted, parallelFor);
+      input, inputs.Points, out, sizeSkew, inverted, inputs.Parallel);
     output->GetCellData()->AddArray(sizeSkew);
     output->GetCellData()->AddArray(inverted);
-    vtkNew<vtkDoubleArray> mean;
-    mean->SetName("SizeSkewMean");
-    mean->InsertNextValue(summary.Mean);
-    vtkNew<vtkDoubleArray> minimum;
-    minimum->SetName("SizeSkewMinimum");
-    minimum->InsertNextValue(summary.Minimum);
-    vtkNew<vtkIdTypeArray> invertedCount;
-    invertedCount->SetName("InvertedCellCount");
-    invertedCount->InsertNextValue(static_cast<vtkIdType>(summary.Inverted));
-    output->GetFieldData()->AddArray(mean);
-    output->GetFieldData()->AddArray(minimum);
-    output->GetFieldData()->AddArray(invertedCount);
+    AddFieldValue(fieldData, "SizeSkewMean", summary.Mean);
+    AddFieldValue(fieldData, "SizeSkewMinimum", summary.Minimum);
+    AddFieldCount(fieldData, "InvertedCellCount", summary.Inverted);
   }
   this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << MethodName(this->Method) << "\n";
   os << indent << "DampingFunction: U" << this->DampingFunction << "\n";
   os << indent << "StaticBoundaryR0: " << this->StaticBoundaryR0 << "\n";
   os << indent << "Translation: (" << this->Translation[0] << ", " << this->Translation[1] << ", "
@@ -501,6 +646,12 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RotationAngles: (" << this->RotationAngles[0] << ", " << this->RotationAngles[1]
      << ", " << this->RotationAngles[2] << ")\n";
   os << indent << "DeformationMode: DGMF" << this->DeformationMode << "\n";
+  os << indent << "SupportRadius: " << this->SupportRadius << "\n";
+  os << indent << "RBFGreedy: " << (this->RBFGreedy ? "on" : "off") << "\n";
+  os << indent << "RBFGreedyTolerance: " << this->RBFGreedyTolerance << "\n";
+  os << indent << "RBFGreedyMaximumPoints: " << this->RBFGreedyMaximumPoints << "\n";
+  os << indent << "IDWAlpha: " << this->IDWAlpha << "\n";
+  os << indent << "IDWReferenceLength: " << this->IDWReferenceLength << "\n";
   os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -38,6 +38,15 @@
  * points, cells and boundary classification are unchanged: changing only the motion, the
  * damping function or the displacement values re-runs only the cheap per-node pass.
  *
+ * Method selects the deformation method: DGMF (default) or one of the methods the paper compares
+ * against, with the same inputs and outputs so that methods can be compared on the same mesh:
+ * DGM (Delaunay graph mapping), DGRBF (a local RBF per graph element), RBF (global RBF
+ * interpolation with a linear polynomial, optionally with greedy centre selection) and IDW
+ * (inverse distance weighting, Luke et al. 2012). These four interpolate the total motion of the
+ * boundary nodes (rigid part plus displacement). The point arrays r and f exist for DGMF only.
+ * Method-specific field data: InvertedGraphElementCount (DGM), RBFCentreCount and
+ * RBFBoundaryError (RBF), IDWReferenceLength (IDW); every method writes the string Method.
+ *
  * @warning Threaded with vtkSMPTools (see NumberOfThreads). Results are identical for any number
  * of threads.
  *
@@ -50,6 +59,11 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
+
+namespace dgmf_vtk
+{
+struct BoundaryFacets;
+}
 
 class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkUnstructuredGridAlgorithm
 {
@@ -77,9 +91,32 @@ public:
     DGMF2 = 2  ///< given at the moving boundary nodes, interpolated by paper Eq. 7
   };
 
+  /// Deformation methods.
+  enum Methods
+  {
+    DGMF = 0,  ///< Delaunay graph mapping with damping functions (this project's method)
+    DGM = 1,   ///< Delaunay graph mapping (Liu, Qin, Xia 2006)
+    DGRBF = 2, ///< Delaunay graph with a local RBF per element (Wang, Qin, Zhao 2015)
+    RBF = 3,   ///< global RBF interpolation (de Boer et al. 2007; greedy: Rendall and Allen 2009)
+    IDW = 4    ///< inverse distance weighting (Witteveen and Bijl 2009; Luke et al. 2012)
+  };
+
   ///@{
   /**
-   * Damping function u(r), one of DampingFunctions. Default: U1.
+   * The deformation method, one of Methods. Default: DGMF.
+   */
+  vtkSetClampMacro(Method, int, DGMF, IDW);
+  vtkGetMacro(Method, int);
+  void SetMethodToDGMF() { this->SetMethod(DGMF); }
+  void SetMethodToDGM() { this->SetMethod(DGM); }
+  void SetMethodToDGRBF() { this->SetMethod(DGRBF); }
+  void SetMethodToRBF() { this->SetMethod(RBF); }
+  void SetMethodToIDW() { this->SetMethod(IDW); }
+  ///@}
+
+  ///@{
+  /**
+   * Damping function u(r) of DGMF, one of DampingFunctions. Default: U1.
    */
   vtkSetClampMacro(DampingFunction, int, U1, U7);
   vtkGetMacro(DampingFunction, int);
@@ -134,6 +171,44 @@ public:
 
   ///@{
   /**
+   * Support radius R of the Wendland C2 basis of RBF and DGRBF, in mesh units; 0 = automatic.
+   * RBF: automatic is the diagonal of the boundary nodes' bounding box; a smaller radius gives a
+   * sparse system. DGRBF: R is at least each element's longest edge; automatic is twice it.
+   * Default: 0.
+   */
+  vtkSetClampMacro(SupportRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SupportRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * RBF greedy centre selection (Rendall and Allen 2009): centres are added until the error at
+   * every boundary node is below RBFGreedyTolerance times the largest boundary displacement, or
+   * RBFGreedyMaximumPoints centres are used. Defaults: off, 1e-3, 2000.
+   */
+  vtkSetMacro(RBFGreedy, bool);
+  vtkGetMacro(RBFGreedy, bool);
+  vtkBooleanMacro(RBFGreedy, bool);
+  vtkSetClampMacro(RBFGreedyTolerance, double, 0.0, 1.0);
+  vtkGetMacro(RBFGreedyTolerance, double);
+  vtkSetClampMacro(RBFGreedyMaximumPoints, int, 1, VTK_INT_MAX);
+  vtkGetMacro(RBFGreedyMaximumPoints, int);
+  ///@}
+
+  ///@{
+  /**
+   * IDW weights w = A [(L/d)^3 + (alpha L/d)^5]: alpha (default 5) and the reference length L
+   * in mesh units (default 0 = automatic: the largest distance of a boundary node from the
+   * boundary nodes' centroid).
+   */
+  vtkSetClampMacro(IDWAlpha, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(IDWAlpha, double);
+  vtkSetClampMacro(IDWReferenceLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(IDWReferenceLength, double);
+  ///@}
+
+  ///@{
+  /**
    * Compute the SizeSkew and Inverted cell arrays and the quality summary. Default: on.
    */
   vtkSetMacro(ComputeQuality, bool);
@@ -171,12 +246,19 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  int Method = DGMF;
   int DampingFunction = U1;
   double StaticBoundaryR0 = 1.0;
   double Translation[3] = { 0.0, 0.0, 0.0 };
   double RotationCenter[3] = { 0.0, 0.0, 0.0 };
   double RotationAngles[3] = { 0.0, 0.0, 0.0 };
   int DeformationMode = DGMF2;
+  double SupportRadius = 0.0;
+  bool RBFGreedy = false;
+  double RBFGreedyTolerance = 1e-3;
+  int RBFGreedyMaximumPoints = 2000;
+  double IDWAlpha = 5.0;
+  double IDWReferenceLength = 0.0;
   bool ComputeQuality = true;
   int NumberOfThreads = 0;
 
@@ -184,7 +266,12 @@ private:
   vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
   void operator=(const vtkDGMFDeformFilter&) = delete;
 
+  struct Inputs;
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+  bool GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs);
+  bool UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs);
+  const dgmf_vtk::BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* input, int dimension);
+  bool Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output);
 
   struct Cache;
   std::unique_ptr<Cache> GraphCache;

@@ -26,7 +26,9 @@ struct NodeSet
   std::size_t Size() const { return this->Kinds.size(); }
   void Add(double x, double y, double z, dgmf::NodeKind kind)
   {
-    this->Points.insert(this->Points.end(), { x, y, z });
+    this->Points.push_back(x);
+    this->Points.push_back(y);
+    this->Points.push_back(z);
     this->Kinds.push_back(kind);
   }
 };

@@ -49,7 +49,7 @@ constexpr double kCubeRootHigh = 1e300;
  * Cube root of x in [kCubeRootLow, kCubeRootHigh], to a few ulp, several times faster than
  * std::cbrt (which otherwise dominates the cost of the 3D metrics): a bit-level first guess
  * (exponent divided by 3, a few per cent off), two Halley steps (cubic convergence) and one Newton
- * step. Only +, *, / are used, so the result is the same on every IEEE platform.
+ * step. Being plain arithmetic, it does not depend on the platform's math library.
  */
 inline double CubeRootInRange(double x)
 {

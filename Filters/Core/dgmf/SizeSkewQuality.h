@@ -37,8 +37,15 @@ struct CellQuality
  * (triangles, tetrahedra), and the corner-based extension documented in
  * Documentation/quality.md for wedges and pyramids. The reference size is the same cell in the
  * original mesh. An inverted cell scores 0.
- * @param original 3 coordinates per corner, before deformation
+ *
+ * Orientation is taken from the original cell (either handedness is accepted); a corner whose
+ * Jacobian is <= 0 in that orientation makes the deformed cell inverted (0, Inverted = true). A
+ * degenerate original cell (zero size relative to its edges, or non-finite coordinates) scores 0
+ * and is not flagged inverted. 2D cells may lie in any plane of 3D space. No allocation; safe to
+ * call concurrently.
+ * @param original 3 coordinates per corner, before deformation (GetNumberOfCorners(shape) corners)
  * @param deformed 3 coordinates per corner, after deformation
+ * @return SizeSkew in [0, 1]; NaN only for a value outside CellShape
  */
 CellQuality ComputeSizeSkew(CellShape shape, const double* original, const double* deformed);
 
