@@ -56,7 +56,8 @@ std::vector<double> Deform(const dgmf::BoundaryMotion& boundary, const dgmf_test
   const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
 {
   std::vector<double> deformed(set.Points.size());
-  dgmf::DeformIDW(boundary, parameters, set.Points.data(), set.Size(), deformed.data(), parallelFor);
+  dgmf::DeformIDW(
+    boundary, parameters, set.Points.data(), set.Size(), deformed.data(), parallelFor);
   return deformed;
 }
 
@@ -220,7 +221,8 @@ TEST(IDWDeformation, AreaWeightsPullTowardTheirNode)
   EXPECT_NEAR(weighted[0], s0, 1e-15);
   EXPECT_NEAR(weighted[1], s1, 1e-15);
   // Closer to node 1's displacement (0.1, 0.2) than with equal weights.
-  EXPECT_LT(std::hypot(weighted[0] - 0.1, weighted[1] - 0.2), std::hypot(equal[0] - 0.1, equal[1] - 0.2));
+  EXPECT_LT(std::hypot(weighted[0] - 0.1, weighted[1] - 0.2),
+    std::hypot(equal[0] - 0.1, equal[1] - 0.2));
 
   // Scaling all A_i together changes nothing.
   boundary.Weights = { 2e-3, 1e-3 };
@@ -288,7 +290,8 @@ TEST(IDWDeformation, RejectsInvalidInput)
   boundary.Weights.clear();
   dgmf::IDWParameters parameters;
   parameters.Alpha = -1.0;
-  EXPECT_THROW(dgmf::DeformIDW(boundary, parameters, x, 1, out, dgmf::SerialFor), std::invalid_argument);
+  EXPECT_THROW(
+    dgmf::DeformIDW(boundary, parameters, x, 1, out, dgmf::SerialFor), std::invalid_argument);
   EXPECT_THROW(
     dgmf::DeformIDW(dgmf::BoundaryMotion(), {}, x, 1, out, dgmf::SerialFor), std::invalid_argument);
 }

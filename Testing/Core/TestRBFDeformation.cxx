@@ -64,7 +64,8 @@ double MaximumDisplacement(const dgmf::BoundaryMotion& boundary)
 }
 
 /// Largest |s(x_i) - d_i| / max |d| over the boundary nodes, evaluated through the public API.
-double RelativeBoundaryError(const dgmf::RBFInterpolation& rbf, const dgmf::BoundaryMotion& boundary)
+double RelativeBoundaryError(
+  const dgmf::RBFInterpolation& rbf, const dgmf::BoundaryMotion& boundary)
 {
   double largest = 0.0;
   for (std::size_t i = 0; i < boundary.Size(); ++i)

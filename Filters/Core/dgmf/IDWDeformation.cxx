@@ -223,7 +223,8 @@ void CheckParameters(const BoundaryMotion& boundary, const IDWParameters& parame
     if (!std::isfinite(boundary.Positions[i]) || !std::isfinite(boundary.Displacements[i]))
     {
       throw std::invalid_argument(
-        "IDW: boundary node " + std::to_string(i / 3) + " has a non-finite position or displacement");
+        "IDW: boundary node " + std::to_string(i / 3) +
+        " has a non-finite position or displacement");
     }
   }
   if (!boundary.Weights.empty())

@@ -33,7 +33,8 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point3 = Kernel::Point_3;
 using PointMap = CGAL::Pointer_property_map<Point3>::const_type;
 /// Kd-tree over centre indices; 2D centres are stored with z = 0, so one tree type serves both.
-using TreeTraits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
+using TreeTraits =
+  CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
 using Tree = CGAL::Kd_tree<TreeTraits>;
 using Sphere = CGAL::Fuzzy_sphere<TreeTraits>;
 
@@ -261,7 +262,8 @@ void RBFInterpolation::Internals::Evaluate(const double x[3], double out[3]) con
     this->SumAllCentres<2>(p, sum);
   }
   const double y[3] = { (p.x() - this->Origin[0]) * this->InverseScale,
-    (p.y() - this->Origin[1]) * this->InverseScale, (p.z() - this->Origin[2]) * this->InverseScale };
+    (p.y() - this->Origin[1]) * this->InverseScale,
+    (p.z() - this->Origin[2]) * this->InverseScale };
   for (int c = 0; c < 3; ++c)
   {
     double value = this->Polynomial[0][c];
@@ -369,8 +371,8 @@ void RBFInterpolation::Internals::Fit(const BoundaryMotion& boundary,
         const double d2 = SquaredDistance(xi, this->Centres[j]);
         if (j == i || d2 < this->RadiusSquared)
         {
-          triplets.emplace_back(
-            static_cast<int>(j), static_cast<int>(i), Wendland(std::sqrt(d2) * this->InverseRadius));
+          triplets.emplace_back(static_cast<int>(j), static_cast<int>(i),
+            Wendland(std::sqrt(d2) * this->InverseRadius));
         }
       };
       this->Search->search(boost::make_function_output_iterator(std::ref(addEntry)), query);
@@ -650,7 +652,8 @@ RBFInterpolation::RBFInterpolation(const BoundaryMotion& boundary, const RBFPara
     if (!std::isfinite(boundary.Positions[i]) || !std::isfinite(boundary.Displacements[i]))
     {
       throw std::invalid_argument(
-        "RBF: boundary node " + std::to_string(i / 3) + " has a non-finite position or displacement");
+        "RBF: boundary node " + std::to_string(i / 3) +
+        " has a non-finite position or displacement");
     }
   }
   impl.Dimension = dim;

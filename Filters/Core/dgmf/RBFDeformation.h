@@ -32,13 +32,24 @@ struct RBFParameters
  * @class RBFInterpolation
  * @brief s(x) = sum_j a_j phi(|x - x_j| / R) + p(x), p linear, with sum a_j = 0 and
  * sum a_j x_j = 0, fitted to the boundary displacements (each component separately, one
- * factorisation). Solved with Eigen: a sparse factorisation when the support is compact, dense
- * otherwise.
+ * factorisation). In 2D only x and y are used and the z displacement is 0.
+ *
+ * Solved with Eigen by the Schur complement of the (positive definite) RBF block: a sparse
+ * Cholesky (SimplicialLLT) when fewer than 10% of the entries are nonzero (neighbours from a CGAL
+ * kd-tree, which also serves the evaluation), a dense in-place LLT otherwise. Boundary nodes at
+ * exactly the same position are merged (the first one is the centre). A dense system of more than
+ * 12,000 centres is refused before anything is allocated (std::invalid_argument).
+ * Evaluate() is const and may be called from several threads at once.
  */
 class RBFInterpolation
 {
 public:
-  /// Fits the interpolation; throws std::invalid_argument / std::runtime_error when it cannot.
+  /**
+   * Fits the interpolation. Throws std::invalid_argument for bad parameters, fewer than
+   * dimension + 1 distinct boundary nodes, boundary nodes that are all collinear (2D) or coplanar
+   * (3D), or a system too large to solve (the message names RBFGreedy and SupportRadius);
+   * std::runtime_error when the factorisation fails (nearly coincident nodes).
+   */
   RBFInterpolation(const BoundaryMotion& boundary, const RBFParameters& parameters);
   ~RBFInterpolation();
   RBFInterpolation(const RBFInterpolation&) = delete;
@@ -48,7 +59,8 @@ public:
   void Evaluate(const double x[3], double displacement[3]) const;
   /// Number of centres used (all boundary nodes, or the greedy selection).
   std::size_t GetNumberOfCentres() const;
-  /// Largest interpolation error at the boundary nodes, relative to the largest displacement.
+  /// Largest interpolation error |s(x_i) - d_i| over all boundary nodes, relative to the largest
+  /// |d_i| (absolute if every d_i is 0).
   double GetBoundaryError() const;
   /// The support radius used.
   double GetSupportRadius() const;
