@@ -76,12 +76,14 @@ def parse_args(description, size_min, size_max, dist_max):
     return parser.parse_args()
 
 
-def generate(args, dim, build_geometry, moving_box):
+def generate(args, dim, build_geometry, moving_box, shared_nodes_moving=False):
     """Mesh the geometry made by ``build_geometry()``, convert it, write ``args.output``.
 
     ``build_geometry`` creates the domain with ``gmsh.model.occ`` (without synchronizing).
     ``moving_box`` = (xmin, ymin, zmin, xmax, ymax, zmax) encloses the moving body's boundary and no
-    part of the outer boundary. Returns the ``vtkUnstructuredGrid`` written.
+    part of the outer boundary. Nodes on both the static and the moving boundary (where a body
+    crosses a symmetry plane) are an error, or moving ones with ``shared_nodes_moving``.
+    Returns the ``vtkUnstructuredGrid`` written.
     """
     gmsh.initialize([], readConfigFiles=False)
     try:
@@ -101,6 +103,8 @@ def generate(args, dim, build_geometry, moving_box):
 
     points, cells, used = _compact(tags, coords, cells, dim)
     cells = _orient(points, cells, dim)
+    if shared_nodes_moving:
+        static_tags = np.setdiff1d(static_tags, moving_tags)
     marker = _markers(used, static_tags, moving_tags)
     _check_markers(cells, marker, dim)
     grid = to_unstructured_grid(points, cells, marker, dim)

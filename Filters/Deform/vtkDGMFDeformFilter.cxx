@@ -34,6 +34,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <sstream>
@@ -204,6 +205,22 @@ void vtkDGMFDeformFilter::ReleaseCache()
   this->GraphCache.reset(new Cache);
 }
 
+std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
+{
+  const Cache& cache = *this->GraphCache;
+  std::size_t bytes = cache.Kinds.capacity() * sizeof(dgmf::NodeKind) +
+    cache.R.capacity() * sizeof(double);
+  if (cache.Mapping)
+  {
+    bytes += cache.Mapping->GetMemorySize();
+  }
+  if (cache.Facets)
+  {
+    bytes += (cache.Facets->Offsets.capacity() + cache.Facets->Ids.capacity()) * sizeof(vtkIdType);
+  }
+  return bytes;
+}
+
 void vtkDGMFDeformFilter::SetDisplacementArrayName(const char* name)
 {
   this->SetInputArrayToProcess(
@@ -246,6 +263,8 @@ int vtkDGMFDeformFilter::RequestData(
 int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
   this->LastExecutionReusedGraph = false;
+  this->LastGraphSeconds = this->LastLocationSeconds = 0.0;
+  this->LastDeformationSeconds = this->LastQualitySeconds = 0.0;
   Inputs inputs;
   if (!this->GatherInputs(input, inputs))
   {
@@ -468,6 +487,8 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
   cache.Dimension = inputs.Dimension;
   cache.Kinds = inputs.Kinds;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;
+  this->LastGraphSeconds = mapping.GetGraphSeconds();
+  this->LastLocationSeconds = mapping.GetLocationSeconds();
   if (mapping.GetNumberOfConflictingNodes() > 0)
   {
     vtkWarningMacro(<< mapping.GetNumberOfConflictingNodes()
@@ -510,12 +531,14 @@ const char* MethodName(int method)
 
 bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
 {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   const std::size_t n = inputs.NumberOfNodes;
   const double* displacement = inputs.Displacement.empty() ? nullptr : inputs.Displacement.data();
-  vtkNew<vtkDoubleArray> deformed;
-  deformed->SetNumberOfComponents(3);
-  deformed->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  double* out = deformed->GetPointer(0);
+  vtkNew<vtkDoubleArray> newCoordinates;
+  newCoordinates->SetNumberOfComponents(3);
+  newCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  double* out = newCoordinates->GetPointer(0);
 
   // Copy the input's structure and arrays first; the method adds its own arrays and values.
   output->CopyStructure(input);
@@ -605,6 +628,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
       AddFieldValue(fieldData, "IDWReferenceLength", referenceLength);
     }
   }
+  const Clock::time_point deformed = Clock::now();
+  this->LastDeformationSeconds = std::chrono::duration<double>(deformed - start).count();
   vtkNew<vtkStringArray> methodName;
   methodName->SetName("Method");
   methodName->InsertNextValue(MethodName(this->Method));
@@ -612,7 +637,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   this->UpdateProgress(0.8);
 
   vtkNew<vtkPoints> newPoints;
-  newPoints->SetData(deformed);
+  newPoints->SetData(newCoordinates);
   output->SetPoints(newPoints);
 
   if (this->ComputeQuality)
@@ -628,6 +653,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     AddFieldValue(fieldData, "SizeSkewMean", summary.Mean);
     AddFieldValue(fieldData, "SizeSkewMinimum", summary.Minimum);
     AddFieldCount(fieldData, "InvertedCellCount", summary.Inverted);
+    this->LastQualitySeconds = std::chrono::duration<double>(Clock::now() - deformed).count();
   }
   this->UpdateProgress(1.0);
   return true;

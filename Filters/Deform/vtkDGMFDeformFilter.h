@@ -58,7 +58,8 @@
 #include "DGMFFiltersModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
+#include <cstddef> // for std::size_t
+#include <memory>  // for std::unique_ptr
 
 namespace dgmf_vtk
 {
@@ -237,6 +238,21 @@ public:
   /// True when the last execution reused the cached Delaunay graph and node locations.
   bool GetLastExecutionReusedGraph() const { return this->LastExecutionReusedGraph; }
 
+  ///@{
+  /**
+   * Wall-clock seconds of the phases of the last execution: building the Delaunay graph, locating
+   * the nodes (both 0 when the cache was reused), the deformation itself (r, f and the new
+   * positions, or the method's fit and evaluation), and the quality metric.
+   */
+  double GetLastGraphSeconds() const { return this->LastGraphSeconds; }
+  double GetLastLocationSeconds() const { return this->LastLocationSeconds; }
+  double GetLastDeformationSeconds() const { return this->LastDeformationSeconds; }
+  double GetLastQualitySeconds() const { return this->LastQualitySeconds; }
+  ///@}
+
+  /// Memory kept between executions (graph, node locations, r), in bytes.
+  std::size_t GetCacheMemorySize() const;
+
   /// Drops the cached graph and node locations (the next execution rebuilds them).
   void ReleaseCache();
 
@@ -276,6 +292,10 @@ private:
   struct Cache;
   std::unique_ptr<Cache> GraphCache;
   bool LastExecutionReusedGraph = false;
+  double LastGraphSeconds = 0.0;
+  double LastLocationSeconds = 0.0;
+  double LastDeformationSeconds = 0.0;
+  double LastQualitySeconds = 0.0;
 };
 
 #endif

@@ -80,19 +80,19 @@ TEST(DelaunayGraph, ElementsArePositivelyOriented)
   const std::vector<double> xyz = BoundaryPoints(set);
   dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
   EXPECT_GT(graph.GetNumberOfElements(), 100u);
-  std::vector<double> positions;
+  EXPECT_EQ(graph.CountInvertedElements(std::vector<double>(3 * graph.GetNumberOfVertices(), 0.0).data()), 0u);
+  // Mirroring every vertex (x -> -x) inverts every element that is not flat.
+  std::vector<double> mirror(3 * graph.GetNumberOfVertices(), 0.0);
   for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
   {
-    const double* x = graph.GetVertexPosition(static_cast<std::int32_t>(v));
-    positions.insert(positions.end(), x, x + 3);
+    const std::size_t point = static_cast<std::size_t>(graph.GetPointOfVertex()[v]);
+    mirror[3 * v] = -2.0 * xyz[3 * point]; // displacement taking x to -x
   }
-  EXPECT_EQ(graph.CountInvertedElements(positions.data()), 0u);
-  // Mirroring every vertex inverts every element.
-  for (std::size_t k = 0; k < positions.size(); k += 3)
-  {
-    positions[k] = -positions[k];
-  }
-  EXPECT_EQ(graph.CountInvertedElements(positions.data()), graph.GetNumberOfElements());
+  EXPECT_EQ(graph.CountInvertedElements(mirror.data()),
+    graph.GetNumberOfElements() - graph.GetNumberOfFlatElements());
+  // The box faces are coplanar grids and the sphere's nodes cospherical: flat artefacts exist,
+  // but they are a minority.
+  EXPECT_LT(graph.GetNumberOfFlatElements(), graph.GetNumberOfElements() / 2);
 }
 
 TEST(DelaunayGraph, LocationDoesNotDependOnTheHint)

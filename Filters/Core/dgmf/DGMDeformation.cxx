@@ -65,16 +65,7 @@ std::size_t DeformDGM(const DelaunayMapping& mapping, const BoundaryMotion& boun
   // Boundary nodes: their own prescribed displacement (coincident nodes may differ from their vertex).
   ApplyBoundaryMotion(boundary, points, deformed);
 
-  std::vector<double> moved(3 * graph.GetNumberOfVertices());
-  for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
-  {
-    const double* x = graph.GetVertexPosition(static_cast<std::int32_t>(v));
-    for (int c = 0; c < 3; ++c)
-    {
-      moved[3 * v + c] = x[c] + vertexDisplacement[3 * v + c];
-    }
-  }
-  return graph.CountInvertedElements(moved.data());
+  return graph.CountInvertedElements(vertexDisplacement.data());
 }
 
 } // namespace dgmf

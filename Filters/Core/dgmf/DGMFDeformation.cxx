@@ -1,5 +1,7 @@
 #include "dgmf/DGMFDeformation.h"
 
+#include "dgmf/DampedRotation.h"
+
 #include <algorithm>
 
 namespace dgmf
@@ -54,9 +56,11 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
   const double* displacement, DeformationMode mode, const double* points, double* deformed,
   const ParallelFor& parallelFor)
 {
-  const std::vector<double> vertexDeformation = mode == DeformationMode::DGMF2
-    ? GatherVertexDeformation(mapping, displacement)
-    : std::vector<double>();
+  // Without a displacement array, d = 0 and the elements need not be visited at all.
+  const bool interpolate = displacement && mode == DeformationMode::DGMF2;
+  const std::vector<double> vertexDeformation =
+    interpolate ? GatherVertexDeformation(mapping, displacement) : std::vector<double>();
+  const DampedRigidMotion damped(motion);
   const std::size_t nodes = mapping.GetNumberOfNodes();
   const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
   ForEachBlock(parallelFor, blocks,
@@ -72,23 +76,25 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
         const double* own = displacement ? displacement + 3 * i : nullptr;
         if (kind == NodeKind::MovingBoundary)
         {
-          motion.Apply(1.0, x, own, out);
-          continue;
+          damped.Apply(1.0, x, own, out);
         }
-        if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
+        else if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
         {
-          std::copy(x, x + 3, out);
-          continue;
+          out[0] = x[0];
+          out[1] = x[1];
+          out[2] = x[2];
         }
-        if (mode == DeformationMode::DGMF1)
+        else if (!interpolate)
         {
-          motion.Apply(f[i], x, own, out);
-          continue;
+          damped.Apply(f[i], x, mode == DeformationMode::DGMF1 ? own : nullptr, out);
         }
-        double d[3];
-        InterpolateMovingDeformation(
-          mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
-        motion.Apply(f[i], x, d, out);
+        else
+        {
+          double d[3];
+          InterpolateMovingDeformation(
+            mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
+          damped.Apply(f[i], x, d, out);
+        }
       }
     });
 }

@@ -1,5 +1,7 @@
 #include "dgmf/DelaunayGraph.h"
 
+#include "dgmf/GraphPerturbation.h"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -8,8 +10,13 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -30,6 +37,14 @@ using Cb3 = CGAL::Triangulation_cell_base_with_info_3<std::int32_t, Kernel,
   CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Tds3 = CGAL::Triangulation_data_structure_3<Vb3, Cb3>;
 using Delaunay3 = CGAL::Delaunay_triangulation_3<Kernel, Tds3>;
+
+/**
+ * A point whose barycentric coordinates are all >= -WeightTolerance is taken to be in the element:
+ * points on a shared face (common in structured meshes, where nodes lie on the segments between
+ * boundary nodes) come out a few ulps negative in one of the two elements, and must not send every
+ * such node on a walk. Such weights are clamped to 0 afterwards.
+ */
+constexpr double WeightTolerance = 1e-12;
 
 inline double Cross2(const double a[2], const double b[2])
 {
@@ -142,6 +157,65 @@ void NumberVertices(Triangulation& t, std::size_t count, const LocatePoint& loca
     vertexOfPoint[i] = v->info();
   }
 }
+/**
+ * Orders the finite elements along a Hilbert curve through their centroids, so elements close in
+ * space are close in memory: a walk then mostly stays in cache.
+ */
+template <typename Triangulation, typename Handle, typename Iterator>
+std::vector<Handle> HilbertOrderedElements(Iterator begin, Iterator end, int corners)
+{
+  std::vector<Handle> handles;
+  for (Iterator it = begin; it != end; ++it)
+  {
+    handles.push_back(it);
+  }
+  std::vector<std::size_t> order(handles.size());
+  std::iota(order.begin(), order.end(), 0);
+  if (corners == 3)
+  {
+    std::vector<Kernel::Point_2> centroids;
+    centroids.reserve(handles.size());
+    for (const Handle& h : handles)
+    {
+      centroids.push_back(CGAL::centroid(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()));
+    }
+    using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel,
+      CGAL::Pointer_property_map<Kernel::Point_2>::type>;
+    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())));
+  }
+  std::vector<Handle> ordered;
+  ordered.reserve(handles.size());
+  for (std::size_t k : order)
+  {
+    ordered.push_back(handles[k]);
+  }
+  return ordered;
+}
+
+template <typename Handle, typename Iterator>
+std::vector<Handle> HilbertOrderedCells(Iterator begin, Iterator end)
+{
+  std::vector<Handle> handles;
+  std::vector<Kernel::Point_3> centroids;
+  for (Iterator it = begin; it != end; ++it)
+  {
+    handles.push_back(it);
+    centroids.push_back(CGAL::centroid(it->vertex(0)->point(), it->vertex(1)->point(),
+      it->vertex(2)->point(), it->vertex(3)->point()));
+  }
+  std::vector<std::size_t> order(handles.size());
+  std::iota(order.begin(), order.end(), 0);
+  using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel,
+    CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())));
+  std::vector<Handle> ordered;
+  ordered.reserve(handles.size());
+  for (std::size_t k : order)
+  {
+    ordered.push_back(handles[k]);
+  }
+  return ordered;
+}
 } // namespace
 
 DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count)
@@ -156,7 +230,18 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
     throw std::invalid_argument("DelaunayGraph: too many boundary points");
   }
   CheckFinite(xyz, count, dimension);
+  if (!SpansDimension(dimension, xyz, count))
+  {
+    throw std::invalid_argument(dimension == 2
+        ? "DelaunayGraph: the 2D boundary points are all collinear (or fewer than 3 distinct "
+          "points): no triangle can be built"
+        : "DelaunayGraph: the 3D boundary points are all coplanar (or fewer than 4 distinct "
+          "points): no tetrahedron can be built");
+  }
   const int n = dimension + 1;
+  // The graph is built on the points moved by GraphPerturbation of their nearest-neighbour
+  // distance: see GraphPerturbation.h.
+  const std::vector<double> moved = PerturbPoints(dimension, xyz, count, GraphPerturbation);
 
   if (dimension == 2)
   {
@@ -165,7 +250,7 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
     points.reserve(count);
     for (std::size_t i = 0; i < count; ++i)
     {
-      points.emplace_back(Point(xyz[3 * i], xyz[3 * i + 1]), static_cast<std::int32_t>(i));
+      points.emplace_back(Point(moved[3 * i], moved[3 * i + 1]), static_cast<std::int32_t>(i));
     }
     this->Triangulation2 = std::make_unique<Impl2>();
     Delaunay2& t = this->Triangulation2->Triangulation;
@@ -186,15 +271,24 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
-    faces.reserve(t.number_of_faces());
-    this->ElementVertices.reserve(n * t.number_of_faces());
-    for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
+    faces = HilbertOrderedElements<Delaunay2, Delaunay2::Face_handle>(
+      t.finite_faces_begin(), t.finite_faces_end(), 3);
+    this->ElementVertices.reserve(n * faces.size());
+    for (std::size_t e = 0; e < faces.size(); ++e)
     {
-      f->info() = static_cast<std::int32_t>(faces.size());
-      faces.push_back(f);
+      faces[e]->info() = static_cast<std::int32_t>(e);
       for (int k = 0; k < 3; ++k)
       {
-        this->ElementVertices.push_back(f->vertex(k)->info());
+        this->ElementVertices.push_back(faces[e]->vertex(k)->info());
+      }
+    }
+    this->ElementNeighbors.reserve(this->ElementVertices.size());
+    for (const Delaunay2::Face_handle& f : faces)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Delaunay2::Face_handle g = f->neighbor(k);
+        this->ElementNeighbors.push_back(t.is_infinite(g) ? -1 : g->info());
       }
     }
   }
@@ -206,7 +300,7 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
     for (std::size_t i = 0; i < count; ++i)
     {
       points.emplace_back(
-        Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), static_cast<std::int32_t>(i));
+        Point(moved[3 * i], moved[3 * i + 1], moved[3 * i + 2]), static_cast<std::int32_t>(i));
     }
     this->Triangulation3 = std::make_unique<Impl3>();
     Delaunay3& t = this->Triangulation3->Triangulation;
@@ -227,15 +321,14 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
-    cells.reserve(t.number_of_finite_cells());
-    this->ElementVertices.reserve(n * t.number_of_finite_cells());
-    for (auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c)
+    cells = HilbertOrderedCells<Delaunay3::Cell_handle>(t.finite_cells_begin(), t.finite_cells_end());
+    this->ElementVertices.reserve(n * cells.size());
+    for (std::size_t e = 0; e < cells.size(); ++e)
     {
-      c->info() = static_cast<std::int32_t>(cells.size());
-      cells.push_back(c);
+      cells[e]->info() = static_cast<std::int32_t>(e);
       for (int k = 0; k < 4; ++k)
       {
-        this->ElementVertices.push_back(c->vertex(k)->info());
+        this->ElementVertices.push_back(cells[e]->vertex(k)->info());
       }
     }
     // Infinite cells get -1, so a walk ending outside the hull is recognised.
@@ -246,30 +339,57 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
         c->info() = -1;
       }
     }
+    this->ElementNeighbors.reserve(this->ElementVertices.size());
+    for (const Delaunay3::Cell_handle& c : cells)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        this->ElementNeighbors.push_back(c->neighbor(k)->info());
+      }
+    }
   }
 
   this->VertexPositions.resize(3 * this->PointOfVertex.size());
+  this->OriginalPositions.resize(3 * this->PointOfVertex.size());
   for (std::size_t v = 0; v < this->PointOfVertex.size(); ++v)
   {
-    const double* p = xyz + 3 * static_cast<std::size_t>(this->PointOfVertex[v]);
-    this->VertexPositions[3 * v] = p[0];
-    this->VertexPositions[3 * v + 1] = p[1];
-    this->VertexPositions[3 * v + 2] = dimension == 3 ? p[2] : 0.0;
+    const auto point = static_cast<std::size_t>(this->PointOfVertex[v]);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->VertexPositions[3 * v + c] = moved[3 * point + c];
+      this->OriginalPositions[3 * v + c] = c < dimension ? xyz[3 * point + c] : 0.0;
+    }
   }
+  // Each element's corner coordinates, stored with the element: a walk step reads one record
+  // instead of chasing four vertex indices.
+  const std::size_t elements = this->GetNumberOfElements();
+  this->ElementCorners.resize(elements * 3 * static_cast<std::size_t>(n));
+  for (std::size_t e = 0; e < elements; ++e)
+  {
+    const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
+    for (int k = 0; k < n; ++k)
+    {
+      std::copy(this->GetVertexPosition(v[k]), this->GetVertexPosition(v[k]) + 3,
+        this->ElementCorners.begin() + (e * n + k) * 3);
+    }
+  }
+  // Elements that are flat in the original coordinates: artefacts of coplanar or cospherical
+  // boundary points, given a tiny volume by the perturbation.
+  this->FlatElements = this->CountInvertedElements(nullptr);
 }
 
 DelaunayGraph::~DelaunayGraph() = default;
 
 bool DelaunayGraph::ComputeWeights(std::int32_t e, const double p[3], double w[4]) const
 {
-  const std::int32_t* vertices = this->GetElement(e);
+  const double* corners = this->ElementCorners.data() + static_cast<std::size_t>(e) * 3 * (this->Dimension + 1);
   double total;
   if (this->Dimension == 2)
   {
     double rel[3][2];
     for (int k = 0; k < 3; ++k)
     {
-      const double* x = this->GetVertexPosition(vertices[k]);
+      const double* x = corners + 3 * k;
       rel[k][0] = x[0] - p[0];
       rel[k][1] = x[1] - p[1];
     }
@@ -286,13 +406,13 @@ bool DelaunayGraph::ComputeWeights(std::int32_t e, const double p[3], double w[4
     w[0] *= inv;
     w[1] *= inv;
     w[2] *= inv;
-    return w[0] >= 0.0 && w[1] >= 0.0 && w[2] >= 0.0;
+    return w[0] >= -WeightTolerance && w[1] >= -WeightTolerance && w[2] >= -WeightTolerance;
   }
   double a[3], b[3], c[3], d[3];
-  const double* x0 = this->GetVertexPosition(vertices[0]);
-  const double* x1 = this->GetVertexPosition(vertices[1]);
-  const double* x2 = this->GetVertexPosition(vertices[2]);
-  const double* x3 = this->GetVertexPosition(vertices[3]);
+  const double* x0 = corners;
+  const double* x1 = corners + 3;
+  const double* x2 = corners + 6;
+  const double* x3 = corners + 9;
   for (int k = 0; k < 3; ++k)
   {
     a[k] = x0[k] - p[k];
@@ -318,15 +438,44 @@ bool DelaunayGraph::ComputeWeights(std::int32_t e, const double p[3], double w[4
   {
     w[k] *= inv;
   }
-  return w[0] >= 0.0 && w[1] >= 0.0 && w[2] >= 0.0 && w[3] >= 0.0;
+  return w[0] >= -WeightTolerance && w[1] >= -WeightTolerance && w[2] >= -WeightTolerance &&
+    w[3] >= -WeightTolerance;
+}
+
+bool DelaunayGraph::Walk(const double p[3], std::int32_t start, int maximumSteps, Location& result) const
+{
+  // Visibility walk: cross the face opposite the most negative barycentric coordinate.
+  const int n = this->Dimension + 1;
+  std::int32_t e = start;
+  for (int step = 0; step <= maximumSteps; ++step)
+  {
+    if (this->ComputeWeights(e, p, result.Weights))
+    {
+      result.Element = e;
+      result.Outside = false;
+      ClampWeights(result.Weights, n);
+      return true;
+    }
+    int most = 0;
+    for (int k = 1; k < n; ++k)
+    {
+      most = result.Weights[k] < result.Weights[most] ? k : most;
+    }
+    const std::int32_t next = this->GetNeighbors(e)[most];
+    if (next < 0)
+    {
+      return false; // leaving the hull: CGAL decides exactly
+    }
+    e = next;
+  }
+  return false;
 }
 
 DelaunayGraph::Location DelaunayGraph::Locate(const double p[3], std::int32_t hint) const
 {
   Location result;
-  if (hint >= 0 && this->ComputeWeights(hint, p, result.Weights))
+  if (hint >= 0 && this->Walk(p, hint, MaximumWalkSteps, result))
   {
-    result.Element = hint;
     return result;
   }
   std::int32_t element = -1;
@@ -370,36 +519,43 @@ DelaunayGraph::Location DelaunayGraph::Locate(const double p[3], std::int32_t hi
   return result;
 }
 
-std::size_t DelaunayGraph::CountInvertedElements(const double* positions) const
+std::size_t DelaunayGraph::CountInvertedElements(const double* displacements) const
 {
   std::size_t inverted = 0;
   const std::size_t elements = this->GetNumberOfElements();
+  const int n = this->Dimension + 1;
   for (std::size_t e = 0; e < elements; ++e)
   {
     const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
-    if (this->Dimension == 2)
+    double before[4][3], after[4][3];
+    for (int k = 0; k < n; ++k)
     {
-      const double* a = positions + 3 * static_cast<std::size_t>(v[0]);
-      const double* b = positions + 3 * static_cast<std::size_t>(v[1]);
-      const double* c = positions + 3 * static_cast<std::size_t>(v[2]);
-      if (CGAL::orientation(Kernel::Point_2(a[0], a[1]), Kernel::Point_2(b[0], b[1]),
-            Kernel::Point_2(c[0], c[1])) != CGAL::POSITIVE)
+      const double* x = this->OriginalPositions.data() + 3 * static_cast<std::size_t>(v[k]);
+      const double* d = displacements ? displacements + 3 * static_cast<std::size_t>(v[k]) : nullptr;
+      for (int c = 0; c < 3; ++c)
       {
-        ++inverted;
+        before[k][c] = x[c];
+        after[k][c] = d ? x[c] + d[c] : x[c];
       }
     }
-    else
+    auto orientation = [this](const double (*q)[3])
     {
-      Kernel::Point_3 q[4];
-      for (int k = 0; k < 4; ++k)
+      if (this->Dimension == 2)
       {
-        const double* x = positions + 3 * static_cast<std::size_t>(v[k]);
-        q[k] = Kernel::Point_3(x[0], x[1], x[2]);
+        return CGAL::orientation(Kernel::Point_2(q[0][0], q[0][1]), Kernel::Point_2(q[1][0], q[1][1]),
+          Kernel::Point_2(q[2][0], q[2][1]));
       }
-      if (CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE)
-      {
-        ++inverted;
-      }
+      return CGAL::orientation(Kernel::Point_3(q[0][0], q[0][1], q[0][2]),
+        Kernel::Point_3(q[1][0], q[1][1], q[1][2]), Kernel::Point_3(q[2][0], q[2][1], q[2][2]),
+        Kernel::Point_3(q[3][0], q[3][1], q[3][2]));
+    };
+    if (!displacements)
+    {
+      inverted += orientation(before) != CGAL::POSITIVE ? 1 : 0; // counting flat elements
+    }
+    else if (orientation(before) == CGAL::POSITIVE && orientation(after) != CGAL::POSITIVE)
+    {
+      ++inverted;
     }
   }
   return inverted;
@@ -409,8 +565,10 @@ std::size_t DelaunayGraph::GetMemorySize() const
 {
   std::size_t bytes = this->VertexOfPoint.capacity() * sizeof(std::int32_t) +
     this->PointOfVertex.capacity() * sizeof(std::int32_t) +
-    this->VertexPositions.capacity() * sizeof(double) +
-    this->ElementVertices.capacity() * sizeof(std::int32_t);
+    (this->VertexPositions.capacity() + this->OriginalPositions.capacity()) * sizeof(double) +
+    this->ElementVertices.capacity() * sizeof(std::int32_t) +
+    this->ElementNeighbors.capacity() * sizeof(std::int32_t) +
+    this->ElementCorners.capacity() * sizeof(double);
   if (this->Triangulation2)
   {
     const Delaunay2& t = this->Triangulation2->Triangulation;

@@ -22,6 +22,12 @@ namespace dgmf
  * GetVertexOfPoint). Elements are the finite triangles (2D) or tetrahedra (3D), numbered
  * 0..GetNumberOfElements()-1; an element's vertices are positively oriented.
  *
+ * The graph is built on the points moved by GraphPerturbation (1e-11) of their nearest-neighbour
+ * distance, which removes the exact degeneracies of grid-like and cospherical boundary points
+ * (see GraphPerturbation.h); GetVertexPosition gives these graph coordinates, and barycentric
+ * coordinates refer to them. Elements that are flat in the original coordinates (coplanar or
+ * cospherical artefacts) are counted by GetNumberOfFlatElements.
+ *
  * In 2D only x and y are used. Building throws std::invalid_argument when the points do not span
  * the dimension (fewer than 3 (2D) or 4 (3D) points, or all collinear (2D) or coplanar (3D)), and
  * when a coordinate is not finite.
@@ -68,7 +74,7 @@ public:
   {
     return this->ElementVertices.data() + static_cast<std::size_t>(e) * (this->Dimension + 1);
   }
-  /// Coordinates (x, y, z) of vertex `v` (z is 0 in 2D).
+  /// Graph coordinates (x, y, z) of vertex `v` (the perturbed point; z is 0 in 2D).
   const double* GetVertexPosition(std::int32_t v) const
   {
     return this->VertexPositions.data() + 3 * static_cast<std::size_t>(v);
@@ -81,17 +87,40 @@ public:
   bool ComputeWeights(std::int32_t e, const double p[3], double weights[4]) const;
 
   /**
-   * Locates `p`: tests element `hint` first (if >= 0), and otherwise walks with CGAL from it.
+   * Locates `p`: tests element `hint` first (if >= 0); when `p` is not in it, walks from it across
+   * the face opposite the most negative barycentric coordinate (a visibility walk on the graph's
+   * element adjacency, a few steps for a nearby hint), and only if that walk leaves the hull or
+   * does not converge in MaximumWalkSteps, locates with CGAL's exact walk from the hint.
    * A point outside the convex hull gets the hull element across the hull face it lies beyond,
    * with its barycentric coordinates clamped to >= 0 and normalised, and Outside = true.
    */
   Location Locate(const double p[3], std::int32_t hint) const;
 
   /**
-   * Number of elements whose orientation is not positive when the vertices are moved to
-   * `vertexPositions` (3 doubles per vertex): the graph inversions that make DGM fail.
+   * The visibility walk alone: from element `start`, at most `maximumSteps` steps. Returns true
+   * and fills `result` when `p` was found; false when the walk would leave the hull or needs more
+   * steps.
    */
-  std::size_t CountInvertedElements(const double* vertexPositions) const;
+  bool Walk(const double p[3], std::int32_t start, int maximumSteps, Location& result) const;
+
+  /**
+   * Number of elements, positively oriented in the original coordinates, whose orientation is not
+   * positive when every vertex is displaced by `vertexDisplacements` (3 doubles per vertex): the
+   * graph inversions that make DGM fail. Exact predicates.
+   */
+  std::size_t CountInvertedElements(const double* vertexDisplacements) const;
+
+  /// Number of elements that are flat in the original (unperturbed) coordinates.
+  std::size_t GetNumberOfFlatElements() const { return this->FlatElements; }
+
+  /// Elements across the faces of element `e`: neighbour k is opposite vertex k (-1 on the hull).
+  const std::int32_t* GetNeighbors(std::int32_t e) const
+  {
+    return this->ElementNeighbors.data() + static_cast<std::size_t>(e) * (this->Dimension + 1);
+  }
+
+  /// Steps of the visibility walk before CGAL takes over.
+  static constexpr int MaximumWalkSteps = 4096;
 
   /// Approximate memory used by the graph, in bytes.
   std::size_t GetMemorySize() const;
@@ -105,7 +134,11 @@ private:
   std::vector<std::int32_t> VertexOfPoint;
   std::vector<std::int32_t> PointOfVertex;
   std::vector<double> VertexPositions;
+  std::vector<double> OriginalPositions;
+  std::size_t FlatElements = 0;
   std::vector<std::int32_t> ElementVertices;
+  std::vector<std::int32_t> ElementNeighbors;
+  std::vector<double> ElementCorners; ///< 3 coordinates of each corner of each element
 };
 
 } // namespace dgmf

@@ -1,11 +1,67 @@
 #include "dgmf/DelaunayMapping.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
 namespace dgmf
 {
+namespace
+{
+/// Steps of the walk from the previous node's element before the recent nodes are consulted.
+constexpr int ShortWalkSteps = 16;
+
+/// The last located nodes of a block (a ring buffer), to restart a walk near a node after a jump.
+class RecentNodes
+{
+public:
+  void Add(const double p[3], std::int32_t element)
+  {
+    Entry& entry = this->Entries[this->Next];
+    entry.Position[0] = p[0];
+    entry.Position[1] = p[1];
+    entry.Position[2] = p[2];
+    entry.Element = element;
+    this->Next = (this->Next + 1) % Capacity;
+    this->Count = this->Count < Capacity ? this->Count + 1 : Capacity;
+  }
+
+  /// Element of the recent node nearest to p, or `fallback` when there is none.
+  std::int32_t Nearest(const double p[3], std::int32_t fallback) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    std::int32_t element = fallback;
+    for (std::size_t k = 0; k < this->Count; ++k)
+    {
+      const Entry& entry = this->Entries[k];
+      const double dx = entry.Position[0] - p[0];
+      const double dy = entry.Position[1] - p[1];
+      const double dz = entry.Position[2] - p[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if (d2 < best)
+      {
+        best = d2;
+        element = entry.Element;
+      }
+    }
+    return element;
+  }
+
+private:
+  static constexpr std::size_t Capacity = 256;
+  struct Entry
+  {
+    double Position[3];
+    std::int32_t Element;
+  };
+  std::array<Entry, Capacity> Entries;
+  std::size_t Next = 0;
+  std::size_t Count = 0;
+};
+} // namespace
 
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const ParallelFor& parallelFor)
@@ -14,6 +70,8 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   {
     throw std::invalid_argument("DelaunayMapping: more than 2^31 - 1 nodes are not supported");
   }
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   this->Kinds.assign(kinds, kinds + numberOfNodes);
   // Step 1: the graph of all boundary nodes.
   std::vector<double> boundaryXYZ;
@@ -67,6 +125,9 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     }
   }
 
+  const Clock::time_point graphBuilt = Clock::now();
+  this->GraphSeconds = std::chrono::duration<double>(graphBuilt - start).count();
+
   // Steps 2-3: the element and barycentric coordinates of every interior node.
   const int n = dimension + 1;
   this->NodeElement.assign(numberOfNodes, 0);
@@ -87,6 +148,10 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     {
       const std::size_t begin = block * BlockSize;
       const std::size_t end = std::min(begin + BlockSize, numberOfNodes);
+      // Hints: the previous node's element; when a short walk from it fails (a jump in the
+      // numbering, such as a new row of a structured block), the element of the nearest of the
+      // block's most recent nodes.
+      RecentNodes recent;
       std::int32_t hint = -1;
       std::size_t outside = 0;
       std::size_t walks = 0;
@@ -96,11 +161,16 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         {
           continue;
         }
-        double p[3] = { points[3 * i], points[3 * i + 1], dimension == 3 ? points[3 * i + 2] : 0.0 };
-        const DelaunayGraph::Location location = graph.Locate(p, hint);
-        walks += location.Element != hint ? 1 : 0;
+        const double p[3] = { points[3 * i], points[3 * i + 1], dimension == 3 ? points[3 * i + 2] : 0.0 };
+        DelaunayGraph::Location location;
+        if (hint < 0 || !graph.Walk(p, hint, ShortWalkSteps, location))
+        {
+          location = graph.Locate(p, recent.Nearest(p, hint));
+          ++walks;
+        }
         outside += location.Outside ? 1 : 0;
         hint = location.Element;
+        recent.Add(p, hint);
         this->NodeElement[i] = location.Element;
         std::copy(location.Weights, location.Weights + n, this->Weights.begin() + i * n);
       }
@@ -112,6 +182,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     this->OutsideNodes += outsidePerBlock[block];
     this->Walks += walksPerBlock[block];
   }
+  this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
 }
 
 std::size_t DelaunayMapping::GetMemorySize() const

@@ -26,10 +26,12 @@ namespace dgmf
  * kind, so one mapping serves every later motion of the same mesh (time steps, design loops).
  *
  * Nodes are located in mesh order, in fixed blocks of BlockSize nodes: the first node of a block
- * is located by a CGAL walk from CGAL's default start, every other node first tests the element of
- * the previous node and walks from it only when that fails. Mesh generators number nodes with
- * spatial coherence, so most nodes are found without a walk. Because blocks are fixed, the result
- * does not depend on the number of threads.
+ * is located by a CGAL walk from CGAL's default start; every other node walks (a few steps of a
+ * visibility walk) from the element of the previous node, and after a jump in the numbering from
+ * the element of the nearest of the block's 256 most recent nodes (DelaunayGraph::Locate, with
+ * CGAL as the exact fallback). Mesh generators number nodes with spatial coherence, so most nodes
+ * are found in a step or two. Because blocks are fixed, the result does not depend on the number
+ * of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
@@ -79,12 +81,16 @@ public:
 
   /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
-  /// Number of interior nodes whose location needed a CGAL walk (the others hit the hint).
+  /// Number of interior nodes not found by a short walk from the previous node's element.
   std::size_t GetNumberOfWalks() const { return this->Walks; }
   /// Number of moving graph vertices.
   std::size_t GetNumberOfMovingVertices() const { return this->MovingVertices; }
   /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
   std::size_t GetNumberOfConflictingNodes() const { return this->ConflictingNodes; }
+
+  /// Wall-clock seconds spent building the graph (step 1) and locating the nodes (steps 2-3).
+  double GetGraphSeconds() const { return this->GraphSeconds; }
+  double GetLocationSeconds() const { return this->LocationSeconds; }
 
   /// Approximate memory used, in bytes.
   std::size_t GetMemorySize() const;
@@ -102,6 +108,8 @@ private:
   std::size_t Walks = 0;
   std::size_t MovingVertices = 0;
   std::size_t ConflictingNodes = 0;
+  double GraphSeconds = 0.0;
+  double LocationSeconds = 0.0;
 };
 
 } // namespace dgmf

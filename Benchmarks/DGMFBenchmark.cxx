@@ -1,0 +1,209 @@
+/**
+ * dgmf-benchmark: the paper's Table 3 on this machine.
+ *
+ *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
+ *                  [--repeats N] [--idw-max-size K] [--csv FILE]
+ *
+ * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
+ * their generation is not timed), each method and each thread count: the first deformation
+ * (graph, location and mapping, from an empty cache) and a repeated deformation with a new motion
+ * (cache reused), through vtkDGMFDeformFilter with the quality metric off; then the quality
+ * metric alone. Times are medians over the repeats. Writes one CSV row per configuration.
+ */
+#include "LayeredMesh.h"
+
+#include "vtkDGMFDeformFilter.h"
+#include "vtkSizeSkewQualityFilter.h"
+
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<std::string> Split(const std::string& list)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    items.push_back(item);
+  }
+  return items;
+}
+
+double PeakResidentMegabytes()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+int MethodFromName(const std::string& name)
+{
+  const char* const names[] = { "dgmf", "dgm", "dgrbf", "rbf", "idw" };
+  for (int m = 0; m < 5; ++m)
+  {
+    if (name == names[m])
+    {
+      return m;
+    }
+  }
+  return -1;
+}
+
+struct Result
+{
+  double Graph = 0, Location = 0, Mapping = 0, First = 0, Repeated = 0, Quality = 0;
+  double CacheBytesPerNode = 0;
+};
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> sizes = { "0", "1", "2", "3" };
+  std::vector<std::string> methods = { "dgm", "dgmf", "dgrbf", "idw" };
+  std::vector<std::string> threads = { "1", "2" };
+  int repeats = 3;
+  int idwMaxSize = 1;
+  std::string csvPath = "benchmark.csv";
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string option = argv[i];
+    const std::string value = argv[i + 1];
+    if (option == "--sizes")
+      sizes = Split(value);
+    else if (option == "--methods")
+      methods = Split(value);
+    else if (option == "--threads")
+      threads = Split(value);
+    else if (option == "--repeats")
+      repeats = std::max(1, std::atoi(value.c_str()));
+    else if (option == "--idw-max-size")
+      idwMaxSize = std::atoi(value.c_str());
+    else if (option == "--csv")
+      csvPath = value;
+    else
+    {
+      std::cerr << "dgmf-benchmark: unknown option " << option << "\n";
+      return 2;
+    }
+  }
+
+  std::ofstream csv(csvPath);
+  csv << "nodes,boundary_nodes,method,threads,graph_s,location_s,mapping_s,first_s,repeated_s,"
+         "quality_s,cache_bytes_per_node,peak_rss_mb\n";
+  for (const std::string& sizeName : sizes)
+  {
+    const int sizeIndex = std::atoi(sizeName.c_str());
+    const dgmf_bench::LayeredMeshSize size = dgmf_bench::PaperSize(sizeIndex);
+    const Clock::time_point made = Clock::now();
+    vtkSmartPointer<vtkUnstructuredGrid> mesh = dgmf_bench::MakeLayeredMesh(size);
+    std::cerr << "mesh " << size.Name << ": " << mesh->GetNumberOfPoints() << " nodes, "
+              << size.BoundaryNodes() << " boundary nodes, " << mesh->GetNumberOfCells()
+              << " hexahedra (generated in " << Seconds(made) << " s)\n";
+    for (const std::string& methodName : methods)
+    {
+      const int method = MethodFromName(methodName);
+      if (method < 0)
+      {
+        std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";
+        return 2;
+      }
+      if (method == vtkDGMFDeformFilter::IDW && sizeIndex > idwMaxSize)
+      {
+        continue; // O(N Nb): hours on the large meshes
+      }
+      const int methodRepeats = method == vtkDGMFDeformFilter::IDW ? 1 : repeats;
+      for (const std::string& threadName : threads)
+      {
+        const int threadCount = std::atoi(threadName.c_str());
+        std::vector<double> graph, location, mapping, first, repeated;
+        Result result;
+        vtkNew<vtkDGMFDeformFilter> filter;
+        filter->SetInputData(mesh);
+        filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+        filter->SetMethod(method);
+        filter->SetNumberOfThreads(threadCount);
+        filter->ComputeQualityOff();
+        for (int r = 0; r < methodRepeats; ++r)
+        {
+          filter->ReleaseCache();
+          filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
+          filter->SetTranslation(0.1, 0.0, 0.0);
+          Clock::time_point start = Clock::now();
+          filter->Update();
+          first.push_back(Seconds(start));
+          graph.push_back(filter->GetLastGraphSeconds());
+          location.push_back(filter->GetLastLocationSeconds());
+          mapping.push_back(filter->GetLastDeformationSeconds());
+          // A new motion: only the mapping runs again.
+          filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
+          start = Clock::now();
+          filter->Update();
+          repeated.push_back(Seconds(start));
+          if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
+          {
+            std::cerr << "dgmf-benchmark: the cache was not reused\n";
+            return 1;
+          }
+        }
+        result.Graph = Median(graph);
+        result.Location = Median(location);
+        result.Mapping = Median(mapping);
+        result.First = Median(first);
+        result.Repeated = Median(repeated);
+        result.CacheBytesPerNode =
+          static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
+
+        vtkNew<vtkDGMFDeformFilter> withQuality;
+        withQuality->SetInputData(mesh);
+        withQuality->SetBoundaryMarkerArrayName("BoundaryMarker");
+        withQuality->SetMethod(method);
+        withQuality->SetNumberOfThreads(threadCount);
+        withQuality->SetRotationAngles(5.0, 10.0, 15.0);
+        withQuality->Update();
+        result.Quality = withQuality->GetLastQualitySeconds();
+
+        csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << methodName << ","
+            << threadCount << "," << result.Graph << "," << result.Location << "," << result.Mapping
+            << "," << result.First << "," << result.Repeated << "," << result.Quality << ","
+            << result.CacheBytesPerNode << "," << PeakResidentMegabytes() << "\n";
+        csv.flush();
+        std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", " << threadCount
+                  << " thread(s): first " << result.First << " s (graph " << result.Graph
+                  << ", location " << result.Location << ", mapping " << result.Mapping
+                  << "), repeated " << result.Repeated << " s, quality " << result.Quality
+                  << " s, cache " << std::setprecision(1) << result.CacheBytesPerNode
+                  << " B/node\n";
+      }
+    }
+  }
+  return 0;
+}
