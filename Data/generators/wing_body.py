@@ -57,6 +57,8 @@ def parse_args():
                         help="path of the .vtu file (default: %(default)s)")
     parser.add_argument("--force", action="store_true",
                         help="generate even when a matching cached file exists")
+    parser.add_argument("--full", action="store_true",
+                        help="full model (both wings, no symmetry plane) instead of the half model")
     for name, value in DEFAULTS.items():
         parser.add_argument("--" + name.replace("_", "-"), type=float, default=value,
                             help="default %(default)s (see meshgen.py)")
@@ -110,12 +112,19 @@ def wing():
     return gmsh.model.occ.addThruSections([root, tip], makeSolid=True, makeRuled=True)
 
 
-def build_geometry():
-    """The far-field half box minus the fused wing and fuselage."""
+def build_geometry(full=False):
+    """The far-field box minus the fused wing and fuselage: the half model (y >= 0), or with
+    ``full`` the box mirrored to y in [-3500, 3500] around both wings."""
     occ = gmsh.model.occ
-    body, _ = occ.fuse(fuselage(), [dt for dt in wing() if dt[0] == 3])
-    size = [hi - lo for lo, hi in zip(BOX_MIN, BOX_MAX)]
-    box = occ.addBox(*BOX_MIN, *size)
+    wings = [dt for dt in wing() if dt[0] == 3]
+    if full:
+        mirrored = occ.copy(wings)
+        occ.mirror(mirrored, 0, 1, 0, 0)
+        wings += mirrored
+    body, _ = occ.fuse(fuselage(), wings)
+    low = (BOX_MIN[0], -BOX_MAX[1] if full else BOX_MIN[1], BOX_MIN[2])
+    size = [hi - lo for lo, hi in zip(low, BOX_MAX)]
+    box = occ.addBox(*low, *size)
     occ.cut([(3, box)], body)
 
 
@@ -131,7 +140,7 @@ def cached(args):
 def parameters(args):
     """The generator parameters that determine the mesh."""
     return {"size_min": args.size_min, "size_max": args.size_max, "dist_max": args.dist_max,
-            "gmsh": gmsh.__version__}
+            "full": args.full, "gmsh": gmsh.__version__}
 
 
 def main():
@@ -143,8 +152,9 @@ def main():
         return
     os.makedirs(os.path.dirname(args.output), exist_ok=True)
     start = time.perf_counter()
-    box = (NOSE[0] - 10, -10, -RADIUS - 10, TAIL[1] + 10, SEMI_SPAN + 10, RADIUS + 10)
-    grid = meshgen.generate(args, 3, build_geometry, box, shared_nodes_moving=True)
+    box = (NOSE[0] - 10, -SEMI_SPAN - 10, -RADIUS - 10, TAIL[1] + 10, SEMI_SPAN + 10, RADIUS + 10)
+    grid = meshgen.generate(args, 3, lambda: build_geometry(args.full), box,
+                            shared_nodes_moving=not args.full)
     seconds = time.perf_counter() - start
     record = {"parameters": parameters(args), "points": grid.GetNumberOfPoints(),
               "cells": grid.GetNumberOfCells(), "seconds": round(seconds, 1)}

@@ -167,12 +167,19 @@ struct vtkDGMFDeformFilter::Cache
   vtkMTimeType PointsMTime = 0;
   vtkCellArray* Cells = nullptr;
   vtkMTimeType CellsMTime = 0;
-  int Dimension = 0;
-  std::vector<dgmf::NodeKind> Kinds;
-  // The cached mapping and r.
+  int Dimension = 0; // (and the node kinds, kept by the mapping)
+  // The cached mapping, r (for StaticR0) and f (for DampingFunction), shared with the output.
   std::unique_ptr<dgmf::DelaunayMapping> Mapping;
   double StaticR0 = 0.0;
-  std::vector<double> R;
+  vtkSmartPointer<vtkDoubleArray> R;
+  int Damping = 0;
+  vtkSmartPointer<vtkDoubleArray> F;
+  // Inputs already checked: the points (finite) and the marker (its kinds).
+  vtkDataArray* CheckedPoints = nullptr;
+  vtkMTimeType CheckedPointsMTime = 0;
+  vtkDataArray* Marker = nullptr;
+  vtkMTimeType MarkerMTime = 0;
+  std::vector<dgmf::NodeKind> MarkerKinds;
   // The mesh's boundary facets depend on the cells only.
   vtkCellArray* BoundaryCells = nullptr;
   vtkMTimeType BoundaryCellsMTime = 0;
@@ -186,7 +193,8 @@ struct vtkDGMFDeformFilter::Inputs
   int Dimension = 3;
   const double* Points = nullptr;
   std::vector<double> PointCopy;    ///< the points as doubles, when they are not already
-  std::vector<double> Displacement; ///< 3 per node, empty when no array is selected
+  const double* Displacement = nullptr; ///< 3 per node, null when no array is selected
+  std::vector<double> DisplacementCopy; ///< the displacement as doubles, when it is not already
   std::string DisplacementName;
   std::vector<dgmf::NodeKind> Kinds;
   dgmf::RigidMotion Motion;
@@ -208,8 +216,7 @@ void vtkDGMFDeformFilter::ReleaseCache()
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
 {
   const Cache& cache = *this->GraphCache;
-  std::size_t bytes = cache.Kinds.capacity() * sizeof(dgmf::NodeKind) +
-    cache.R.capacity() * sizeof(double);
+  std::size_t bytes = cache.MarkerKinds.capacity() * sizeof(dgmf::NodeKind);
   if (cache.Mapping)
   {
     bytes += cache.Mapping->GetMemorySize();
@@ -299,10 +306,17 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   inputs.NumberOfNodes = n;
   inputs.Parallel = dgmf_vtk::MakeSMPParallelFor();
   inputs.Points = PointsAsDouble(input->GetPoints(), inputs.PointCopy);
-  if (!AllFinite(inputs.Points, 3 * n))
+  Cache& cache = *this->GraphCache;
+  vtkDataArray* pointsArray = input->GetPoints()->GetData();
+  if (cache.CheckedPoints != pointsArray || cache.CheckedPointsMTime != pointsArray->GetMTime())
   {
-    vtkErrorMacro("The input mesh has NaN or infinite point coordinates.");
-    return false;
+    if (!AllFinite(inputs.Points, 3 * n))
+    {
+      vtkErrorMacro("The input mesh has NaN or infinite point coordinates.");
+      return false;
+    }
+    cache.CheckedPoints = pointsArray;
+    cache.CheckedPointsMTime = pointsArray->GetMTime();
   }
   inputs.Dimension = DetectDimension(input, inputs.Points, n);
   if (inputs.Dimension < 0)
@@ -359,12 +373,21 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   }
   if (displacementArray)
   {
-    inputs.Displacement.resize(3 * n);
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    auto* doubles = vtkDoubleArray::SafeDownCast(displacementArray);
+    if (doubles)
     {
-      displacementArray->GetTuple(i, inputs.Displacement.data() + 3 * i);
+      inputs.Displacement = doubles->GetPointer(0);
     }
-    if (!AllFinite(inputs.Displacement.data(), inputs.Displacement.size()))
+    else
+    {
+      inputs.DisplacementCopy.resize(3 * n);
+      for (vtkIdType i = 0; i < numberOfPoints; ++i)
+      {
+        displacementArray->GetTuple(i, inputs.DisplacementCopy.data() + 3 * i);
+      }
+      inputs.Displacement = inputs.DisplacementCopy.data();
+    }
+    if (!AllFinite(inputs.Displacement, 3 * n))
     {
       vtkErrorMacro("The displacement array '" << inputs.DisplacementName
                                                << "' has NaN or infinite values.");
@@ -396,7 +419,7 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
         << "rotation angles about x and y and the z translation to 0.");
       return false;
     }
-    for (std::size_t i = 0; i < inputs.Displacement.size(); i += 3)
+    for (std::size_t i = 0; inputs.Displacement && i < 3 * n; i += 3)
     {
       if (inputs.Displacement[i + 2] != 0.0)
       {
@@ -409,7 +432,12 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
 
   // The kind of every node: from the marker, or from the mesh's boundary and the displacement.
   inputs.Kinds.assign(n, dgmf::NodeKind::Interior);
-  if (markerArray)
+  if (markerArray && cache.Marker == markerArray && cache.MarkerMTime == markerArray->GetMTime() &&
+    cache.MarkerKinds.size() == n)
+  {
+    inputs.Kinds = cache.MarkerKinds; // checked before
+  }
+  else if (markerArray)
   {
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
@@ -423,6 +451,9 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
       }
       inputs.Kinds[i] = static_cast<dgmf::NodeKind>(static_cast<int>(value));
     }
+    cache.Marker = markerArray;
+    cache.MarkerMTime = markerArray->GetMTime();
+    cache.MarkerKinds = inputs.Kinds;
   }
   else
   {
@@ -432,7 +463,7 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     {
       if (flags[i])
       {
-        const double* d = inputs.Displacement.data() + 3 * i;
+        const double* d = inputs.Displacement + 3 * i;
         inputs.Kinds[i] = (d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0)
           ? dgmf::NodeKind::MovingBoundary
           : dgmf::NodeKind::StaticBoundary;
@@ -470,14 +501,15 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
   const bool reuse = cache.Mapping && cache.PointsArray == pointsArray &&
     cache.PointsMTime == pointsArray->GetMTime() && cache.Cells == cells &&
     cache.CellsMTime == cells->GetMTime() && cache.Dimension == inputs.Dimension &&
-    cache.Kinds == inputs.Kinds;
+    cache.Mapping->GetNodeKinds() == inputs.Kinds;
   this->LastExecutionReusedGraph = reuse;
   if (reuse)
   {
     return true;
   }
   cache.Mapping.reset();
-  cache.R.clear();
+  cache.R = nullptr;
+  cache.F = nullptr;
   cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(inputs.Dimension, inputs.Points,
     inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel);
   cache.PointsArray = pointsArray;
@@ -485,7 +517,6 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
   cache.Cells = cells;
   cache.CellsMTime = cells->GetMTime();
   cache.Dimension = inputs.Dimension;
-  cache.Kinds = inputs.Kinds;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;
   this->LastGraphSeconds = mapping.GetGraphSeconds();
   this->LastLocationSeconds = mapping.GetLocationSeconds();
@@ -534,7 +565,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   const std::size_t n = inputs.NumberOfNodes;
-  const double* displacement = inputs.Displacement.empty() ? nullptr : inputs.Displacement.data();
+  const double* displacement = inputs.Displacement;
   vtkNew<vtkDoubleArray> newCoordinates;
   newCoordinates->SetNumberOfComponents(3);
   newCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(n));
@@ -551,25 +582,31 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   {
     Cache& cache = *this->GraphCache;
     const dgmf::DelaunayMapping& mapping = *cache.Mapping;
-    if (cache.R.size() != n || cache.StaticR0 != this->StaticBoundaryR0)
+    // r depends on r0s, f on r and the damping function: both are kept, and shared with the
+    // output (a new array is made whenever either changes).
+    if (!cache.R || cache.StaticR0 != this->StaticBoundaryR0)
     {
-      cache.R.resize(n);
-      dgmf::ComputeBoundaryDistanceField(mapping, this->StaticBoundaryR0, cache.R.data(), inputs.Parallel);
+      cache.R = vtkSmartPointer<vtkDoubleArray>::New();
+      cache.R->SetName("r");
+      cache.R->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      dgmf::ComputeBoundaryDistanceField(
+        mapping, this->StaticBoundaryR0, cache.R->GetPointer(0), inputs.Parallel);
       cache.StaticR0 = this->StaticBoundaryR0;
+      cache.F = nullptr;
     }
-    vtkNew<vtkDoubleArray> rArray;
-    rArray->SetName("r");
-    rArray->SetNumberOfTuples(static_cast<vtkIdType>(n));
-    std::copy(cache.R.begin(), cache.R.end(), rArray->GetPointer(0));
-    vtkNew<vtkDoubleArray> fArray;
-    fArray->SetName("f");
-    fArray->SetNumberOfTuples(static_cast<vtkIdType>(n));
-    dgmf::ComputeDampingFactor(mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
-      cache.R.data(), fArray->GetPointer(0), inputs.Parallel);
-    dgmf::DeformDGMF(mapping, fArray->GetPointer(0), inputs.Motion, displacement,
+    if (!cache.F || cache.Damping != this->DampingFunction)
+    {
+      cache.F = vtkSmartPointer<vtkDoubleArray>::New();
+      cache.F->SetName("f");
+      cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      dgmf::ComputeDampingFactor(mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
+        cache.R->GetPointer(0), cache.F->GetPointer(0), inputs.Parallel);
+      cache.Damping = this->DampingFunction;
+    }
+    dgmf::DeformDGMF(mapping, cache.F->GetPointer(0), inputs.Motion, displacement,
       static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out, inputs.Parallel);
-    output->GetPointData()->AddArray(rArray);
-    output->GetPointData()->AddArray(fArray);
+    output->GetPointData()->AddArray(cache.R);
+    output->GetPointData()->AddArray(cache.F);
     AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
   }
   else

@@ -62,6 +62,8 @@ public:
 
   /// The kind of node `i`, as given.
   NodeKind GetNodeKind(std::size_t i) const { return this->Kinds[i]; }
+  /// The kinds of all nodes, as given.
+  const std::vector<NodeKind>& GetNodeKinds() const { return this->Kinds; }
   /// True if node `i` is a boundary node (a graph vertex).
   bool IsBoundaryNode(std::size_t i) const { return this->NodeElement[i] < 0; }
   /// The graph vertex of boundary node `i` (only valid when IsBoundaryNode(i)).
