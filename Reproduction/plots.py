@@ -15,6 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+MARKERS, LINES = "os^vDP*", ("-", "--", "-.", ":")
 RESULTS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                        "Documentation", "results")
 plt.rcParams.update({"svg.hashsalt": "dgmf", "font.size": 9})
@@ -36,11 +37,12 @@ def series(rows, key, name, x):
 def plot(rows, key, names, x, xlabel, title, path, styles=None, log2=False):
     """Two panels (mean, minimum) with one line per name; crosses where cells are inverted."""
     figure, axes = plt.subplots(1, 2, figsize=(9, 3.6))
-    for name in names:
+    for index, name in enumerate(names):
         xs, means, minima, inverted = series(rows, key, name, x)
-        style = (styles or {}).get(name, {})
+        style = {"marker": MARKERS[index % len(MARKERS)], "markersize": 4,
+                 "linestyle": LINES[index % len(LINES)], **(styles or {}).get(name, {})}
         for axis, values in zip(axes, (means, minima)):
-            line, = axis.plot(xs, values, marker="o", markersize=3, label=name, **style)
+            line, = axis.plot(xs, values, label=name, **style)
             bad = [(a, v) for a, v, i in zip(xs, values, inverted) if i]
             if bad:
                 axis.plot(*zip(*bad), "x", color=line.get_color(), markersize=8)

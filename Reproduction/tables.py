@@ -96,21 +96,23 @@ def bar_sections(results):
 
 
 def wing_sections(results):
-    """The wing fold: times and quality."""
+    """The wing fold, half model (and full model when run): times and quality."""
     out = []
-    rows = read_rows(results, "wing_fold_time")
-    if rows:
-        out += ["## Wing fold: filter time, one thread (wall clock / CPU seconds)\n",
-                table(["method", "run", "wall (s)", "CPU (s)", "paper (s)"],
-                      [[r["method"], r["run"], f"{float(r['wall']):.3f}", f"{float(r['cpu']):.3f}",
-                        PAPER_WING_SECONDS.get(r["method"], "") if r["run"].startswith("first")
-                        else ""] for r in rows])]
-    rows = read_rows(results, "wing_fold_quality")
-    if rows:
-        out += [f"## Wing fold: quality ({rows[0]['points']} points, {rows[0]['cells']} cells)\n",
-                table(["method", "mean", "minimum", "inverted cells"],
-                      [[r["method"], f"{float(r['mean']):.3f}", f"{float(r['minimum']):.4f}",
-                        r["inverted"]] for r in rows])]
+    for prefix, model in (("wing_fold", "half model"), ("wing_fold_full", "full model")):
+        rows = read_rows(results, prefix + "_time")
+        if rows:
+            out += [f"## Wing fold, {model}: filter time, one thread, best of the repeats\n",
+                    table(["method", "run", "repeats", "wall (s)", "CPU (s)", "paper (s)"],
+                          [[r["method"], r["run"], r["repeats"], f"{float(r['wall']):.3f}",
+                            f"{float(r['cpu']):.3f}", PAPER_WING_SECONDS.get(r["method"], "")
+                            if r["run"].startswith("first") else ""] for r in rows])]
+        rows = read_rows(results, prefix + "_quality")
+        if rows:
+            out += [f"## Wing fold, {model}: quality ({rows[0]['points']} points, "
+                    f"{rows[0]['cells']} cells)\n",
+                    table(["method", "mean", "minimum", "inverted cells"],
+                          [[r["method"], f"{float(r['mean']):.3f}", f"{float(r['minimum']):.4f}",
+                            r["inverted"]] for r in rows])]
     return out
 
 

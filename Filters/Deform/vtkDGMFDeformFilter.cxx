@@ -37,6 +37,8 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <new>
+#include <unistd.h>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -255,6 +257,12 @@ int vtkDGMFDeformFilter::RequestData(
     dgmf_vtk::RunWithThreads(
       this->NumberOfThreads, [&]() { status = this->Execute(input, output); });
   }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
+                                                   << input->GetNumberOfCells() << " cells).");
+    status = 0;
+  }
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
@@ -272,6 +280,10 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = 0.0;
   this->LastDeformationSeconds = this->LastQualitySeconds = 0.0;
+  if (!this->CheckMemory(input))
+  {
+    return 0;
+  }
   Inputs inputs;
   if (!this->GatherInputs(input, inputs))
   {
@@ -291,6 +303,35 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     return 0;
   }
   return this->Deform(input, inputs, output) ? 1 : 0;
+}
+
+bool vtkDGMFDeformFilter::CheckMemory(vtkUnstructuredGrid* input)
+{
+  // Per node: node kinds (up to 3 copies), element and barycentric coordinates (36 bytes), the new
+  // points (24), r and f (16), the points and displacement as doubles if they are not (48); per
+  // cell: SizeSkew and Inverted (9); per boundary node, the graph (measured: about 1.5 kB).
+  // The boundary count is not known yet: a tenth of the nodes is assumed, which overestimates
+  // volume meshes.
+  const double nodes = static_cast<double>(input->GetNumberOfPoints());
+  const double cells = static_cast<double>(input->GetNumberOfCells());
+  const double needed = nodes * (3 + 36 + 24 + 16 + 48) + cells * 9 + 0.1 * nodes * 1500.0;
+  const long pages = sysconf(_SC_AVPHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && pageSize > 0)
+  {
+    const double available = static_cast<double>(pages) * static_cast<double>(pageSize);
+    // Free memory excludes the page cache, which the system gives back: allow twice as much.
+    if (needed > 2.0 * available)
+    {
+      vtkErrorMacro("Deforming " << input->GetNumberOfPoints() << " points needs about "
+                                 << needed / 1073741824.0 << " GiB; only "
+                                 << available / 1073741824.0
+                                 << " GiB of memory is free. Deform the mesh in parts, or on "
+                                    "a machine with more memory.");
+      return false;
+    }
+  }
+  return true;
 }
 
 bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs)
@@ -408,6 +449,15 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   {
     vtkErrorMacro("Translation, RotationCenter and RotationAngles must be finite.");
     return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    if (std::abs(motion.AnglesDegrees[c]) > 720.0)
+    {
+      vtkErrorMacro("Rotation angles must be within [-720, 720] degrees (got "
+        << motion.AnglesDegrees[c] << ").");
+      return false;
+    }
   }
   if (inputs.Dimension == 2)
   {
@@ -691,6 +741,12 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     AddFieldValue(fieldData, "SizeSkewMinimum", summary.Minimum);
     AddFieldCount(fieldData, "InvertedCellCount", summary.Inverted);
     this->LastQualitySeconds = std::chrono::duration<double>(Clock::now() - deformed).count();
+    if (this->FailOnInvertedCells && summary.Inverted > 0)
+    {
+      vtkErrorMacro("The deformation inverts " << summary.Inverted
+                                               << " cells (FailOnInvertedCells is on).");
+      return false;
+    }
   }
   this->UpdateProgress(1.0);
   return true;
@@ -716,5 +772,6 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IDWAlpha: " << this->IDWAlpha << "\n";
   os << indent << "IDWReferenceLength: " << this->IDWReferenceLength << "\n";
   os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off") << "\n";
+  os << indent << "FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

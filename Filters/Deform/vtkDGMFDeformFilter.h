@@ -219,6 +219,16 @@ public:
 
   ///@{
   /**
+   * Fail (error message, empty output) when the deformed mesh has an inverted cell, instead of
+   * producing it with the cells flagged in the Inverted array. Needs ComputeQuality. Default: off.
+   */
+  vtkSetMacro(FailOnInvertedCells, bool);
+  vtkGetMacro(FailOnInvertedCells, bool);
+  vtkBooleanMacro(FailOnInvertedCells, bool);
+  ///@}
+
+  ///@{
+  /**
    * Number of threads; 0 uses all hardware threads (and the STDThread vtkSMPTools backend when
    * the active backend is Sequential). Default: 0.
    */
@@ -276,6 +286,7 @@ protected:
   double IDWAlpha = 5.0;
   double IDWReferenceLength = 0.0;
   bool ComputeQuality = true;
+  bool FailOnInvertedCells = false;
   int NumberOfThreads = 0;
 
 private:
@@ -284,6 +295,7 @@ private:
 
   struct Inputs;
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+  bool CheckMemory(vtkUnstructuredGrid* input);
   bool GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs);
   bool UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs);
   const dgmf_vtk::BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* input, int dimension);

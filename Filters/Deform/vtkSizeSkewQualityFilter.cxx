@@ -99,7 +99,7 @@ int vtkSizeSkewQualityFilter::RequestData(
   vtkNew<vtkUnsignedCharArray> inverted;
   inverted->SetName("Inverted");
   dgmf::QualitySummary summary;
-  dgmf_vtk::RunWithThreads(0,
+  dgmf_vtk::RunWithThreads(this->NumberOfThreads,
     [&]()
     {
       summary = dgmf_vtk::ComputeCellQuality(reference, original.data(), deformed.data(), sizeSkew,
@@ -128,4 +128,5 @@ int vtkSizeSkewQualityFilter::RequestData(
 void vtkSizeSkewQualityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -35,11 +35,21 @@ public:
   void SetReferenceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   ///@}
 
+  ///@{
+  /**
+   * Number of threads; 0 uses all hardware threads (see vtkDGMFDeformFilter). Default: 0.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkSizeSkewQualityFilter();
   ~vtkSizeSkewQualityFilter() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfThreads = 0;
 
 private:
   vtkSizeSkewQualityFilter(const vtkSizeSkewQualityFilter&) = delete;

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The paper's Table 3 on this machine: builds (Release), runs Benchmarks/dgmf-benchmark on the
+# four mesh sizes with DGM, DGMF, DGRBF (and IDW on the two smallest) on 1 and 2 threads, and
+# writes Documentation/benchmark/benchmark.csv and Documentation/benchmark/README.md.
+# Takes about 10 minutes on 2 cores; run it on a quiet machine.
+#   SIZES=0,1 METHODS=dgmf bash scripts/run-benchmark.sh   # a subset
+set -euo pipefail
+SOURCE_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-$SOURCE_DIR/build}"
+OUT="$SOURCE_DIR/Documentation/benchmark"
+bash "$SOURCE_DIR/scripts/build.sh" >/dev/null
+mkdir -p "$OUT"
+"$BUILD_DIR/bin/dgmf-benchmark" --sizes "${SIZES:-0,1,2,3}" --methods "${METHODS:-dgm,dgmf,dgrbf,idw}" \
+  --threads 1,2 --repeats "${REPEATS:-3}" --idw-max-size 1 --csv "$OUT/benchmark.csv" 2> >(grep -v WARN >&2)
+{
+  echo "date: $(date -u +%Y-%m-%d)"
+  lscpu | grep -E "Model name|^CPU\(s\)|MHz|L2 cache|L3 cache"
+  grep MemTotal /proc/meminfo
+  echo "compiler: $(c++ --version | head -1)"
+  echo "VTK (ParaView): $(pvpython --version 2>/dev/null | head -1)"
+} > "$OUT/machine.txt"
+/usr/bin/python3 "$SOURCE_DIR/Benchmarks/write_benchmark_page.py" "$OUT/benchmark.csv" "$OUT/machine.txt" "$OUT/README.md"
+echo "wrote $OUT/README.md"
