@@ -2,6 +2,7 @@
 
 #include "DGMFBoundaryDetection.h"
 #include "DGMFCellQuality.h"
+#include "DGMFCompositeMesh.h"
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DGMFDeformation.h"
@@ -16,6 +17,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -36,6 +39,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <unistd.h>
@@ -93,28 +98,6 @@ const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
   return copy.data();
 }
 
-bool IsIntegerType(int type)
-{
-  switch (type)
-  {
-    case VTK_CHAR:
-    case VTK_SIGNED_CHAR:
-    case VTK_UNSIGNED_CHAR:
-    case VTK_SHORT:
-    case VTK_UNSIGNED_SHORT:
-    case VTK_INT:
-    case VTK_UNSIGNED_INT:
-    case VTK_LONG:
-    case VTK_UNSIGNED_LONG:
-    case VTK_LONG_LONG:
-    case VTK_UNSIGNED_LONG_LONG:
-    case VTK_ID_TYPE:
-      return true;
-    default:
-      return false;
-  }
-}
-
 /// Boundary nodes that carry no facet weight (marked, but on no boundary facet) get the mean.
 void FillMissingWeights(std::vector<double>& weights)
 {
@@ -159,17 +142,83 @@ std::string SelectedArrayName(vtkAlgorithm* algorithm, int index)
   }
   return "";
 }
+/// A fast 64-bit hash of raw memory (not cryptographic: it tells equal content from changed).
+std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed = 0x9e3779b97f4a7c15ull)
+{
+  const auto* p = static_cast<const unsigned char*>(data);
+  std::uint64_t h = seed ^ (bytes * 0xff51afd7ed558ccdull);
+  std::size_t k = 0;
+  for (; k + 8 <= bytes; k += 8)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, p + k, 8);
+    h = (h ^ word) * 0x100000001b3ull;
+    h ^= h >> 32;
+  }
+  for (; k < bytes; ++k)
+  {
+    h = (h ^ p[k]) * 0x100000001b3ull;
+  }
+  return h;
+}
+
+std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0)
+{
+  return HashBytes(array->GetVoidPointer(0),
+    static_cast<std::size_t>(array->GetNumberOfValues()) * static_cast<std::size_t>(array->GetDataTypeSize()),
+    seed + static_cast<std::uint64_t>(array->GetDataType()));
+}
+
+/**
+ * Identifies the content of an input object between executions: the object and its MTime, and
+ * when either changed (a reader that reads the same mesh again at each time step, a composite
+ * input merged anew), a hash of the content.
+ */
+struct ContentKey
+{
+  const void* Object = nullptr;
+  vtkMTimeType MTime = 0;
+  std::uint64_t Hash = 0;
+  bool Valid = false;
+
+  /// True when `object` has the content the key was set for; refreshes the object and MTime.
+  template <typename HashFunction>
+  bool Matches(vtkObject* object, const HashFunction& hash)
+  {
+    if (!this->Valid)
+    {
+      return false;
+    }
+    if (this->Object == object && this->MTime == object->GetMTime())
+    {
+      return true;
+    }
+    if (hash() != this->Hash)
+    {
+      return false;
+    }
+    this->Object = object;
+    this->MTime = object->GetMTime();
+    return true;
+  }
+
+  template <typename HashFunction>
+  void Set(vtkObject* object, const HashFunction& hash)
+  {
+    this->Object = object;
+    this->MTime = object->GetMTime();
+    this->Hash = hash();
+    this->Valid = true;
+  }
+};
 } // namespace
 
 /// What the filter keeps between executions: the graph and node locations, r, and the boundary.
 struct vtkDGMFDeformFilter::Cache
 {
-  // The key of the mapping: what it depends on.
-  vtkDataArray* PointsArray = nullptr;
-  vtkMTimeType PointsMTime = 0;
-  vtkCellArray* Cells = nullptr;
-  vtkMTimeType CellsMTime = 0;
-  int Dimension = 0; // (and the node kinds, kept by the mapping)
+  // The key of the mapping: the points, the dimension (and the node kinds, kept by the mapping).
+  ContentKey Points;
+  int Dimension = 0;
   // The cached mapping, r (for StaticR0) and f (for DampingFunction), shared with the output.
   std::unique_ptr<dgmf::DelaunayMapping> Mapping;
   double StaticR0 = 0.0;
@@ -183,8 +232,7 @@ struct vtkDGMFDeformFilter::Cache
   vtkMTimeType MarkerMTime = 0;
   std::vector<dgmf::NodeKind> MarkerKinds;
   // The mesh's boundary facets depend on the cells only.
-  vtkCellArray* BoundaryCells = nullptr;
-  vtkMTimeType BoundaryCellsMTime = 0;
+  ContentKey Cells;
   std::unique_ptr<dgmf_vtk::BoundaryFacets> Facets;
 };
 
@@ -241,14 +289,89 @@ void vtkDGMFDeformFilter::SetBoundaryMarkerArrayName(const char* name)
   this->SetInputArrayToProcess(MarkerArray, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
 }
 
+vtkTypeBool vtkDGMFDeformFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int vtkDGMFDeformFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
+}
+
+int vtkDGMFDeformFilter::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+int vtkDGMFDeformFilter::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The output has the input's type: an unstructured grid, or the same kind of composite.
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = vtkDataObject::GetData(outInfo);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    if (!output || !output->IsA(composite->GetClassName()))
+    {
+      vtkSmartPointer<vtkDataObject> created = vtk::TakeSmartPointer(composite->NewInstance());
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), created);
+    }
+  }
+  else if (!vtkUnstructuredGrid::SafeDownCast(output))
+  {
+    vtkNew<vtkUnstructuredGrid> created;
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), created);
+  }
+  return 1;
+}
+
 int vtkDGMFDeformFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
+  vtkDataObject* outputObject = vtkDataObject::GetData(outputVector, 0);
+  auto* compositeInput = vtkCompositeDataSet::SafeDownCast(inputObject);
+  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(outputObject);
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::SafeDownCast(inputObject);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::SafeDownCast(outputObject);
+  std::unique_ptr<dgmf_vtk::CompositeMesh> composite;
+  vtkNew<vtkUnstructuredGrid> mergedOutput;
+  if (compositeInput && compositeOutput)
+  {
+    // The blocks as one mesh (merged at coincident nodes), deformed below, scattered back after.
+    std::vector<std::string> arrays;
+    for (int index : { DisplacementArray, MarkerArray })
+    {
+      const std::string name = SelectedArrayName(this, index);
+      if (!name.empty())
+      {
+        arrays.push_back(name);
+      }
+    }
+    composite = std::make_unique<dgmf_vtk::CompositeMesh>(
+      compositeInput, arrays, SelectedArrayName(this, MarkerArray));
+    if (composite->GetNumberOfSkippedBlocks() > 0)
+    {
+      vtkWarningMacro(<< composite->GetNumberOfSkippedBlocks()
+                      << " blocks without explicit points (e.g. image data) are passed unchanged.");
+    }
+    input = composite->GetMergedMesh();
+    output = mergedOutput;
+  }
   if (!input || !output)
   {
-    vtkErrorMacro("Input and output must be vtkUnstructuredGrid.");
+    vtkErrorMacro("The input must be a vtkUnstructuredGrid or a composite dataset of meshes.");
     return 0;
   }
   int status = 0;
@@ -267,6 +390,22 @@ int vtkDGMFDeformFilter::RequestData(
   {
     vtkErrorMacro(<< e.what());
     status = 0;
+  }
+  if (composite)
+  {
+    compositeOutput->Initialize();
+    if (status)
+    {
+      composite->Scatter(output, { "r", "f" }, { "SizeSkew", "Inverted" }, compositeOutput);
+      vtkNew<vtkFieldData> fieldData;
+      fieldData->PassData(compositeInput->GetFieldData());
+      for (int k = 0; k < output->GetFieldData()->GetNumberOfArrays(); ++k)
+      {
+        fieldData->AddArray(output->GetFieldData()->GetAbstractArray(k));
+      }
+      compositeOutput->SetFieldData(fieldData);
+    }
+    return status;
   }
   if (!status)
   {
@@ -398,11 +537,11 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
                                                   << "' is not a point array of the input.");
       return false;
     }
-    if (markerArray->GetNumberOfComponents() != 1 || !IsIntegerType(markerArray->GetDataType()))
+    if (markerArray->GetNumberOfComponents() != 1)
     {
       vtkErrorMacro("The boundary-marker array '"
-        << markerName << "' must be an integer array with 1 component (0 = interior, "
-        << "1 = static boundary, 2 = moving boundary).");
+        << markerName << "' must have 1 component (0 = interior, 1 = static boundary, "
+        << "2 = moving boundary).");
       return false;
     }
   }
@@ -533,12 +672,17 @@ const dgmf_vtk::BoundaryFacets& vtkDGMFDeformFilter::GetBoundaryFacets(
 {
   Cache& cache = *this->GraphCache;
   vtkCellArray* cells = input->GetCells();
-  if (!cache.Facets || cache.BoundaryCells != cells || cache.BoundaryCellsMTime != cells->GetMTime())
+  auto hashCells = [&]()
+  {
+    std::uint64_t h = HashArray(cells->GetConnectivityArray());
+    h = HashArray(cells->GetOffsetsArray(), h);
+    return HashArray(input->GetCellTypesArray(), h);
+  };
+  if (!cache.Facets || !cache.Cells.Matches(cells, hashCells))
   {
     cache.Facets = std::make_unique<dgmf_vtk::BoundaryFacets>(
       dgmf_vtk::FindBoundaryFacets(input, dimension));
-    cache.BoundaryCells = cells;
-    cache.BoundaryCellsMTime = cells->GetMTime();
+    cache.Cells.Set(cells, hashCells);
   }
   return *cache.Facets;
 }
@@ -547,11 +691,10 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
 {
   Cache& cache = *this->GraphCache;
   vtkDataArray* pointsArray = input->GetPoints()->GetData();
-  vtkCellArray* cells = input->GetCells();
-  const bool reuse = cache.Mapping && cache.PointsArray == pointsArray &&
-    cache.PointsMTime == pointsArray->GetMTime() && cache.Cells == cells &&
-    cache.CellsMTime == cells->GetMTime() && cache.Dimension == inputs.Dimension &&
-    cache.Mapping->GetNodeKinds() == inputs.Kinds;
+  auto hashPoints = [&]()
+  { return HashBytes(inputs.Points, 3 * inputs.NumberOfNodes * sizeof(double)); };
+  const bool reuse = cache.Mapping && cache.Dimension == inputs.Dimension &&
+    cache.Mapping->GetNodeKinds() == inputs.Kinds && cache.Points.Matches(pointsArray, hashPoints);
   this->LastExecutionReusedGraph = reuse;
   if (reuse)
   {
@@ -562,10 +705,7 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
   cache.F = nullptr;
   cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(inputs.Dimension, inputs.Points,
     inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel);
-  cache.PointsArray = pointsArray;
-  cache.PointsMTime = pointsArray->GetMTime();
-  cache.Cells = cells;
-  cache.CellsMTime = cells->GetMTime();
+  cache.Points.Set(pointsArray, hashPoints);
   cache.Dimension = inputs.Dimension;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;
   this->LastGraphSeconds = mapping.GetGraphSeconds();

@@ -20,9 +20,16 @@
  * graph element (paper Eq. 7); in DGMF1 mode every node's own value is used.
  *
  * Which nodes are boundary nodes, and which of them move, comes from the optional boundary-marker
- * point array (input array 1, integer, 1 component): 0 = interior, 1 = static boundary,
+ * point array (input array 1, 1 component, values 0, 1, 2; integer or floating-point): 0 = interior, 1 = static boundary,
  * 2 = moving boundary. Without it, the boundary nodes are the nodes of the mesh's boundary faces
  * (3D) or edges (2D), and a boundary node is moving where its displacement is non-zero.
+ *
+ * Composite input (vtkMultiBlockDataSet, vtkPartitionedDataSetCollection, as the CGNS, Exodus and
+ * OpenFOAM readers produce) is deformed as one mesh with one graph: the blocks with explicit
+ * points (volume blocks and boundary patches) are merged at their coincident nodes, deformed
+ * together, and the output has the input's block structure, each block with its own arrays plus
+ * the filter's (SizeSkew for its own cells); the quality summary is in the output's field data.
+ * GetOutputDataObject(0) returns it (GetOutput() is for unstructured-grid input).
  *
  * A mesh is 2D when it has no 3D cell and all its nodes have the same z; the graph is then 2D and
  * the mesh can only rotate about z. Otherwise the graph is 3D.
@@ -270,6 +277,10 @@ protected:
   vtkDGMFDeformFilter();
   ~vtkDGMFDeformFilter() override;
 
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Method = DGMF;

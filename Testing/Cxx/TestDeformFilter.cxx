@@ -425,7 +425,7 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
   vtkNew<vtkDoubleArray> realMarker;
   realMarker->SetName("RealMarker");
   realMarker->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  realMarker->Fill(1.0);
+  realMarker->Fill(1.5);
   vtkNew<vtkUnstructuredGrid> withBadArrays;
   withBadArrays->DeepCopy(mesh);
   withBadArrays->GetPointData()->AddArray(twoComponents);
@@ -445,9 +445,9 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
     { "displacement with 2 components",
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetDisplacementArrayName("Flat"); },
       "it must have 3" },
-    { "marker that is not an integer array",
+    { "marker with a value that is not 0, 1 or 2",
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetBoundaryMarkerArrayName("RealMarker"); },
-      "must be an integer array" },
+      "has the value 1.5" },
     { "no array selected", [](vtkDGMFDeformFilter*, vtkUnstructuredGrid*) {}, "Select a boundary-marker array" },
     { "rotation about x of a 2D mesh",
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) {

@@ -1,0 +1,260 @@
+#include "DGMFCompositeMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataObjectTreeIterator.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <array>
+#include <cstring>
+#include <unordered_map>
+
+namespace dgmf_vtk
+{
+namespace
+{
+/// Exact coordinates as a hashable key.
+struct CoordinateKey
+{
+  std::array<std::uint64_t, 3> Bits;
+  bool operator==(const CoordinateKey& other) const { return this->Bits == other.Bits; }
+};
+
+struct CoordinateHash
+{
+  std::size_t operator()(const CoordinateKey& key) const
+  {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::uint64_t b : key.Bits)
+    {
+      h = (h ^ b) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+CoordinateKey KeyOf(const double p[3])
+{
+  CoordinateKey key;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double value = p[c] == 0.0 ? 0.0 : p[c]; // -0 and +0 are the same node
+    std::memcpy(&key.Bits[c], &value, sizeof(double));
+  }
+  return key;
+}
+} // namespace
+
+CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::string>& arrays,
+  const std::string& markerName)
+  : Input(input)
+  , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
+{
+  std::unordered_map<CoordinateKey, vtkIdType, CoordinateHash> nodeAt;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::vector<vtkSmartPointer<vtkDoubleArray>> merged(arrays.size());
+  vtkNew<vtkIdList> cellPoints;
+  this->Merged->Allocate(1024);
+
+  auto iterator = vtk::TakeSmartPointer(input->NewIterator());
+  iterator->SkipEmptyNodesOn();
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject());
+    if (!block)
+    {
+      ++this->Skipped;
+      continue;
+    }
+    Leaf leaf;
+    leaf.FlatIndex = iterator->GetCurrentFlatIndex();
+    leaf.NodeOf.resize(static_cast<std::size_t>(block->GetNumberOfPoints()));
+    std::vector<vtkDataArray*> sources(arrays.size());
+    for (std::size_t a = 0; a < arrays.size(); ++a)
+    {
+      sources[a] = block->GetPointData()->GetArray(arrays[a].c_str());
+    }
+    for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      block->GetPoint(i, p);
+      auto found = nodeAt.emplace(KeyOf(p), points->GetNumberOfPoints());
+      if (found.second)
+      {
+        points->InsertNextPoint(p);
+      }
+      const vtkIdType node = found.first->second;
+      leaf.NodeOf[static_cast<std::size_t>(i)] = node;
+      for (std::size_t a = 0; a < arrays.size(); ++a)
+      {
+        vtkDataArray* source = sources[a];
+        if (!merged[a])
+        {
+          // Sized by the first block that has the array; later blocks define it too.
+          if (!source)
+          {
+            continue;
+          }
+          merged[a] = vtkSmartPointer<vtkDoubleArray>::New();
+          merged[a]->SetName(arrays[a].c_str());
+          merged[a]->SetNumberOfComponents(source->GetNumberOfComponents());
+        }
+        vtkDoubleArray* target = merged[a];
+        const int components = target->GetNumberOfComponents();
+        while (target->GetNumberOfTuples() <= node)
+        {
+          const std::vector<double> zeros(static_cast<std::size_t>(components), 0.0);
+          target->InsertNextTuple(zeros.data());
+        }
+        if (!source || source->GetNumberOfComponents() != components)
+        {
+          continue;
+        }
+        if (arrays[a] == markerName)
+        {
+          target->SetComponent(node, 0, std::max(target->GetComponent(node, 0), source->GetComponent(i, 0)));
+        }
+        else
+        {
+          // The first non-zero value found for the node (a block may lack it or hold zeros).
+          bool unset = true;
+          for (int c = 0; c < components; ++c)
+          {
+            unset = unset && target->GetComponent(node, c) == 0.0;
+          }
+          for (int c = 0; unset && c < components; ++c)
+          {
+            target->SetComponent(node, c, source->GetComponent(i, c));
+          }
+        }
+      }
+    }
+    leaf.FirstCell = this->Merged->GetNumberOfCells();
+    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
+    {
+      block->GetCellPoints(c, cellPoints);
+      for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
+      {
+        cellPoints->SetId(k, leaf.NodeOf[static_cast<std::size_t>(cellPoints->GetId(k))]);
+      }
+      const int type = block->GetCellType(c);
+      auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
+      if (type == VTK_POLYHEDRON && grid)
+      {
+        // Polyhedra need their faces, renumbered like their points.
+        vtkNew<vtkIdList> faces;
+        grid->GetFaceStream(c, faces);
+        std::vector<vtkIdType> stream(faces->GetPointer(0), faces->GetPointer(0) + faces->GetNumberOfIds());
+        vtkIdType nfaces = stream.empty() ? 0 : stream[0];
+        for (std::size_t k = 1; k < stream.size();)
+        {
+          const vtkIdType count = stream[k++];
+          for (vtkIdType m = 0; m < count; ++m, ++k)
+          {
+            stream[k] = leaf.NodeOf[static_cast<std::size_t>(stream[k])];
+          }
+        }
+        std::vector<vtkIdType> faceList(stream.begin() + (stream.empty() ? 0 : 1), stream.end());
+        this->Merged->InsertNextCell(type, cellPoints->GetNumberOfIds(), cellPoints->GetPointer(0),
+          nfaces, faceList.data());
+      }
+      else
+      {
+        this->Merged->InsertNextCell(type, cellPoints);
+      }
+    }
+    leaf.Cells = this->Merged->GetNumberOfCells() - leaf.FirstCell;
+    this->Leaves.push_back(std::move(leaf));
+  }
+  this->Merged->SetPoints(points);
+  for (auto& array : merged)
+  {
+    if (array)
+    {
+      const int components = array->GetNumberOfComponents();
+      const std::vector<double> zeros(static_cast<std::size_t>(components), 0.0);
+      while (array->GetNumberOfTuples() < points->GetNumberOfPoints())
+      {
+        array->InsertNextTuple(zeros.data());
+      }
+      this->Merged->GetPointData()->AddArray(array);
+    }
+  }
+}
+
+void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
+  const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const
+{
+  output->CopyStructure(this->Input);
+  auto iterator = vtk::TakeSmartPointer(this->Input->NewIterator());
+  iterator->SkipEmptyNodesOn();
+  std::size_t next = 0;
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkDataObject* block = iterator->GetCurrentDataObject();
+    if (next >= this->Leaves.size() || this->Leaves[next].FlatIndex != iterator->GetCurrentFlatIndex())
+    {
+      output->SetDataSet(iterator, block); // not merged: passed as it is
+      continue;
+    }
+    const Leaf& leaf = this->Leaves[next++];
+    auto* source = vtkPointSet::SafeDownCast(block);
+    vtkSmartPointer<vtkPointSet> copy = vtk::TakeSmartPointer(source->NewInstance());
+    copy->ShallowCopy(source);
+    const auto n = static_cast<vtkIdType>(leaf.NodeOf.size());
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->SetPoint(i, deformed->GetPoint(leaf.NodeOf[static_cast<std::size_t>(i)]));
+    }
+    copy->SetPoints(points);
+    for (const std::string& name : pointArrays)
+    {
+      vtkDataArray* result = deformed->GetPointData()->GetArray(name.c_str());
+      if (result)
+      {
+        vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
+        values->SetName(name.c_str());
+        values->SetNumberOfComponents(result->GetNumberOfComponents());
+        values->SetNumberOfTuples(n);
+        for (vtkIdType i = 0; i < n; ++i)
+        {
+          values->SetTuple(i, leaf.NodeOf[static_cast<std::size_t>(i)], result);
+        }
+        copy->GetPointData()->AddArray(values);
+      }
+    }
+    for (const std::string& name : cellArrays)
+    {
+      vtkDataArray* result = deformed->GetCellData()->GetArray(name.c_str());
+      if (result)
+      {
+        vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
+        values->SetName(name.c_str());
+        values->SetNumberOfComponents(result->GetNumberOfComponents());
+        values->SetNumberOfTuples(leaf.Cells);
+        for (vtkIdType c = 0; c < leaf.Cells; ++c)
+        {
+          values->SetTuple(c, leaf.FirstCell + c, result);
+        }
+        copy->GetCellData()->AddArray(values);
+      }
+    }
+    output->SetDataSet(iterator, copy);
+  }
+}
+
+} // namespace dgmf_vtk

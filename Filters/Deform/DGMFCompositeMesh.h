@@ -1,0 +1,65 @@
+/**
+ * @file DGMFCompositeMesh.h
+ * @brief Composite input (multiblock, partitioned dataset collection) as one mesh: the blocks are
+ * merged at their shared nodes, deformed together, and scattered back (private to the
+ * DGMF::Filters module).
+ */
+#ifndef DGMFCompositeMesh_h
+#define DGMFCompositeMesh_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <string>
+#include <vector>
+
+class vtkCompositeDataSet;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/**
+ * The blocks of a composite dataset as one unstructured grid. Every leaf with explicit points
+ * (unstructured grids, polydata such as boundary patches, structured grids) contributes its cells;
+ * nodes at exactly the same coordinates, in the same or different blocks, become one node.
+ * The merged grid carries the point arrays named in `arrays` (first value found for each merged
+ * node, except the boundary marker, `markerName`, which keeps the largest: a node that moves in
+ * any block moves); a block without the array contributes zeros.
+ */
+class CompositeMesh
+{
+public:
+  CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::string>& arrays,
+    const std::string& markerName);
+
+  /// The merged grid (empty when no leaf has points).
+  vtkUnstructuredGrid* GetMergedMesh() const { return this->Merged; }
+
+  /// Number of leaves that were skipped (no explicit points, e.g. image data).
+  int GetNumberOfSkippedBlocks() const { return this->Skipped; }
+
+  /**
+   * Builds the output: `output` gets the structure of the input; every merged leaf becomes a copy
+   * of the input leaf (all its arrays) with the deformed points and the merged result's point
+   * arrays `pointArrays` and cell arrays `cellArrays`; the other leaves are passed as they are.
+   */
+  void Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
+    const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const;
+
+private:
+  vtkCompositeDataSet* Input;
+  vtkSmartPointer<vtkUnstructuredGrid> Merged;
+  struct Leaf
+  {
+    unsigned int FlatIndex;          ///< the leaf's flat index in the input
+    std::vector<vtkIdType> NodeOf;   ///< merged node of each of the leaf's points
+    vtkIdType FirstCell, Cells;      ///< the leaf's cells in the merged grid
+  };
+  std::vector<Leaf> Leaves;
+  int Skipped = 0;
+};
+
+} // namespace dgmf_vtk
+
+#endif
