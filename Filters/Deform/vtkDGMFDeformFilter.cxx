@@ -857,6 +857,10 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   }
   const Clock::time_point deformed = Clock::now();
   this->LastDeformationSeconds = std::chrono::duration<double>(deformed - start).count();
+  if (this->Method == DGMF || this->Method == DGM || this->Method == DGRBF)
+  {
+    AddFieldCount(fieldData, "GraphReused", this->LastExecutionReusedGraph ? 1 : 0);
+  }
   vtkNew<vtkStringArray> methodName;
   methodName->SetName("Method");
   methodName->InsertNextValue(MethodName(this->Method));

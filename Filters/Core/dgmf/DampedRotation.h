@@ -22,6 +22,14 @@ namespace dgmf
  * sin and cos of rho come from their Taylor series (|rho| < 0.02 for |theta| <= 4 pi: the series
  * is exact to round-off), and the addition formulas combine the two. f = 0 and f = 1 are exact table
  * entries. The rotations about x, y and z are applied in that order (R = Rz Ry Rx).
+ *
+ * A motion with an axis rotation (RigidMotion::AxisAngleDegrees != 0) is tabulated the same way
+ * for its one angle, and applied with Rodrigues' formula about the fixed unit axis k:
+ * R v = cos(f a) v + sin(f a) (k x v) + (1 - cos(f a)) (k . v) k.
+ *
+ * The constructor throws std::invalid_argument when an angle is beyond +-720 degrees or not
+ * finite, and when the rotation is ill-defined (RigidMotion::CheckRotation: both Euler angles and
+ * an axis angle, or a zero axis).
  */
 class DampedRigidMotion
 {
@@ -33,6 +41,19 @@ public:
   {
     double y[3] = { x[0] - this->Motion.Center[0], x[1] - this->Motion.Center[1],
       x[2] - this->Motion.Center[2] };
+    if (this->HasAxisRotation)
+    {
+      double s, c;
+      this->AxisRotation.SinCos(f, s, c);
+      const double* k = this->UnitAxis;
+      const double kv = (1.0 - c) * (k[0] * y[0] + k[1] * y[1] + k[2] * y[2]);
+      const double w[3] = { k[1] * y[2] - k[2] * y[1], k[2] * y[0] - k[0] * y[2],
+        k[0] * y[1] - k[1] * y[0] };
+      for (int i = 0; i < 3; ++i)
+      {
+        y[i] = c * y[i] + s * w[i] + kv * k[i];
+      }
+    }
     for (int k = 0; k < this->NumberOfAxes; ++k)
     {
       const Axis& axis = this->Axes[k];
@@ -83,6 +104,9 @@ private:
   RigidMotion Motion;
   Axis Axes[3];
   int NumberOfAxes = 0;
+  bool HasAxisRotation = false; ///< the rotation is AxisRotation about UnitAxis (no Euler angles)
+  Axis AxisRotation;            ///< table of the axis angle (I, J unused)
+  double UnitAxis[3] = { 0.0, 0.0, 1.0 };
 };
 
 } // namespace dgmf

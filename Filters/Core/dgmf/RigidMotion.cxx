@@ -1,6 +1,7 @@
 #include "dgmf/RigidMotion.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace dgmf
 {
@@ -25,10 +26,49 @@ void RotateAbout(int axis, double angle, double R[3][3])
 }
 } // namespace
 
-bool RigidMotion::HasRotation() const
+bool RigidMotion::HasEulerAngles() const
 {
   return this->AnglesDegrees[0] != 0.0 || this->AnglesDegrees[1] != 0.0 ||
     this->AnglesDegrees[2] != 0.0;
+}
+
+bool RigidMotion::HasAxisRotation() const
+{
+  return this->AxisAngleDegrees != 0.0;
+}
+
+bool RigidMotion::HasRotation() const
+{
+  return this->HasEulerAngles() || this->HasAxisRotation();
+}
+
+void RigidMotion::GetUnitAxis(double axis[3]) const
+{
+  const double norm = std::sqrt(
+    this->Axis[0] * this->Axis[0] + this->Axis[1] * this->Axis[1] + this->Axis[2] * this->Axis[2]);
+  if (!(norm > 0.0) || !std::isfinite(norm))
+  {
+    throw std::invalid_argument("the rotation axis must be a finite, non-zero vector");
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    axis[c] = this->Axis[c] / norm;
+  }
+}
+
+void RigidMotion::CheckRotation() const
+{
+  if (!this->HasAxisRotation())
+  {
+    return;
+  }
+  if (this->HasEulerAngles())
+  {
+    throw std::invalid_argument(
+      "a rigid motion has either Euler angles or an axis rotation, not both");
+  }
+  double axis[3];
+  this->GetUnitAxis(axis);
 }
 
 bool RigidMotion::IsIdentity() const
@@ -39,6 +79,27 @@ bool RigidMotion::IsIdentity() const
 
 void RigidMotion::GetRotationMatrix(double fraction, double R[3][3]) const
 {
+  this->CheckRotation();
+  if (this->HasAxisRotation())
+  {
+    // Rodrigues: R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k^T.
+    double k[3];
+    this->GetUnitAxis(k);
+    const double angle = fraction * this->AxisAngleDegrees * DegreesToRadians;
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    const double v = 1.0 - c;
+    R[0][0] = c + v * k[0] * k[0];
+    R[0][1] = v * k[0] * k[1] - s * k[2];
+    R[0][2] = v * k[0] * k[2] + s * k[1];
+    R[1][0] = v * k[1] * k[0] + s * k[2];
+    R[1][1] = c + v * k[1] * k[1];
+    R[1][2] = v * k[1] * k[2] - s * k[0];
+    R[2][0] = v * k[2] * k[0] - s * k[1];
+    R[2][1] = v * k[2] * k[1] + s * k[0];
+    R[2][2] = c + v * k[2] * k[2];
+    return;
+  }
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)
@@ -57,6 +118,7 @@ void RigidMotion::GetRotationMatrix(double fraction, double R[3][3]) const
 
 void RigidMotion::Apply(double f, const double x[3], const double* d, double out[3]) const
 {
+  this->CheckRotation();
   double y[3] = { x[0], x[1], x[2] };
   if (f != 0.0 && this->HasRotation())
   {
