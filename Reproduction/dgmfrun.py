@@ -182,12 +182,13 @@ def rotation_z(degrees):
 
 
 def render_quality(source, path, center, half_height, title, size=(800, 600), camera=None,
-                   lit=False):
+                   lit=False, edges=True):
     """Render ``source`` coloured by SizeSkew (cells, bands of 0.1) with its edges, offscreen.
 
     2D: ``center`` (x, y) and ``half_height`` (parallel projection, looking down z). 3D:
     ``camera`` = (position, focal point, view up), with a parallel projection of ``half_height``
-    when it is given, a perspective one otherwise. Unlit (flat colours) unless ``lit``.
+    when it is given, a perspective one otherwise. Unlit (flat colours) unless ``lit``; cell
+    edges drawn unless ``edges`` is false.
     """
     view = simple.CreateRenderView()
     view.ViewSize = list(size)
@@ -196,7 +197,7 @@ def render_quality(source, path, center, half_height, title, size=(800, 600), ca
     if hasattr(view, "UseColorPaletteForBackground"):
         view.UseColorPaletteForBackground = 0
     display = simple.Show(source, view)
-    display.Representation = "Surface With Edges"
+    display.Representation = "Surface With Edges" if edges else "Surface"
     display.EdgeColor = [0.15, 0.15, 0.15]
     if not lit:
         display.Ambient, display.Diffuse, display.Specular = 1.0, 0.0, 0.0

@@ -38,7 +38,8 @@ def plot(rows, key, names, x, xlabel, title, path, styles=None, log2=False):
     """Two panels (mean, minimum) with one line per name; crosses where cells are inverted."""
     figure, axes = plt.subplots(1, 2, figsize=(9, 3.6))
     for index, name in enumerate(names):
-        xs, means, minima, inverted = series(rows, key, name, x)
+        xs, means, minima, inverted = series(
+            [r for r in rows if not log2 or float(r[x]) > 0], key, name, x)
         style = {"marker": MARKERS[index % len(MARKERS)], "markersize": 4,
                  "linestyle": LINES[index % len(LINES)], **(styles or {}).get(name, {})}
         for axis, values in zip(axes, (means, minima)):

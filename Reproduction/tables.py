@@ -69,8 +69,9 @@ def bar_sections(results):
                     sweep_table(rows, "method", methods, "A", (4, 8, 16, 32))]
         rows = read_rows(results, f"table2_twisted_bar_{form}")
         if rows:
-            out += [f"## Table 2 against A: 45 degrees, bump form '{form}' (mean / minimum)\n",
-                    sweep_table(rows, "method", methods, "A", (4, 8, 16, 32))]
+            out += [f"## Table 2 against A: 45 degrees, bump form '{form}' (mean / minimum; "
+                    "A = 0: the rotation alone)\n",
+                    sweep_table(rows, "method", methods, "A", (0, 4, 8, 16, 32))]
     rows = read_rows(results, "table2_twisted_bar_paper")
     if rows:
         ours = {(r["method"], r["A"]): r for r in rows}
@@ -91,7 +92,8 @@ def bar_sections(results):
         for rotation in ("0", "45"):
             chosen = [r for r in rows if r["rotation"] == rotation or r["method"] == "undeformed"]
             out += [f"## Finer bar mesh ({size}), paper form, rotation {rotation}\n",
-                    sweep_table(chosen, "method", methods, "A", (4, 8, 16, 32))]
+                    sweep_table(chosen, "method", methods, "A", (0, 4, 8, 16, 32)
+                                if rotation == "45" else (4, 8, 16, 32))]
     return out
 
 

@@ -13,7 +13,7 @@ part is the bump turned with the bar, R d, so the boundary ends at c + R (x + d 
 the angle and R d by f; the other methods interpolate the total boundary motion.
 
 Writes fig12_twisted_bar_<form>.csv (no rotation) and table2_twisted_bar_<form>.csv (45 degrees),
-both for A in 4, 8, 16, 32; table2_rbf_support.csv (RBF with compact support radii, paper form);
+both for A in 4, 8, 16, 32 (with the rotation also A = 0); table2_rbf_support.csv (RBF with compact support radii, paper form);
 with --fine-mesh, bar_fine_mesh.csv (the same sweeps on a finer, uncommitted mesh); and, for the
 chosen form, the pictures fig13_bar_A16_<method>.png and fig14_bar_A16_rot45_<method>.png.
 Usage: pvpython twisted_bar.py [--form paper|method] [--fine-mesh FILE.vtu] ...
@@ -70,10 +70,12 @@ def run_case(deform, grid, amplitude, form, paper_angle):
 
 
 def sweep(deform, grid, form, paper_angle):
-    """The undeformed mesh (method "undeformed", A = 0), then run_case for every amplitude."""
+    """The undeformed mesh (method "undeformed", A = 0), then run_case for every amplitude, and
+    with a rotation also for A = 0 (the rotation alone)."""
     set_bump(grid, 0.0, form, 0.0)
     rows = [dict(dgmfrun.run(deform, "DGMF"), method="undeformed", A=0, rotation=0.0, form=form)]
-    return rows + [row for amplitude in AMPLITUDES
+    amplitudes = ((0,) if paper_angle else ()) + AMPLITUDES
+    return rows + [row for amplitude in amplitudes
                    for row in run_case(deform, grid, amplitude, form, paper_angle)]
 
 

@@ -73,7 +73,7 @@ def timings(source, methods, repeats=3):
     (graph + location + mapping), then a changed motion (15 degrees: mapping only, the graph and
     the locations are cached), then 30 degrees again. Rows: the best of the repeats."""
     rows = []
-    runs = ("first (graph + location + mapping)", "changed motion (15 degrees)", "30 degrees again")
+    runs = ("first run of a fresh filter", "changed motion (15 degrees)", "30 degrees again")
     for label, method, mode, array in methods:
         times = {run: [] for run in runs}
         for _ in range(1 if label == "IDW" else repeats):
@@ -125,7 +125,7 @@ def pictures(deform, output, rows, prefix):
     title = (f"wing fold, DGMF1: SizeSkew of the cells at the wall\n(whole mesh: mean "
              f"{row['mean']:.3f}, min {row['minimum']:.3f}, {row['inverted']} inverted)")
     dgmfrun.render_quality(body, os.path.join(output, f"fig15_{prefix}_surface.png"), None, 520.0,
-                           title, camera=surface_view, lit=True)
+                           title, camera=surface_view, lit=True, edges=False)
     simple.Delete(body)
     simple.Delete(surface)
 

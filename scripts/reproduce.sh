@@ -69,8 +69,10 @@ total_start=$(date +%s)
   echo
   echo "Generated; times vary from run to run. $(date -u +%Y-%m-%d),"
   echo "$(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)),"
-  echo "commit $(git -C "$SOURCE_DIR" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-  echo "$(git -C "$SOURCE_DIR" diff --quiet HEAD -- Filters Plugin 2>/dev/null || echo '(with local changes)')."
+  changes=""
+  git -C "$SOURCE_DIR" diff --quiet HEAD -- Filters Plugin Tools 2>/dev/null ||
+    changes=" with local changes to the C++ code"
+  echo "commit $(git -C "$SOURCE_DIR" rev-parse --short HEAD 2>/dev/null || echo unknown)$changes."
   echo
   echo "| step | seconds |"
   echo "|---|---|"

@@ -99,8 +99,11 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         for (int k = 0; k < corners; ++k)
         {
           const auto p = static_cast<std::size_t>(pts[order[k]]);
-          std::copy(originalPoints + 3 * p, originalPoints + 3 * p + 3, original + 3 * k);
-          std::copy(deformedPoints + 3 * p, deformedPoints + 3 * p + 3, deformed + 3 * k);
+          for (int c = 0; c < 3; ++c)
+          {
+            original[3 * k + c] = originalPoints[3 * p + c];
+            deformed[3 * k + c] = deformedPoints[3 * p + c];
+          }
         }
         const dgmf::CellQuality quality = dgmf::ComputeSizeSkew(shape, original, deformed);
         values[c] = quality.SizeSkew;

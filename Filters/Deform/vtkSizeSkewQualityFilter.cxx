@@ -41,6 +41,10 @@ bool SameCells(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
   {
     return false;
   }
+  if (a->GetCells() == b->GetCells() && a->GetCellTypesArray() == b->GetCellTypesArray())
+  {
+    return true; // the same arrays (a deformed mesh usually shares its cells with the original)
+  }
   vtkDataArray* ca = a->GetCells()->GetConnectivityArray();
   vtkDataArray* cb = b->GetCells()->GetConnectivityArray();
   if (ca->GetNumberOfValues() != cb->GetNumberOfValues())

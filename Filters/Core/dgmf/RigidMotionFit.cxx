@@ -198,21 +198,29 @@ FittedMotion FitRigidMotion(int dimension, const double* points, const double* d
   // Cross-covariance H = sum p q^T of the centred original (p) and displaced (q) points.
   const int used = dimension;
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-  double pp = 0.0, qq = 0.0;
+  double pp = 0.0, qq = 0.0, magnitude = 0.0;
   for (std::size_t i = 0; i < count; ++i)
   {
     const std::size_t node = NodeOf(nodes, i);
     Eigen::Vector3d p = Eigen::Vector3d::Zero(), q = Eigen::Vector3d::Zero();
     for (int c = 0; c < used; ++c)
     {
-      p[c] = points[3 * node + c] - fit.Center[c];
-      q[c] = p[c] + (displacements[3 * node + c] - fit.Translation[c]);
+      const double x = points[3 * node + c];
+      const double d = displacements[3 * node + c];
+      p[c] = x - fit.Center[c];
+      q[c] = p[c] + (d - fit.Translation[c]);
+      magnitude = std::max({ magnitude, std::abs(x), std::abs(x + d) });
     }
     H += p * q.transpose();
     pp += p.squaredNorm();
     qq += q.squaredNorm();
   }
-  const double scale = std::sqrt(pp * qq);
+  // A singular value of H below `relative` means p and q are uncorrelated (for the second one,
+  // relative to the first: the points lie on a line); below `noise`, it is at the level of the
+  // round-off of the coordinates (points that coincide up to round-off).
+  const double relative = RotationFitTolerance * std::sqrt(pp * qq);
+  const double noise =
+    RotationFitTolerance * magnitude * std::sqrt(n) * (std::sqrt(pp) + std::sqrt(qq));
 
   Eigen::Vector3d axis(0.0, 0.0, 1.0);
   double angle = 0.0;
@@ -221,7 +229,7 @@ FittedMotion FitRigidMotion(int dimension, const double* points, const double* d
     // 2D Procrustes: the angle maximising sum q . R p.
     const double dot = H(0, 0) + H(1, 1);
     const double cross = H(0, 1) - H(1, 0);
-    if (std::hypot(dot, cross) > RotationFitTolerance * scale)
+    if (std::hypot(dot, cross) > std::max(relative, noise))
     {
       fit.Status = RotationFit::Determined;
       const double theta = std::atan2(cross, dot);
@@ -235,11 +243,11 @@ FittedMotion FitRigidMotion(int dimension, const double* points, const double* d
     const Eigen::Vector3d& sigma = svd.singularValues();
     const Eigen::Matrix3d& U = svd.matrixU();
     const Eigen::Matrix3d& V = svd.matrixV();
-    if (!(sigma[0] > RotationFitTolerance * scale))
+    if (!(sigma[0] > std::max(relative, noise)))
     {
       // No correlation between p and q: nothing to fit (R = I).
     }
-    else if (!(sigma[1] > RotationFitTolerance * sigma[0]))
+    else if (!(sigma[1] > std::max(RotationFitTolerance * sigma[0], noise)))
     {
       // H = sigma_1 u v^T: any R with R u = v is optimal. Take the smallest such rotation.
       fit.Status = RotationFit::Collinear;

@@ -60,10 +60,16 @@ struct FittedMotion
 };
 
 /**
- * Relative threshold below which a rotation counts as not determined: in 2D, when
- * |(sum p.q, sum p x q)| <= tolerance * sqrt(sum |p|^2 sum |q|^2) (p, q the centred original and
- * displaced points); in 3D when the largest singular value of H = sum p q^T is below the same
- * bound (Undetermined), or the second is below tolerance times the largest (Collinear).
+ * Relative threshold below which a rotation counts as not determined. With p_i, q_i the centred
+ * original and displaced points, n their number, M the largest absolute coordinate of the
+ * original and displaced points, and the bounds
+ *   relative = tolerance sqrt(sum |p|^2 sum |q|^2),
+ *   noise = tolerance M sqrt(n) (sqrt(sum |p|^2) + sqrt(sum |q|^2))   (round-off of coordinates),
+ * the fit is Undetermined when |(sum p.q, sum p x q)| (2D) or the largest singular value of
+ * H = sum p q^T (3D) is <= max(relative, noise), and Collinear (3D) when the second singular value
+ * is <= max(tolerance times the largest, noise). In words: a body smaller than about 1e-12 of its
+ * coordinates is a point, and one thinner than about 1e-6 of its length (or than 1e-12 of its
+ * coordinates) a line.
  */
 constexpr double RotationFitTolerance = 1e-12;
 

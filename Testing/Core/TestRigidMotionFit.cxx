@@ -1,0 +1,881 @@
+// Rigid-motion extraction (Kabsch fit, residual), axis-angle rigid motions, and DGMF with a
+// fitted motion.
+#include "SyntheticNodes.h"
+
+#include "dgmf/DGMFDeformation.h"
+#include "dgmf/DampedRotation.h"
+#include "dgmf/DampingField.h"
+#include "dgmf/DelaunayMapping.h"
+#include "dgmf/RigidMotionFit.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+using Vec = std::array<double, 3>;
+using Mat = std::array<Vec, 3>;
+
+Vec Unit(const Vec& v)
+{
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return { v[0] / n, v[1] / n, v[2] / n };
+}
+
+double Dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// Independent Rodrigues rotation matrix of `angle` radians about the unit axis k.
+Mat Rodrigues(const Vec& k, double angle)
+{
+  const double c = std::cos(angle), s = std::sin(angle), v = 1.0 - c;
+  Mat R;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      R[i][j] = (i == j ? c : 0.0) + v * k[i] * k[j];
+    }
+  }
+  R[0][1] -= s * k[2];
+  R[0][2] += s * k[1];
+  R[1][0] += s * k[2];
+  R[1][2] -= s * k[0];
+  R[2][0] -= s * k[1];
+  R[2][1] += s * k[0];
+  return R;
+}
+
+Mat Multiply(const Mat& A, const Mat& B)
+{
+  Mat C{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        C[i][j] += A[i][k] * B[k][j];
+  return C;
+}
+
+Vec Times(const Mat& R, const Vec& v)
+{
+  return { Dot(R[0], v), Dot(R[1], v), Dot(R[2], v) };
+}
+
+Mat ToMat(const double R[3][3])
+{
+  Mat M;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      M[i][j] = R[i][j];
+  return M;
+}
+
+double Determinant(const Mat& R)
+{
+  return R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) -
+    R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
+    R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]);
+}
+
+void ExpectMatrixNear(const Mat& A, const Mat& B, double tolerance, const char* what)
+{
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(A[i][j], B[i][j], tolerance) << what << " (" << i << ", " << j << ")";
+}
+
+Vec RandomUnit(std::mt19937& random)
+{
+  std::normal_distribution<double> normal;
+  return Unit({ normal(random), normal(random), normal(random) });
+}
+
+/// Displacements D_i = c0 + R (x_i - c0) + t - x_i of a rigid motion.
+std::vector<double> RigidDisplacements(
+  const std::vector<double>& points, const Mat& R, const Vec& c0, const Vec& t)
+{
+  std::vector<double> D(points.size());
+  for (std::size_t i = 0; i < points.size(); i += 3)
+  {
+    const Vec r = { points[i] - c0[0], points[i + 1] - c0[1], points[i + 2] - c0[2] };
+    const Vec y = Times(R, r);
+    for (int c = 0; c < 3; ++c)
+    {
+      D[i + c] = c0[c] + y[c] + t[c] - points[i + c];
+    }
+  }
+  return D;
+}
+
+std::vector<double> RandomPoints(std::mt19937& random, int count, bool planar, double z = 0.0)
+{
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  std::uniform_real_distribution<double> offset(-10.0, 10.0);
+  const Vec shift = { offset(random), offset(random), offset(random) };
+  std::vector<double> points;
+  for (int i = 0; i < count; ++i)
+  {
+    points.push_back(shift[0] + coordinate(random));
+    points.push_back(shift[1] + coordinate(random));
+    points.push_back(planar ? z : shift[2] + coordinate(random));
+  }
+  return points;
+}
+
+/// Mean displacement, computed independently of the fit.
+Vec MeanDisplacement(const std::vector<double>& D)
+{
+  Vec mean = { 0.0, 0.0, 0.0 };
+  const double n = static_cast<double>(D.size() / 3);
+  for (std::size_t i = 0; i < D.size(); i += 3)
+    for (int c = 0; c < 3; ++c)
+      mean[c] += D[i + c] / n;
+  return mean;
+}
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The fit
+
+TEST(RigidMotionFit, RecoversRandomRigidMotions3D)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angles(0.01, 180.0);
+  std::uniform_real_distribution<double> shift(-2.0, 2.0);
+  std::uniform_int_distribution<int> counts(3, 60);
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    const std::vector<double> points = RandomPoints(random, counts(random), false);
+    const Vec axis = RandomUnit(random);
+    const double angle = angles(random);
+    const Vec c0 = { shift(random), shift(random), shift(random) };
+    const Vec t = { shift(random), shift(random), shift(random) };
+    const Mat R = Rodrigues(axis, angle * Pi / 180.0);
+    const std::vector<double> D = RigidDisplacements(points, R, c0, t);
+    const dgmf::FittedMotion fit =
+      dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, points.size() / 3);
+    ASSERT_EQ(fit.Status, dgmf::RotationFit::Determined) << "trial " << trial;
+    EXPECT_NEAR(fit.AngleDegrees, angle, 1e-10) << "trial " << trial;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(fit.Axis[c], axis[c], 1e-10) << "trial " << trial;
+    }
+    const Vec mean = MeanDisplacement(D);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(fit.Translation[c], mean[c], 1e-10) << "trial " << trial;
+    }
+    ExpectMatrixNear(ToMat(fit.Rotation), R, 1e-12, "rotation");
+    EXPECT_LT(fit.ResidualRMS, 1e-12);
+    EXPECT_LT(fit.MaximumResidual, 1e-12);
+    EXPECT_EQ(fit.NumberOfPoints, points.size() / 3);
+  }
+}
+
+TEST(RigidMotionFit, RecoversRotationsNearAndAt180Degrees)
+{
+  std::mt19937 random(12);
+  std::vector<Vec> axes = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+  for (int k = 0; k < 20; ++k)
+  {
+    axes.push_back(RandomUnit(random));
+  }
+  for (const double angle : { 179.0, 179.9, 179.999999, 180.0 })
+  {
+    for (const Vec& axis : axes)
+    {
+      const std::vector<double> points = RandomPoints(random, 25, false);
+      const Mat R = Rodrigues(axis, angle / 180.0 * Pi);
+      const std::vector<double> D = RigidDisplacements(points, R, { 0.5, -1.0, 2.0 }, { 1, 2, 3 });
+      const dgmf::FittedMotion fit =
+        dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, points.size() / 3);
+      EXPECT_EQ(fit.Status, dgmf::RotationFit::Determined);
+      EXPECT_NEAR(fit.AngleDegrees, angle, 1e-10) << "angle " << angle;
+      EXPECT_LE(fit.AngleDegrees, 180.0);
+      const Vec fitted = { fit.Axis[0], fit.Axis[1], fit.Axis[2] };
+      if (angle < 180.0)
+      {
+        EXPECT_NEAR(Dot(fitted, axis), 1.0, 1e-10) << "angle " << angle; // same sense
+      }
+      else
+      {
+        EXPECT_NEAR(std::abs(Dot(fitted, axis)), 1.0, 1e-10); // k and -k: the same rotation
+      }
+      ExpectMatrixNear(ToMat(fit.Rotation), R, 1e-12, "rotation");
+      EXPECT_LT(fit.MaximumResidual, 1e-12);
+    }
+  }
+}
+
+TEST(RigidMotionFit, PureTranslationHasNoRotation)
+{
+  std::mt19937 random(13);
+  const std::vector<double> points = RandomPoints(random, 40, false);
+  const Mat I = Rodrigues({ 0, 0, 1 }, 0.0);
+  const std::vector<double> D = RigidDisplacements(points, I, { 0, 0, 0 }, { 0.3, -0.7, 1.1 });
+  const dgmf::FittedMotion fit = dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, 40);
+  EXPECT_LT(fit.AngleDegrees, 1e-10);
+  EXPECT_NEAR(fit.Translation[0], 0.3, 1e-14);
+  EXPECT_NEAR(fit.Translation[1], -0.7, 1e-14);
+  EXPECT_NEAR(fit.Translation[2], 1.1, 1e-14);
+  // Nothing at all: exactly the identity.
+  const std::vector<double> zero(points.size(), 0.0);
+  const dgmf::FittedMotion still = dgmf::FitRigidMotion(3, points.data(), zero.data(), nullptr, 40);
+  EXPECT_LT(still.AngleDegrees, 1e-12);
+  EXPECT_EQ(still.Translation[0], 0.0);
+  EXPECT_LT(still.MaximumResidual, 1e-14);
+}
+
+TEST(RigidMotionFit, RecoversRotations2D)
+{
+  std::mt19937 random(14);
+  std::uniform_real_distribution<double> angles(-180.0, 180.0);
+  std::uniform_real_distribution<double> shift(-2.0, 2.0);
+  std::vector<double> tested;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    tested.push_back(angles(random));
+  }
+  tested.insert(tested.end(), { 180.0, -180.0, 179.9, -179.9, 90.0, -90.0 });
+  for (const double angle : tested)
+  {
+    const double z = 0.7;
+    const std::vector<double> points =
+      RandomPoints(random, 2 + static_cast<int>(random() % 30), true, z);
+    const Mat R = Rodrigues({ 0, 0, 1 }, angle / 180.0 * Pi);
+    std::vector<double> D = RigidDisplacements(
+      points, R, { shift(random), shift(random), z }, { shift(random), shift(random), 0.0 });
+    for (std::size_t i = 2; i < D.size(); i += 3)
+    {
+      D[i] = 0.0; // a 2D displacement has no z
+    }
+    const dgmf::FittedMotion fit =
+      dgmf::FitRigidMotion(2, points.data(), D.data(), nullptr, points.size() / 3);
+    ASSERT_EQ(fit.Status, dgmf::RotationFit::Determined);
+    EXPECT_EQ(fit.Axis[0], 0.0);
+    EXPECT_EQ(fit.Axis[1], 0.0);
+    EXPECT_NEAR(fit.AngleDegrees, std::abs(angle), 1e-10) << "angle " << angle;
+    if (std::abs(angle) < 180.0)
+    {
+      EXPECT_EQ(fit.Axis[2], angle < 0.0 ? -1.0 : 1.0) << "angle " << angle;
+    }
+    EXPECT_EQ(fit.Center[2], z);
+    EXPECT_EQ(fit.Translation[2], 0.0);
+    EXPECT_LT(fit.MaximumResidual, 1e-12);
+    // The fitted motion keeps the plane bit for bit.
+    const dgmf::DampedRigidMotion damped(fit.ToRigidMotion());
+    for (std::size_t i = 0; i < points.size(); i += 3)
+    {
+      for (const double f : { 0.0, 0.3, 1.0 })
+      {
+        double out[3];
+        damped.Apply(f, points.data() + i, nullptr, out);
+        EXPECT_EQ(out[2], z);
+      }
+    }
+  }
+  // Exactly 180 degrees of a symmetric set: the sums of cross products vanish exactly.
+  const std::vector<double> square = { 1, 1, 0, -1, 1, 0, -1, -1, 0, 1, -1, 0 };
+  const std::vector<double> flip = { -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0 };
+  const dgmf::FittedMotion half = dgmf::FitRigidMotion(2, square.data(), flip.data(), nullptr, 4);
+  EXPECT_EQ(half.AngleDegrees, 180.0);
+  EXPECT_EQ(half.Axis[2], 1.0);
+  EXPECT_LT(half.MaximumResidual, 1e-15);
+}
+
+TEST(RigidMotionFit, SymmetricDeformationHasNoRotation)
+{
+  // 3D: a point set symmetric under x -> -x, y -> -y, z -> -z about its centre, and a displacement
+  // odd in each coordinate separately (a stretch with cubic terms): H = sum p q^T is diagonal and
+  // positive, so R = I by symmetry, and the translation is 0.
+  const Vec centre = { 1.0, -2.0, 0.5 };
+  std::vector<double> points, D;
+  for (int i = -2; i <= 2; ++i)
+  {
+    for (int j = -2; j <= 2; ++j)
+    {
+      for (int k = -2; k <= 2; ++k)
+      {
+        const double p[3] = { 0.7 * i, 0.4 * j, 0.3 * k };
+        for (int c = 0; c < 3; ++c)
+        {
+          points.push_back(centre[c] + p[c]);
+        }
+        D.push_back(0.3 * p[0] + 0.1 * p[0] * p[0] * p[0]);
+        D.push_back(-0.2 * p[1]);
+        D.push_back(0.05 * p[2] * p[2] * p[2]);
+      }
+    }
+  }
+  const dgmf::FittedMotion fit =
+    dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, points.size() / 3);
+  EXPECT_LT(fit.AngleDegrees, 1e-12);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(fit.Translation[c], 0.0, 1e-15);
+    EXPECT_NEAR(fit.Center[c], centre[c], 1e-14);
+  }
+  // The residual is the whole deformation.
+  std::vector<double> residual(D.size());
+  dgmf::ComputeFitResidual(
+    fit, points.data(), D.data(), nullptr, points.size() / 3, residual.data());
+  for (std::size_t i = 0; i < D.size(); ++i)
+  {
+    EXPECT_NEAR(residual[i], D[i], 1e-13);
+  }
+
+  // 2D: a bump symmetric about x = 0 on a circle (the twisted bar's kind of deformation).
+  std::vector<double> circle, bump;
+  for (int k = 0; k < 64; ++k)
+  {
+    const double a = 2 * Pi * k / 64;
+    circle.insert(circle.end(), { std::cos(a), std::sin(a), 0.0 });
+    bump.insert(bump.end(), { 0.0, 0.4 * std::exp(-4.0 * std::cos(a) * std::cos(a)), 0.0 });
+  }
+  const dgmf::FittedMotion fit2 = dgmf::FitRigidMotion(2, circle.data(), bump.data(), nullptr, 64);
+  EXPECT_EQ(fit2.Status, dgmf::RotationFit::Determined);
+  EXPECT_LT(fit2.AngleDegrees, 1e-12);
+  EXPECT_NEAR(fit2.Translation[0], 0.0, 1e-15);
+  EXPECT_NEAR(fit2.Translation[1], MeanDisplacement(bump)[1], 1e-15);
+}
+
+TEST(RigidMotionFit, RigidMotionOfADeformedBody)
+{
+  // x' = c0 + R0 (x + d(x) - c0) + t0. The fit is equivariant: it finds R = R0 R_d, with R_d the
+  // deformation's own best rotation, and the residual is R0 times the deformation's own residual.
+  std::mt19937 random(15);
+  std::uniform_real_distribution<double> shift(-2.0, 2.0);
+  for (int trial = 0; trial < 50; ++trial)
+  {
+    const std::vector<double> points = RandomPoints(random, 40, false);
+    std::vector<double> d(points.size());
+    for (std::size_t i = 0; i < points.size(); i += 3)
+    {
+      d[i] = 0.05 * std::sin(points[i + 1]);
+      d[i + 1] = 0.03 * std::cos(2.0 * points[i + 2]) * points[i];
+      d[i + 2] = 0.02 * points[i] * points[i + 1];
+    }
+    const Vec axis = RandomUnit(random);
+    const double angle = 10.0 + 160.0 * trial / 49.0;
+    const Mat R0 = Rodrigues(axis, angle * Pi / 180.0);
+    const Vec c0 = { shift(random), shift(random), shift(random) };
+    const Vec t0 = { shift(random), shift(random), shift(random) };
+    std::vector<double> deformed(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      deformed[i] = points[i] + d[i];
+    }
+    std::vector<double> D = RigidDisplacements(deformed, R0, c0, t0);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      D[i] += deformed[i] - points[i]; // total displacement from the original points
+    }
+    const std::size_t n = points.size() / 3;
+    const dgmf::FittedMotion own = dgmf::FitRigidMotion(3, points.data(), d.data(), nullptr, n);
+    const dgmf::FittedMotion fit = dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, n);
+    ASSERT_EQ(fit.Status, dgmf::RotationFit::Determined);
+    ExpectMatrixNear(ToMat(fit.Rotation), Multiply(R0, ToMat(own.Rotation)), 1e-12, "R0 Rd");
+    // The rigid part is approximately R0: the angles differ by at most the deformation's own.
+    EXPECT_GT(own.AngleDegrees, 0.0);
+    EXPECT_LE(std::abs(fit.AngleDegrees - angle), own.AngleDegrees + 1e-9);
+    EXPECT_NEAR(fit.ResidualRMS, own.ResidualRMS, 1e-12);
+    std::vector<double> residualOwn(points.size()), residual(points.size());
+    dgmf::ComputeFitResidual(own, points.data(), d.data(), nullptr, n, residualOwn.data());
+    dgmf::ComputeFitResidual(fit, points.data(), D.data(), nullptr, n, residual.data());
+    for (std::size_t i = 0; i < points.size(); i += 3)
+    {
+      const Vec rotated = Times(R0, { residualOwn[i], residualOwn[i + 1], residualOwn[i + 2] });
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(residual[i + c], rotated[c], 1e-12);
+      }
+    }
+    // The fitted motion plus the residual puts every point where it was prescribed.
+    const dgmf::DampedRigidMotion damped(fit.ToRigidMotion());
+    for (std::size_t i = 0; i < points.size(); i += 3)
+    {
+      double out[3];
+      damped.Apply(1.0, points.data() + i, residual.data() + i, out);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(out[c], points[i + c] + D[i + c], 1e-13);
+      }
+    }
+  }
+}
+
+TEST(RigidMotionFit, DegenerateSets)
+{
+  // No point: the identity.
+  const dgmf::FittedMotion none = dgmf::FitRigidMotion(3, nullptr, nullptr, nullptr, 0);
+  EXPECT_EQ(none.Status, dgmf::RotationFit::Undetermined);
+  EXPECT_EQ(none.AngleDegrees, 0.0);
+  EXPECT_EQ(none.ResidualRMS, 0.0);
+  EXPECT_FALSE(none.ToRigidMotion().HasRotation());
+
+  // One point, 2D and 3D: the rotation is not determined; the motion is its displacement.
+  const double one[3] = { 1.0, 2.0, 3.0 };
+  const double moveOne[3] = { 0.5, -0.25, 0.0 };
+  for (const int dimension : { 2, 3 })
+  {
+    const dgmf::FittedMotion fit = dgmf::FitRigidMotion(dimension, one, moveOne, nullptr, 1);
+    EXPECT_EQ(fit.Status, dgmf::RotationFit::Undetermined);
+    EXPECT_EQ(fit.AngleDegrees, 0.0);
+    EXPECT_EQ(fit.Translation[0], 0.5);
+    EXPECT_EQ(fit.Translation[1], -0.25);
+    EXPECT_EQ(fit.MaximumResidual, 0.0);
+  }
+
+  // Coincident points (3D), and points that collapse onto one point: undetermined.
+  const std::vector<double> same = { 1, 1, 1, 1, 1, 1, 1, 1, 1 };
+  const std::vector<double> moveSame = { 0.1, 0, 0, 0.1, 0, 0, 0.1, 0, 0 };
+  EXPECT_EQ(dgmf::FitRigidMotion(3, same.data(), moveSame.data(), nullptr, 3).Status,
+    dgmf::RotationFit::Undetermined);
+  // ... also when their centroid is not exact (0.1 + 0.1 + 0.1 != 0.3): p is round-off only.
+  const std::vector<double> tenths = { 0.1, 0.7, 1e3, 0.1, 0.7, 1e3, 0.1, 0.7, 1e3 };
+  const std::vector<double> turnTenths = { 0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0.1, 0.2, 0.3 };
+  const dgmf::FittedMotion coincident =
+    dgmf::FitRigidMotion(3, tenths.data(), turnTenths.data(), nullptr, 3);
+  EXPECT_EQ(coincident.Status, dgmf::RotationFit::Undetermined);
+  EXPECT_EQ(coincident.AngleDegrees, 0.0);
+  EXPECT_EQ(dgmf::FitRigidMotion(2, tenths.data(), turnTenths.data(), nullptr, 3).Status,
+    dgmf::RotationFit::Undetermined);
+  std::mt19937 random(16);
+  const std::vector<double> cloud = RandomPoints(random, 10, false);
+  std::vector<double> collapse(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+  {
+    collapse[i] = 4.0 - cloud[i]; // every point to (4, 4, 4)
+  }
+  const dgmf::FittedMotion collapsed =
+    dgmf::FitRigidMotion(3, cloud.data(), collapse.data(), nullptr, 10);
+  EXPECT_EQ(collapsed.Status, dgmf::RotationFit::Undetermined);
+  EXPECT_EQ(collapsed.AngleDegrees, 0.0);
+
+  // 2D: two distinct points determine the rotation.
+  const std::vector<double> pair2 = { 0, 0, 0, 2, 0, 0 };
+  const Mat R30 = Rodrigues({ 0, 0, 1 }, Pi / 6);
+  const std::vector<double> movePair2 = RigidDisplacements(pair2, R30, { 0, 0, 0 }, { 1, 1, 0 });
+  const dgmf::FittedMotion fit2 =
+    dgmf::FitRigidMotion(2, pair2.data(), movePair2.data(), nullptr, 2);
+  EXPECT_EQ(fit2.Status, dgmf::RotationFit::Determined);
+  EXPECT_NEAR(fit2.AngleDegrees, 30.0, 1e-12);
+  EXPECT_EQ(fit2.Axis[2], 1.0);
+
+  // 3D, collinear points turned about an axis perpendicular to their line: Collinear, and the
+  // smallest rotation is the true one.
+  const std::vector<double> line = { 0, 0, 0, 1, 1, 0, 2, 2, 0, 3.5, 3.5, 0 };
+  const Vec perpendicular = Unit({ 1, -1, 2 });
+  const Mat R40 = Rodrigues(perpendicular, 40.0 * Pi / 180);
+  const std::vector<double> moveLine = RigidDisplacements(line, R40, { 1, 0, 0 }, { 0, 0, 1 });
+  const dgmf::FittedMotion fitLine =
+    dgmf::FitRigidMotion(3, line.data(), moveLine.data(), nullptr, 4);
+  EXPECT_EQ(fitLine.Status, dgmf::RotationFit::Collinear);
+  EXPECT_NEAR(fitLine.AngleDegrees, 40.0, 1e-10);
+  EXPECT_NEAR(
+    Dot({ fitLine.Axis[0], fitLine.Axis[1], fitLine.Axis[2] }, perpendicular), 1.0, 1e-10);
+  EXPECT_LT(fitLine.MaximumResidual, 1e-12);
+  // Two points in 3D are collinear too.
+  EXPECT_EQ(dgmf::FitRigidMotion(3, line.data(), moveLine.data(), nullptr, 2).Status,
+    dgmf::RotationFit::Collinear);
+
+  // ... turned about a general axis: the fit is the smallest rotation taking the line to its new
+  // direction; the points still land exactly (a line maps onto a line), the angle is smaller.
+  const Mat R70 = Rodrigues(Unit({ 1, 2, 3 }), 70.0 * Pi / 180);
+  const std::vector<double> moveGeneral = RigidDisplacements(line, R70, { 0, 0, 0 }, { 0, 0, 0 });
+  const dgmf::FittedMotion general =
+    dgmf::FitRigidMotion(3, line.data(), moveGeneral.data(), nullptr, 4);
+  EXPECT_EQ(general.Status, dgmf::RotationFit::Collinear);
+  EXPECT_LT(general.AngleDegrees, 70.0);
+  EXPECT_LT(general.MaximumResidual, 1e-12);
+  const Vec direction = Unit({ 1, 1, 0 });
+  EXPECT_NEAR(Dot({ general.Axis[0], general.Axis[1], general.Axis[2] }, direction), 0.0, 1e-12);
+
+  // ... turned about the line itself: nothing moves, nothing is fitted.
+  const Mat about = Rodrigues(direction, 1.0);
+  const std::vector<double> moveAbout = RigidDisplacements(line, about, { 0, 0, 0 }, { 0, 0, 0 });
+  const dgmf::FittedMotion twist =
+    dgmf::FitRigidMotion(3, line.data(), moveAbout.data(), nullptr, 4);
+  EXPECT_LT(twist.AngleDegrees, 1e-10);
+  EXPECT_LT(twist.MaximumResidual, 1e-12);
+
+  // ... reversed (180 degrees): the axis is perpendicular to the line.
+  const Mat flip = Rodrigues(Unit({ 0, 0, 1 }), Pi);
+  const std::vector<double> moveFlip = RigidDisplacements(line, flip, { 0, 0, 0 }, { 0, 0, 0 });
+  const dgmf::FittedMotion flipped =
+    dgmf::FitRigidMotion(3, line.data(), moveFlip.data(), nullptr, 4);
+  EXPECT_EQ(flipped.Status, dgmf::RotationFit::Collinear);
+  EXPECT_NEAR(flipped.AngleDegrees, 180.0, 1e-10);
+  EXPECT_NEAR(Dot({ flipped.Axis[0], flipped.Axis[1], flipped.Axis[2] }, direction), 0.0, 1e-12);
+  EXPECT_LT(flipped.MaximumResidual, 1e-12);
+
+  // 3D, three non-collinear points: determined.
+  const std::vector<double> triangle = { 0, 0, 0, 1, 0, 0, 0, 2, 0 };
+  const Vec axis = Unit({ -1, 3, 1 });
+  const Mat R120 = Rodrigues(axis, 120.0 * Pi / 180);
+  const std::vector<double> moveTriangle =
+    RigidDisplacements(triangle, R120, { 0, 0, 0 }, { 1, 0, 0 });
+  const dgmf::FittedMotion fit3 =
+    dgmf::FitRigidMotion(3, triangle.data(), moveTriangle.data(), nullptr, 3);
+  EXPECT_EQ(fit3.Status, dgmf::RotationFit::Determined);
+  EXPECT_NEAR(fit3.AngleDegrees, 120.0, 1e-10);
+  EXPECT_NEAR(Dot({ fit3.Axis[0], fit3.Axis[1], fit3.Axis[2] }, axis), 1.0, 1e-10);
+
+  // A mirror image is not a rotation: the fit stays a proper rotation (det R = +1).
+  std::vector<double> mirror(cloud.size());
+  double meanZ = 0.0;
+  for (std::size_t i = 2; i < cloud.size(); i += 3)
+  {
+    meanZ += cloud[i] / 10.0;
+  }
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+  {
+    mirror[i] = i % 3 == 2 ? 2.0 * (meanZ - cloud[i]) : 0.0; // z -> 2 meanZ - z
+  }
+  const dgmf::FittedMotion mirrored =
+    dgmf::FitRigidMotion(3, cloud.data(), mirror.data(), nullptr, 10);
+  EXPECT_NEAR(Determinant(ToMat(mirrored.Rotation)), 1.0, 1e-14);
+}
+
+TEST(RigidMotionFit, NodeSubsetsAndResidualPlacement)
+{
+  std::mt19937 random(17);
+  const std::vector<double> points = RandomPoints(random, 30, false);
+  const Mat R = Rodrigues(RandomUnit(random), 1.0);
+  std::vector<double> D = RigidDisplacements(points, R, { 0, 0, 0 }, { 1, 0, 0 });
+  // Nodes 5..19 of the set form the body; the others carry garbage that must not be read.
+  std::vector<std::int32_t> nodes;
+  for (std::int32_t i = 5; i < 20; ++i)
+  {
+    nodes.push_back(i);
+  }
+  for (std::size_t i = 0; i < 15; ++i)
+  {
+    D[i] = std::numeric_limits<double>::quiet_NaN();
+  }
+  const dgmf::FittedMotion fit = dgmf::FitRigidMotion(3, points.data(), D.data(), nodes.data(), 15);
+  EXPECT_NEAR(fit.AngleDegrees, 180.0 / Pi, 1e-10);
+  std::vector<double> residual(points.size(), 7.0);
+  const double rms =
+    dgmf::ComputeFitResidual(fit, points.data(), D.data(), nodes.data(), 15, residual.data());
+  EXPECT_EQ(rms, fit.ResidualRMS);
+  for (std::size_t i = 0; i < 30; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (i >= 5 && i < 20)
+      {
+        EXPECT_NEAR(residual[3 * i + c], 0.0, 1e-13);
+      }
+      else
+      {
+        EXPECT_EQ(residual[3 * i + c], 7.0) << "a node outside the body was written";
+      }
+    }
+  }
+  // In place: the displacement array becomes the residual.
+  dgmf::ComputeFitResidual(fit, points.data(), D.data(), nodes.data(), 15, D.data());
+  for (std::size_t i = 15; i < 60; ++i)
+  {
+    EXPECT_NEAR(D[i], 0.0, 1e-13);
+  }
+}
+
+TEST(RigidMotionFit, RejectsBadInput)
+{
+  const std::vector<double> points = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  std::vector<double> D(9, 0.0);
+  EXPECT_THROW(dgmf::FitRigidMotion(1, points.data(), D.data(), nullptr, 3), std::invalid_argument);
+  EXPECT_THROW(dgmf::FitRigidMotion(4, points.data(), D.data(), nullptr, 3), std::invalid_argument);
+  const std::int32_t negative[2] = { 0, -1 };
+  EXPECT_THROW(
+    dgmf::FitRigidMotion(3, points.data(), D.data(), negative, 2), std::invalid_argument);
+  D[4] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(dgmf::FitRigidMotion(3, points.data(), D.data(), nullptr, 3), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rigid motions given by an axis and an angle
+
+TEST(AxisAngleMotion, DampedMotionMatchesRodrigues)
+{
+  std::mt19937 random(21);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (const double angle : { 37.0, 90.0, 180.0, -120.0, 359.0, 720.0, -720.0, 1e-3 })
+  {
+    for (int trial = 0; trial < 5; ++trial)
+    {
+      dgmf::RigidMotion motion;
+      const Vec direction = RandomUnit(random);
+      const double length = 0.1 + 3.0 * unit(random); // the axis need not be unit length
+      for (int c = 0; c < 3; ++c)
+      {
+        motion.Axis[c] = length * direction[c];
+        motion.Center[c] = coordinate(random);
+        motion.Translation[c] = coordinate(random);
+      }
+      motion.AxisAngleDegrees = angle;
+      const dgmf::DampedRigidMotion damped(motion);
+      std::vector<double> fractions = { 0.0, 1.0, 1e-9, 0.5, 1.0 - 1e-12 };
+      for (int k = 0; k < 300; ++k)
+      {
+        fractions.push_back(unit(random));
+      }
+      for (const double f : fractions)
+      {
+        const Vec x = { coordinate(random), coordinate(random), coordinate(random) };
+        const Vec d = { coordinate(random), coordinate(random), coordinate(random) };
+        const Mat R = Rodrigues(direction, f * angle * Pi / 180.0);
+        const Vec r = { x[0] - motion.Center[0], x[1] - motion.Center[1], x[2] - motion.Center[2] };
+        const Vec y = Times(R, r);
+        double out[3], outMatrix[3];
+        damped.Apply(f, x.data(), d.data(), out);
+        motion.Apply(f, x.data(), d.data(), outMatrix);
+        for (int c = 0; c < 3; ++c)
+        {
+          const double expected = motion.Center[c] + y[c] + f * motion.Translation[c] + f * d[c];
+          EXPECT_NEAR(out[c], expected, 1e-14) << "angle " << angle << " f " << f;
+          EXPECT_NEAR(outMatrix[c], expected, 1e-14) << "angle " << angle << " f " << f;
+        }
+      }
+    }
+  }
+}
+
+TEST(AxisAngleMotion, CoordinateAxesMatchEulerAngles)
+{
+  std::mt19937 random(22);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (const double angle : { 90.0, -45.0, 180.0, 300.0 })
+    {
+      for (const double sense : { 1.0, -1.0 })
+      {
+        dgmf::RigidMotion byAxis, byEuler;
+        byAxis.Axis[0] = byAxis.Axis[1] = byAxis.Axis[2] = 0.0;
+        byAxis.Axis[axis] = sense;
+        byAxis.AxisAngleDegrees = angle;
+        byEuler.AnglesDegrees[axis] = sense * angle;
+        for (int c = 0; c < 3; ++c)
+        {
+          byAxis.Center[c] = byEuler.Center[c] = 0.3 * c - 0.2;
+          byAxis.Translation[c] = byEuler.Translation[c] = 0.1 * c + 0.05;
+        }
+        double Ra[3][3], Re[3][3];
+        byAxis.GetRotationMatrix(0.7, Ra);
+        byEuler.GetRotationMatrix(0.7, Re);
+        ExpectMatrixNear(ToMat(Ra), ToMat(Re), 1e-15, "matrix");
+        const dgmf::DampedRigidMotion a(byAxis), e(byEuler);
+        for (int k = 0; k < 200; ++k)
+        {
+          const double f = k == 0 ? 1.0 : unit(random);
+          const Vec x = { coordinate(random), coordinate(random), coordinate(random) };
+          double outA[3], outE[3];
+          a.Apply(f, x.data(), nullptr, outA);
+          e.Apply(f, x.data(), nullptr, outE);
+          for (int c = 0; c < 3; ++c)
+          {
+            EXPECT_NEAR(outA[c], outE[c], 1e-14) << "axis " << axis << " angle " << angle;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(AxisAngleMotion, PredicatesAndMatrix)
+{
+  dgmf::RigidMotion motion;
+  EXPECT_TRUE(motion.IsIdentity());
+  EXPECT_FALSE(motion.HasRotation());
+  motion.AxisAngleDegrees = 30.0;
+  EXPECT_TRUE(motion.HasAxisRotation());
+  EXPECT_FALSE(motion.HasEulerAngles());
+  EXPECT_TRUE(motion.HasRotation());
+  EXPECT_FALSE(motion.IsIdentity());
+  motion.Axis[0] = 1.0;
+  motion.Axis[1] = -2.0;
+  motion.Axis[2] = 0.5;
+  double R[3][3];
+  motion.GetRotationMatrix(1.0, R);
+  const Mat M = ToMat(R);
+  Mat MtM{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        MtM[i][j] += M[k][i] * M[k][j];
+  ExpectMatrixNear(MtM, Rodrigues({ 1, 0, 0 }, 0.0), 1e-15, "orthogonal");
+  EXPECT_NEAR(Determinant(M), 1.0, 1e-15);
+  // The axis is fixed by the rotation.
+  const Vec k = Unit({ 1.0, -2.0, 0.5 });
+  const Vec fixed = Times(M, k);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(fixed[c], k[c], 1e-15);
+  }
+  // With Euler angles the axis is ignored: the same bits whatever it holds.
+  dgmf::RigidMotion euler, eulerWithAxis;
+  euler.AnglesDegrees[0] = 20.0;
+  euler.AnglesDegrees[2] = -70.0;
+  eulerWithAxis = euler;
+  eulerWithAxis.Axis[0] = 3.0;
+  const dgmf::DampedRigidMotion a(euler), b(eulerWithAxis);
+  const double x[3] = { 0.3, -1.2, 2.2 };
+  double outA[3], outB[3];
+  a.Apply(0.37, x, nullptr, outA);
+  b.Apply(0.37, x, nullptr, outB);
+  EXPECT_EQ(std::memcmp(outA, outB, sizeof(outA)), 0);
+}
+
+TEST(AxisAngleMotion, RejectsIllDefinedRotations)
+{
+  dgmf::RigidMotion both;
+  both.AnglesDegrees[2] = 10.0;
+  both.AxisAngleDegrees = 10.0;
+  double R[3][3], out[3];
+  const double x[3] = { 1, 2, 3 };
+  EXPECT_THROW(dgmf::DampedRigidMotion{ both }, std::invalid_argument);
+  EXPECT_THROW(both.GetRotationMatrix(1.0, R), std::invalid_argument);
+  EXPECT_THROW(both.Apply(1.0, x, nullptr, out), std::invalid_argument);
+  dgmf::RigidMotion zeroAxis;
+  zeroAxis.Axis[2] = 0.0;
+  zeroAxis.AxisAngleDegrees = 10.0;
+  EXPECT_THROW(dgmf::DampedRigidMotion{ zeroAxis }, std::invalid_argument);
+  dgmf::RigidMotion nanAxis;
+  nanAxis.Axis[0] = std::numeric_limits<double>::quiet_NaN();
+  nanAxis.AxisAngleDegrees = 10.0;
+  EXPECT_THROW(dgmf::DampedRigidMotion{ nanAxis }, std::invalid_argument);
+  dgmf::RigidMotion large;
+  large.AxisAngleDegrees = 721.0;
+  EXPECT_THROW(dgmf::DampedRigidMotion{ large }, std::invalid_argument);
+  large.AxisAngleDegrees = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(dgmf::DampedRigidMotion{ large }, std::invalid_argument);
+  // A zero axis with no axis angle is fine: the axis is not used.
+  dgmf::RigidMotion unused;
+  unused.Axis[2] = 0.0;
+  unused.AnglesDegrees[1] = 5.0;
+  EXPECT_NO_THROW(dgmf::DampedRigidMotion{ unused });
+}
+
+// ---------------------------------------------------------------------------------------------
+// DGMF with a fitted motion
+
+namespace
+{
+std::vector<double> DeformWith(
+  const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion, const double* displacement)
+{
+  dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  std::vector<double> r(set.Size()), f(set.Size()), out(3 * set.Size());
+  dgmf::ComputeBoundaryDistanceField(mapping, 1.0, r.data(), dgmf::SerialFor);
+  dgmf::ComputeDampingFactor(
+    mapping, dgmf::DampingFunction::U1, r.data(), f.data(), dgmf::SerialFor);
+  dgmf::DeformDGMF(mapping, f.data(), motion, displacement, dgmf::DeformationMode::DGMF2,
+    set.Points.data(), out.data(), dgmf::SerialFor);
+  return out;
+}
+
+/// The moving nodes of a set, and their displacements under `motion` (0 elsewhere).
+std::vector<double> MovingDisplacements(
+  const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion, std::vector<std::int32_t>& moving)
+{
+  std::vector<double> D(3 * set.Size(), 0.0);
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+    {
+      moving.push_back(static_cast<std::int32_t>(i));
+      double out[3];
+      motion.Apply(1.0, set.Points.data() + 3 * i, nullptr, out);
+      for (int c = 0; c < 3; ++c)
+      {
+        D[3 * i + c] = out[c] - set.Points[3 * i + c];
+      }
+    }
+  }
+  return D;
+}
+} // namespace
+
+TEST(FittedDGMF, RotatingCircleFromDisplacementsMatchesExplicitRotation)
+{
+  const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
+  for (const double tx : { 0.0, 0.3 })
+  {
+    // The circle turned by exactly 90 degrees about its centre: (x, y) -> (-y, x), plus (tx,
+    // -tx/2).
+    std::vector<double> D(3 * set.Size(), 0.0);
+    std::vector<std::int32_t> moving;
+    for (std::size_t i = 0; i < set.Size(); ++i)
+    {
+      if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+      {
+        moving.push_back(static_cast<std::int32_t>(i));
+        const double x = set.Points[3 * i], y = set.Points[3 * i + 1];
+        D[3 * i] = -y - x + tx;
+        D[3 * i + 1] = x - y - 0.5 * tx;
+      }
+    }
+    const dgmf::FittedMotion fit =
+      dgmf::FitRigidMotion(2, set.Points.data(), D.data(), moving.data(), moving.size());
+    EXPECT_NEAR(fit.AngleDegrees, 90.0, 1e-12);
+    EXPECT_EQ(fit.Axis[2], 1.0);
+    EXPECT_LT(fit.ResidualRMS, 1e-14);
+    std::vector<double> residual(3 * set.Size(), 0.0);
+    dgmf::ComputeFitResidual(
+      fit, set.Points.data(), D.data(), moving.data(), moving.size(), residual.data());
+
+    dgmf::RigidMotion explicitMotion;
+    explicitMotion.AnglesDegrees[2] = 90.0;
+    explicitMotion.Translation[0] = tx;
+    explicitMotion.Translation[1] = -0.5 * tx;
+    const std::vector<double> expected = DeformWith(set, explicitMotion, nullptr);
+    const std::vector<double> fitted = DeformWith(set, fit.ToRigidMotion(), residual.data());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+    {
+      EXPECT_NEAR(fitted[i], expected[i], 1e-9 * std::max(1.0, std::abs(expected[i])))
+        << "node " << i / 3;
+    }
+  }
+}
+
+TEST(FittedDGMF, RotatingSphereFromDisplacementsMatchesExplicitRotation)
+{
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox();
+  dgmf::RigidMotion explicitMotion;
+  explicitMotion.Axis[0] = 1.0;
+  explicitMotion.Axis[1] = 2.0;
+  explicitMotion.Axis[2] = -0.5;
+  explicitMotion.AxisAngleDegrees = 120.0;
+  explicitMotion.Translation[1] = 0.2;
+  std::vector<std::int32_t> moving;
+  const std::vector<double> D = MovingDisplacements(set, explicitMotion, moving);
+  const dgmf::FittedMotion fit =
+    dgmf::FitRigidMotion(3, set.Points.data(), D.data(), moving.data(), moving.size());
+  EXPECT_NEAR(fit.AngleDegrees, 120.0, 1e-10);
+  std::vector<double> residual(3 * set.Size(), 0.0);
+  dgmf::ComputeFitResidual(
+    fit, set.Points.data(), D.data(), moving.data(), moving.size(), residual.data());
+  const std::vector<double> expected = DeformWith(set, explicitMotion, nullptr);
+  const std::vector<double> fitted = DeformWith(set, fit.ToRigidMotion(), residual.data());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+  {
+    EXPECT_NEAR(fitted[i], expected[i], 1e-9 * std::max(1.0, std::abs(expected[i])));
+  }
+}
