@@ -111,7 +111,8 @@ void CheckBoundaryExactness2D(vtkUnstructuredGrid* input, vtkUnstructuredGrid* o
   EXPECT_GT(fixed, 10);
 }
 
-/// A byte-level fingerprint of a mesh: points, connectivity, and every array's values.
+/// A byte-level fingerprint of a mesh: points, connectivity, and every array's values (but
+/// GraphReused, which says how the output was made, not what it is).
 std::string Fingerprint(vtkUnstructuredGrid* mesh)
 {
   std::string bytes;
@@ -131,7 +132,7 @@ std::string Fingerprint(vtkUnstructuredGrid* mesh)
   {
     for (int k = 0; k < data->GetNumberOfArrays(); ++k)
     {
-      if (data->GetArray(k))
+      if (data->GetArray(k) && std::string(data->GetArrayName(k) ? data->GetArrayName(k) : "") != "GraphReused")
         append(data->GetArray(k));
     }
   }
@@ -264,7 +265,7 @@ TEST(DeformFilter, EveryInputArrayReachesTheOutputAndTheInputIsUntouched)
   filter->SetDisplacementArrayName("Displacement");
   filter->SetRotationAngles(0, 0, 45);
   filter->Update();
-  EXPECT_EQ(Fingerprint(mesh), before) << "the input was modified";
+  EXPECT_TRUE(Fingerprint(mesh) == before) << "the input was modified";
 
   vtkUnstructuredGrid* out = filter->GetOutput();
   for (int k = 0; k < mesh->GetPointData()->GetNumberOfArrays(); ++k)
@@ -311,7 +312,7 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
   fresh->SetRotationAngles(0, 0, 75);
   fresh->SetDampingFunction(vtkDGMFDeformFilter::U2);
   fresh->Update();
-  EXPECT_EQ(Fingerprint(filter->GetOutput()), Fingerprint(fresh->GetOutput()));
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == Fingerprint(fresh->GetOutput()));
 
   // A new marking (one interior node made static) rebuilds the graph.
   vtkNew<vtkUnstructuredGrid> remarked;
@@ -356,7 +357,7 @@ TEST(DeformFilter, SameBitsWithOneAndTwoThreads)
     filter->Update();
     results[threads - 1] = Fingerprint(filter->GetOutput());
   }
-  EXPECT_EQ(results[0], results[1]);
+  EXPECT_TRUE(results[0] == results[1]);
 }
 
 TEST(DeformFilter, BoundaryFoundFromTheMeshWhenThereIsNoMarker)
