@@ -69,7 +69,8 @@ def read_grid(path, points=None, cells=None):
     counts = (grid.GetNumberOfPoints(), grid.GetNumberOfCells())
     assert counts[0] > 0 and counts[1] > 0, f"{path}: read an empty mesh"
     if points is not None:
-        assert counts == (points, cells), f"{path}: {counts} points/cells, expected {(points, cells)}"
+        expected = (points, cells)
+        assert counts == expected, f"{path}: {counts} points/cells, expected {expected}"
     return grid
 
 

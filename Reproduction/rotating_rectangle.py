@@ -34,7 +34,8 @@ def sweep(deform):
 
 def pictures(deform, output):
     """Figs. 5 and 6: the mesh around the rectangle after 90 degrees, DGMF (u1) and DGM."""
-    for method, name in (("DGMF", "fig5_rectangle_90_dgmf.png"), ("DGM", "fig6_rectangle_90_dgm.png")):
+    for method, name in (("DGMF", "fig5_rectangle_90_dgmf.png"),
+                         ("DGM", "fig6_rectangle_90_dgm.png")):
         result = dgmfrun.run(deform, method, angle=dgmfrun.PAPER_SENSE * 90)
         title = (f"rectangle, 90 deg, {method}{' (u1)' if method == 'DGMF' else ''}: "
                  f"mean {result['mean']:.3f}, min {result['minimum']:.3f}, "

@@ -1,6 +1,7 @@
 """Markdown tables of the reproduction results beside the paper's numbers (plain Python).
 
-Reads the CSV files of the results folder and writes tables.md there. Usage: tables.py [--results DIR]
+Reads the CSV files of the results folder and writes tables.md there.
+Usage: tables.py [--results DIR]
 """
 import argparse
 import csv
@@ -75,11 +76,12 @@ def bar_sections(results):
     rows = read_rows(results, "table2_twisted_bar_paper")
     if rows:
         ours = {(r["method"], r["A"]): r for r in rows}
+        at16 = lambda m, what: f"{float(ours[(m, '16')][what]):.3f}"  # noqa: E731
         out += ["## Table 2: twisted bar, A = 16 (paper form), 45 degrees\n",
                 table(["method", "paper mean", "paper minimum", "ours mean", "ours minimum",
                        "ours inverted cells", "ours at A = 4 (mean / minimum)"],
-                      [[m, *(f"{v:.3f}" for v in PAPER_TABLE2[m]), f"{float(ours[(m, '16')]['mean']):.3f}",
-                        f"{float(ours[(m, '16')]['minimum']):.3f}", ours[(m, "16")]["inverted"],
+                      [[m, *(f"{v:.3f}" for v in PAPER_TABLE2[m]), at16(m, "mean"),
+                        at16(m, "minimum"), ours[(m, "16")]["inverted"],
                         quality(ours[(m, "4")])] for m in methods])]
     rows = read_rows(results, "table2_rbf_support")
     if rows:

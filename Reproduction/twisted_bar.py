@@ -13,9 +13,9 @@ part is the bump turned with the bar, R d, so the boundary ends at c + R (x + d 
 the angle and R d by f; the other methods interpolate the total boundary motion.
 
 Writes fig12_twisted_bar_<form>.csv (no rotation) and table2_twisted_bar_<form>.csv (45 degrees),
-both for A in 4, 8, 16, 32 (with the rotation also A = 0); table2_rbf_support.csv (RBF with compact support radii, paper form);
-with --fine-mesh, bar_fine_mesh.csv (the same sweeps on a finer, uncommitted mesh); and, for the
-chosen form, the pictures fig13_bar_A16_<method>.png and fig14_bar_A16_rot45_<method>.png.
+both for A in 4, 8, 16, 32 (with the rotation also A = 0); table2_rbf_support.csv (RBF with
+compact support radii, paper form); with --fine-mesh, bar_fine_mesh.csv (the same sweeps on a
+finer, uncommitted mesh); and, for the chosen form, the pictures fig13_bar_A16_<method>.png and fig14_bar_A16_rot45_<method>.png.
 Usage: pvpython twisted_bar.py [--form paper|method] [--fine-mesh FILE.vtu] ...
 """
 import os
@@ -135,7 +135,8 @@ def main():
         for paper_angle, name in ((0.0, "fig12_twisted_bar"), (ROTATION, "table2_twisted_bar")):
             rows = sweep(deform, grid, form, paper_angle)
             dgmfrun.write_csv(os.path.join(args.output, f"{name}_{form}.csv"), rows, COLUMNS)
-    dgmfrun.write_csv(os.path.join(args.output, "table2_rbf_support.csv"), rbf_support(deform, grid),
+    dgmfrun.write_csv(os.path.join(args.output, "table2_rbf_support.csv"),
+                      rbf_support(deform, grid),
                       ["A", "support_radius", "mean", "minimum", "inverted"])
     if args.fine_mesh:
         dgmfrun.write_csv(os.path.join(args.output, "bar_fine_mesh.csv"), fine_mesh(args.fine_mesh),

@@ -133,7 +133,8 @@ def pictures(deform, output, rows, prefix):
 def main():
     """Timings, qualities and pictures of the wing fold."""
     parser = dgmfrun.parser(__doc__)
-    parser.add_argument("--mesh", default=default_mesh(), help="wing-body .vtu (default: %(default)s)")
+    parser.add_argument("--mesh", default=default_mesh(),
+                        help="wing-body .vtu (default: %(default)s)")
     parser.add_argument("--skip-idw", action="store_true", help="leave out IDW (the slow one)")
     parser.add_argument("--prefix", default="wing_fold", help="output names (default %(default)s)")
     args = parser.parse_args()

@@ -12,11 +12,16 @@ Geometry (units of the paper's fold formula; x downstream, y spanwise, z up):
 Boundary markers: wing and fuselage surface nodes 2 (moving; this includes the nodes where the
 fuselage meets the symmetry plane), the six faces of the box (symmetry plane included) 1 (static).
 
-The mesh is large (about 258,000 nodes, 1.5 million tetrahedra, like the paper's), so it is not
-committed: it is generated on demand into a cache folder outside the source tree and reused while
-the parameters match (a JSON file beside it records them and the counts).
+With the defaults: 257,625 nodes and 1,487,189 tetrahedra (the paper's: 257,909 and 1,507,462),
+25,282 moving and 15,546 static boundary nodes; about 3 minutes and 3 GB with gmsh 4.8. --full
+makes the full model instead (both wings, box y in [-3500, 3500], no symmetry plane: 497,597 nodes,
+2,953,694 tetrahedra, about 9 minutes and 4.5 GB).
 
-Usage: pvpython wing_body.py [OUTPUT.vtu] [--force] [--size-min 5] [--size-max 300]
+The mesh is too large to commit: it is generated on demand into a cache folder outside the source
+tree and reused while the parameters match (a JSON file beside it records them, the counts and the
+generation time).
+
+Usage: pvpython wing_body.py [OUTPUT.vtu] [--force] [--full] [--size-min 5] [--size-max 300]
                              [--dist-max 4000]
   OUTPUT defaults to ${XDG_CACHE_HOME:-$HOME/.cache}/dgmf/wing_body.vtu
 """

@@ -59,7 +59,8 @@ def check_twice(pvpython, case, work):
     first, second = (contents(dgmfrun.read_grid(path, *dgmfrun.MESHES[case])) for path in paths)
     diff = differences(first, second)
     assert not diff, f"{case}: the two runs differ in {diff}"
-    print(f"{case}: two runs identical ({len(first['points'])} points, {len(first['types'])} cells)")
+    print(f"{case}: two runs identical ({len(first['points'])} points, "
+          f"{len(first['types'])} cells)")
 
 
 def check_committed(pvpython, case, work):
