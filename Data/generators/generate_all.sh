@@ -5,6 +5,6 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 data="$(dirname "$here")"
 pvpython="${1:-pvpython}"
-for case in rotating_circle rotating_rectangle twisted_bar sphere_in_box; do
+for case in rotating_circle rotating_rectangle twisted_bar sphere_in_box two_circles; do
   "$pvpython" "$here/$case.py" "$data/$case.vtu"
 done

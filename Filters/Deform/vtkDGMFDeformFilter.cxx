@@ -12,6 +12,8 @@
 #include "dgmf/DGRBFDeformation.h"
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/IDWDeformation.h"
+#include "dgmf/MultiBodyDeformation.h"
+#include "dgmf/RigidMotionFit.h"
 #include "dgmf/RBFDeformation.h"
 
 #include "vtkCellArray.h"
@@ -42,6 +44,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <map>
 #include <new>
 #include <unistd.h>
 #include <sstream>
@@ -56,7 +59,8 @@ namespace
 enum InputArrays
 {
   DisplacementArray = 0,
-  MarkerArray = 1
+  MarkerArray = 1,
+  BodyIdArray = 2
 };
 
 /// 2 when the mesh is planar (no 3D cell, all z equal), 3 otherwise; -1 for 2D cells off a z plane.
@@ -247,13 +251,56 @@ struct vtkDGMFDeformFilter::Inputs
   std::vector<double> DisplacementCopy; ///< the displacement as doubles, when it is not already
   std::string DisplacementName;
   std::vector<dgmf::NodeKind> Kinds;
+  std::vector<std::int32_t> BodyIds; ///< per node, when a body-id array is selected
+  std::int32_t NumberOfBodies = 0;   ///< the largest body id
   dgmf::RigidMotion Motion;
   dgmf::ParallelFor Parallel;
 };
 
+/// Per-body rigid motions set with SetBodyMotion.
+struct vtkDGMFDeformFilter::BodyMotions
+{
+  std::map<int, dgmf::RigidMotion> Motions;
+};
+
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
   : GraphCache(new Cache)
+  , PerBodyMotions(new BodyMotions)
 {
+}
+
+void vtkDGMFDeformFilter::SetBodyMotion(double bodyId, double tx, double ty, double tz, double cx,
+  double cy, double cz, double ax, double ay, double az)
+{
+  if (!(bodyId >= 1.0) || bodyId != std::floor(bodyId) || bodyId > 1e6)
+  {
+    vtkErrorMacro("SetBodyMotion: the body id must be 1, 2, ... (got " << bodyId << ").");
+    return;
+  }
+  dgmf::RigidMotion motion;
+  const double values[3][3] = { { tx, ty, tz }, { cx, cy, cz }, { ax, ay, az } };
+  for (int c = 0; c < 3; ++c)
+  {
+    motion.Translation[c] = values[0][c];
+    motion.Center[c] = values[1][c];
+    motion.AnglesDegrees[c] = values[2][c];
+  }
+  this->PerBodyMotions->Motions[static_cast<int>(bodyId)] = motion;
+  this->Modified();
+}
+
+void vtkDGMFDeformFilter::RemoveAllBodyMotions()
+{
+  if (!this->PerBodyMotions->Motions.empty())
+  {
+    this->PerBodyMotions->Motions.clear();
+    this->Modified();
+  }
+}
+
+void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
+{
+  this->SetInputArrayToProcess(BodyIdArray, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
 }
 
 vtkDGMFDeformFilter::~vtkDGMFDeformFilter() = default;
@@ -261,6 +308,168 @@ vtkDGMFDeformFilter::~vtkDGMFDeformFilter() = default;
 void vtkDGMFDeformFilter::ReleaseCache()
 {
   this->GraphCache.reset(new Cache);
+}
+
+namespace
+{
+/// Checks that a rigid motion keeps a 2D mesh in its plane.
+bool StaysInPlane(const dgmf::RigidMotion& motion)
+{
+  double axis[3] = { 0.0, 0.0, 1.0 };
+  if (motion.HasAxisRotation())
+  {
+    motion.GetUnitAxis(axis);
+  }
+  const bool axisOk = axis[0] == 0.0 && axis[1] == 0.0;
+  return axisOk && motion.AnglesDegrees[0] == 0.0 && motion.AnglesDegrees[1] == 0.0 &&
+    motion.Translation[2] == 0.0;
+}
+} // namespace
+
+std::vector<dgmf::RigidMotion> vtkDGMFDeformFilter::PropertyBodyMotions(const Inputs& inputs) const
+{
+  std::vector<dgmf::RigidMotion> motions;
+  for (std::int32_t k = 1; k <= std::max<std::int32_t>(inputs.NumberOfBodies, 1); ++k)
+  {
+    const auto found = this->PerBodyMotions->Motions.find(k);
+    motions.push_back(found != this->PerBodyMotions->Motions.end() ? found->second : inputs.Motion);
+  }
+  return motions;
+}
+
+std::vector<std::int32_t> vtkDGMFDeformFilter::BodyIdsOrMovingNodes(const Inputs& inputs) const
+{
+  if (!inputs.BodyIds.empty())
+  {
+    return inputs.BodyIds;
+  }
+  std::vector<std::int32_t> ids(inputs.NumberOfNodes, 0);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    ids[i] = inputs.Kinds[i] == dgmf::NodeKind::MovingBoundary ? 1 : 0;
+  }
+  return ids;
+}
+
+std::vector<double> vtkDGMFDeformFilter::TotalBodyDisplacement(const Inputs& inputs) const
+{
+  const std::size_t n = inputs.NumberOfNodes;
+  std::vector<double> total(3 * n, 0.0);
+  if (this->RigidMotionMode == EXTRACTED)
+  {
+    if (inputs.Displacement)
+    {
+      std::copy(inputs.Displacement, inputs.Displacement + 3 * n, total.begin());
+    }
+    return total;
+  }
+  const std::vector<std::int32_t> ids = this->BodyIdsOrMovingNodes(inputs);
+  const std::vector<dgmf::RigidMotion> motions = this->PropertyBodyMotions(inputs);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (ids[i] > 0)
+    {
+      const double* x = inputs.Points + 3 * i;
+      double moved[3];
+      motions[static_cast<std::size_t>(ids[i] - 1)].Apply(
+        1.0, x, inputs.Displacement ? inputs.Displacement + 3 * i : nullptr, moved);
+      for (int c = 0; c < 3; ++c)
+      {
+        total[3 * i + c] = moved[c] - x[c];
+      }
+    }
+  }
+  return total;
+}
+
+bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out)
+{
+  Cache& cache = *this->GraphCache;
+  const dgmf::DelaunayMapping& mapping = *cache.Mapping;
+  const std::size_t n = inputs.NumberOfNodes;
+  const std::vector<std::int32_t> ids = this->BodyIdsOrMovingNodes(inputs);
+  const std::int32_t bodies = std::max<std::int32_t>(inputs.NumberOfBodies, 1);
+  std::vector<dgmf::BodyMotion> motions(static_cast<std::size_t>(bodies));
+  std::vector<double> residual;
+  if (this->RigidMotionMode == EXTRACTED)
+  {
+    if (!inputs.Displacement)
+    {
+      vtkErrorMacro("RigidMotionMode EXTRACTED fits the motion to the displacement array: select one.");
+      return false;
+    }
+    residual.resize(3 * n);
+    std::vector<dgmf::FittedMotion> fits = dgmf::ExtractBodyMotions(inputs.Dimension,
+      inputs.Points, inputs.Displacement, n, ids.data(), bodies, residual.data());
+    // Each body turns about its rotation axis (not its centroid): a rotation given as
+    // displacements about some centre is recovered about that centre. Near-translations (an axis
+    // farther than 100 body sizes) keep the centroid.
+    std::vector<double> size(fits.size(), 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (ids[i] > 0)
+      {
+        const dgmf::FittedMotion& fit = fits[static_cast<std::size_t>(ids[i] - 1)];
+        const double* x = inputs.Points + 3 * i;
+        const double d = std::sqrt((x[0] - fit.Center[0]) * (x[0] - fit.Center[0]) +
+          (x[1] - fit.Center[1]) * (x[1] - fit.Center[1]) +
+          (x[2] - fit.Center[2]) * (x[2] - fit.Center[2]));
+        size[static_cast<std::size_t>(ids[i] - 1)] = std::max(size[static_cast<std::size_t>(ids[i] - 1)], d);
+      }
+    }
+    for (std::size_t k = 0; k < fits.size(); ++k)
+    {
+      dgmf::CentreOnRotationAxis(fits[k], 100.0 * size[k]);
+    }
+    vtkNew<vtkDoubleArray> translation, center, axis, angle, rms;
+    translation->SetName("FittedTranslation");
+    center->SetName("FittedRotationCenter");
+    axis->SetName("FittedRotationAxis");
+    angle->SetName("FittedRotationAngle");
+    rms->SetName("FittedResidualRMS");
+    for (vtkDoubleArray* a : { translation.Get(), center.Get(), axis.Get() })
+    {
+      a->SetNumberOfComponents(3);
+    }
+    for (std::size_t k = 0; k < fits.size(); ++k)
+    {
+      motions[k].Motion = fits[k].ToRigidMotion();
+      motions[k].Displacement = residual.data();
+      translation->InsertNextTuple(fits[k].Translation);
+      center->InsertNextTuple(fits[k].Center);
+      axis->InsertNextTuple(fits[k].Axis);
+      angle->InsertNextValue(fits[k].AngleDegrees);
+      rms->InsertNextValue(fits[k].ResidualRMS);
+    }
+    for (vtkDoubleArray* a : { translation.Get(), center.Get(), axis.Get(), angle.Get(), rms.Get() })
+    {
+      fieldData->AddArray(a);
+    }
+  }
+  else
+  {
+    const std::vector<dgmf::RigidMotion> properties = this->PropertyBodyMotions(inputs);
+    for (std::size_t k = 0; k < motions.size(); ++k)
+    {
+      motions[k].Motion = properties[k];
+      motions[k].Displacement = inputs.Displacement;
+      if (inputs.Dimension == 2 && !StaysInPlane(properties[k]))
+      {
+        vtkErrorMacro("Body " << k + 1 << " of this 2D mesh must rotate about z and move in its plane.");
+        return false;
+      }
+    }
+  }
+  // f is min(1, sum of the bodies' damping factors); r has no single meaning with several bodies.
+  cache.F = vtkSmartPointer<vtkDoubleArray>::New();
+  cache.F->SetName("f");
+  cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  cache.Damping = 0; // not the single-body f: recomputed next time
+  dgmf::DeformMultiBody(mapping, ids.data(), motions, this->StaticBoundaryR0,
+    static_cast<dgmf::DampingFunction>(this->DampingFunction),
+    static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out,
+    cache.F->GetPointer(0), inputs.Parallel);
+  return true;
 }
 
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
@@ -659,10 +868,74 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
       }
     }
   }
+  if (!this->GatherBodyIds(input, inputs))
+  {
+    return false;
+  }
   if (std::find(inputs.Kinds.begin(), inputs.Kinds.end(), dgmf::NodeKind::MovingBoundary) ==
     inputs.Kinds.end())
   {
     vtkWarningMacro("No node is marked as moving: the output has the input's points.");
+  }
+  return true;
+}
+
+bool vtkDGMFDeformFilter::GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs)
+{
+  const std::string name = SelectedArrayName(this, BodyIdArray);
+  if (name.empty())
+  {
+    return true;
+  }
+  vtkDataArray* array = input->GetPointData()->GetArray(name.c_str());
+  if (!array)
+  {
+    vtkErrorMacro("The body-id array '" << name << "' is not a point array of the input.");
+    return false;
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The body-id array '" << name << "' must have 1 component.");
+    return false;
+  }
+  const std::size_t n = inputs.NumberOfNodes;
+  inputs.BodyIds.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double value = array->GetTuple1(static_cast<vtkIdType>(i));
+    if (!(value >= 0.0) || value != std::floor(value) || value > 1e6)
+    {
+      vtkErrorMacro("The body-id array '" << name << "' has the value " << value << " at point "
+                                          << i << "; body ids are 0 (no body) or 1, 2, ...");
+      return false;
+    }
+    const auto id = static_cast<std::int32_t>(value);
+    inputs.BodyIds[i] = id;
+    inputs.NumberOfBodies = std::max(inputs.NumberOfBodies, id);
+    // A node on a body is a moving boundary node; the other boundary nodes are static.
+    dgmf::NodeKind& kind = inputs.Kinds[i];
+    if (id > 0 && kind == dgmf::NodeKind::Interior)
+    {
+      vtkErrorMacro("Point " << i << " has the body id " << id
+                             << " but is not a boundary node (marker 0, or not on the boundary).");
+      return false;
+    }
+    if (id > 0)
+    {
+      kind = dgmf::NodeKind::MovingBoundary;
+    }
+    else if (kind == dgmf::NodeKind::MovingBoundary)
+    {
+      if (SelectedArrayName(this, MarkerArray).empty())
+      {
+        kind = dgmf::NodeKind::StaticBoundary; // no body: static, whatever its displacement
+      }
+      else
+      {
+        vtkErrorMacro("Point " << i << " is marked moving (2) but has the body id 0.");
+        return false;
+      }
+    }
   }
   return true;
 }
@@ -768,7 +1041,16 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   output->GetFieldData()->PassData(input->GetFieldData());
   vtkFieldData* fieldData = output->GetFieldData();
 
-  if (this->Method == DGMF)
+  if (this->Method == DGMF && (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED))
+  {
+    if (!this->DeformBodies(inputs, fieldData, out))
+    {
+      return false;
+    }
+    output->GetPointData()->AddArray(this->GraphCache->F);
+    AddFieldCount(fieldData, "OutsideNodeCount", this->GraphCache->Mapping->GetNumberOfOutsideNodes());
+  }
+  else if (this->Method == DGMF)
   {
     Cache& cache = *this->GraphCache;
     const dgmf::DelaunayMapping& mapping = *cache.Mapping;
@@ -802,8 +1084,18 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   else
   {
     // The comparison methods interpolate the total boundary motion.
+    std::vector<double> total;
+    const dgmf::RigidMotion* motion = &inputs.Motion;
+    const dgmf::RigidMotion none;
+    if (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED)
+    {
+      // Each moving node's total displacement: its body's motion (or, extracted, the array itself).
+      total = this->TotalBodyDisplacement(inputs);
+      displacement = total.data();
+      motion = &none;
+    }
     dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
-      inputs.Dimension, inputs.Points, n, inputs.Kinds.data(), inputs.Motion, displacement);
+      inputs.Dimension, inputs.Points, n, inputs.Kinds.data(), *motion, displacement);
     if (this->Method == DGM)
     {
       const dgmf::DelaunayMapping& mapping = *this->GraphCache->Mapping;
@@ -909,6 +1201,8 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RotationAngles: (" << this->RotationAngles[0] << ", " << this->RotationAngles[1]
      << ", " << this->RotationAngles[2] << ")\n";
   os << indent << "DeformationMode: DGMF" << this->DeformationMode << "\n";
+  os << indent << "RigidMotionMode: " << (this->RigidMotionMode == EXTRACTED ? "Extracted" : "Properties")
+     << " (" << this->PerBodyMotions->Motions.size() << " body motions set)\n";
   os << indent << "SupportRadius: " << this->SupportRadius << "\n";
   os << indent << "RBFGreedy: " << (this->RBFGreedy ? "on" : "off") << "\n";
   os << indent << "RBFGreedyTolerance: " << this->RBFGreedyTolerance << "\n";

@@ -65,12 +65,20 @@
 #include "DGMFFiltersModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+class vtkFieldData;
+
 #include <cstddef> // for std::size_t
+#include <cstdint> // for std::int32_t
 #include <memory>  // for std::unique_ptr
+#include <vector>  // for std::vector
 
 namespace dgmf_vtk
 {
 struct BoundaryFacets;
+}
+namespace dgmf
+{
+struct RigidMotion;
 }
 
 class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkUnstructuredGridAlgorithm
@@ -167,6 +175,42 @@ public:
   vtkGetVector3Macro(RotationAngles, double);
   ///@}
 
+  /// Where DGMF's rigid motion comes from.
+  enum RigidMotionModes
+  {
+    PROPERTIES = 0, ///< Translation, RotationCenter, RotationAngles (or SetBodyMotion per body)
+    EXTRACTED = 1   ///< fitted to each body's displacements (Kabsch); the residual is the shape deformation
+  };
+
+  ///@{
+  /**
+   * DGMF's rigid motion, one of RigidMotionModes. EXTRACTED fits, to each moving body's nodes,
+   * the best rigid motion (least squares, centre = the body's centroid) to the displacement array,
+   * which is then the *total* displacement of the moving nodes; the residual is the shape
+   * deformation (DGMF2). The fits are reported in the field data (FittedTranslation,
+   * FittedRotationCenter, FittedRotationAxis, FittedRotationAngle, FittedResidualRMS, one tuple per
+   * body). The other methods interpolate the displacement array as the total motion either way.
+   * Default: PROPERTIES.
+   */
+  vtkSetClampMacro(RigidMotionMode, int, PROPERTIES, EXTRACTED);
+  vtkGetMacro(RigidMotionMode, int);
+  void SetRigidMotionModeToProperties() { this->SetRigidMotionMode(PROPERTIES); }
+  void SetRigidMotionModeToExtracted() { this->SetRigidMotionMode(EXTRACTED); }
+  ///@}
+
+  ///@{
+  /**
+   * The rigid motion of moving body `bodyId` (>= 1, see SetBodyIdArrayName) in PROPERTIES mode:
+   * translation, rotation centre and angles about x, y, z (degrees). Bodies without one use
+   * Translation, RotationCenter and RotationAngles. RemoveAllBodyMotions() forgets them. (The id
+   * is a double so that ParaView's repeated DoubleVectorProperty can call this; it must be a
+   * whole number >= 1.)
+   */
+  void SetBodyMotion(double bodyId, double tx, double ty, double tz, double cx, double cy,
+    double cz, double ax, double ay, double az);
+  void RemoveAllBodyMotions();
+  ///@}
+
   ///@{
   /**
    * DGMF1 or DGMF2 (see DeformationModes). Default: DGMF2.
@@ -246,10 +290,13 @@ public:
   ///@{
   /**
    * Convenience for SetInputArrayToProcess: the point array with the shape-deformation
-   * displacement (index 0) and the boundary-marker point array (index 1).
+   * displacement (index 0), the boundary-marker point array (index 1) and the body-id point array
+   * (index 2: 0 = not on a moving body, 1, 2, ... = the moving body; DGMF only: each body gets its
+   * own damping field and rigid motion, and the bodies' displacements are summed).
    */
   void SetDisplacementArrayName(const char* name);
   void SetBoundaryMarkerArrayName(const char* name);
+  void SetBodyIdArrayName(const char* name);
   ///@}
 
   /// True when the last execution reused the cached Delaunay graph and node locations.
@@ -290,6 +337,7 @@ protected:
   double RotationCenter[3] = { 0.0, 0.0, 0.0 };
   double RotationAngles[3] = { 0.0, 0.0, 0.0 };
   int DeformationMode = DGMF2;
+  int RigidMotionMode = PROPERTIES;
   double SupportRadius = 0.0;
   bool RBFGreedy = false;
   double RBFGreedyTolerance = 1e-3;
@@ -314,6 +362,13 @@ private:
 
   struct Cache;
   std::unique_ptr<Cache> GraphCache;
+  struct BodyMotions;
+  std::unique_ptr<BodyMotions> PerBodyMotions;
+  bool DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out);
+  bool GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs);
+  std::vector<dgmf::RigidMotion> PropertyBodyMotions(const Inputs& inputs) const;
+  std::vector<std::int32_t> BodyIdsOrMovingNodes(const Inputs& inputs) const;
+  std::vector<double> TotalBodyDisplacement(const Inputs& inputs) const;
   bool LastExecutionReusedGraph = false;
   double LastGraphSeconds = 0.0;
   double LastLocationSeconds = 0.0;

@@ -879,3 +879,64 @@ TEST(FittedDGMF, RotatingSphereFromDisplacementsMatchesExplicitRotation)
     EXPECT_NEAR(fitted[i], expected[i], 1e-9 * std::max(1.0, std::abs(expected[i])));
   }
 }
+
+TEST(RigidMotionFit, CentreOnTheRotationAxisRecoversTheRotationCentre)
+{
+  // 2D: a rotation of 30 degrees about (1, 2), given as displacements of points around (0, 0).
+  std::vector<double> points, displacements;
+  const double a = 30.0 * 3.14159265358979323846 / 180.0;
+  for (int k = 0; k < 12; ++k)
+  {
+    const double x = std::cos(0.5 * k) * (1.0 + 0.1 * k), y = std::sin(0.5 * k);
+    points.insert(points.end(), { x, y, 0.0 });
+    const double dx = x - 1.0, dy = y - 2.0;
+    displacements.insert(displacements.end(),
+      { 1.0 + std::cos(a) * dx - std::sin(a) * dy - x, 2.0 + std::sin(a) * dx + std::cos(a) * dy - y, 0.0 });
+  }
+  dgmf::FittedMotion fit = dgmf::FitRigidMotion(2, points.data(), displacements.data(), nullptr, 12);
+  ASSERT_TRUE(dgmf::CentreOnRotationAxis(fit, 100.0));
+  EXPECT_NEAR(fit.Center[0], 1.0, 1e-12);
+  EXPECT_NEAR(fit.Center[1], 2.0, 1e-12);
+  EXPECT_NEAR(fit.Translation[0], 0.0, 1e-12);
+  EXPECT_NEAR(fit.Translation[1], 0.0, 1e-12);
+  EXPECT_NEAR(fit.AngleDegrees, 30.0, 1e-10);
+
+  // 3D: a screw motion, 70 degrees about the axis (0, 1, 1)/sqrt(2) through p = (2, -1, 0.5),
+  // and 0.3 along the axis.
+  const double s = 1.0 / std::sqrt(2.0);
+  const double axis[3] = { 0.0, s, s }, p[3] = { 2.0, -1.0, 0.5 };
+  dgmf::RigidMotion screw;
+  for (int c = 0; c < 3; ++c)
+  {
+    screw.Axis[c] = axis[c];
+    screw.Center[c] = p[c];
+    screw.Translation[c] = 0.3 * axis[c];
+  }
+  screw.AxisAngleDegrees = 70.0;
+  std::vector<double> cloud, moved;
+  for (int k = 0; k < 20; ++k)
+  {
+    const double x[3] = { std::cos(k * 1.3), std::sin(k * 0.7), 0.1 * k };
+    double y[3];
+    screw.Apply(1.0, x, nullptr, y);
+    cloud.insert(cloud.end(), x, x + 3);
+    moved.insert(moved.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
+  }
+  dgmf::FittedMotion fit3 = dgmf::FitRigidMotion(3, cloud.data(), moved.data(), nullptr, 20);
+  ASSERT_TRUE(dgmf::CentreOnRotationAxis(fit3, 100.0));
+  // The centre is on the axis line through p, and the translation is along the axis.
+  const double r[3] = { fit3.Center[0] - p[0], fit3.Center[1] - p[1], fit3.Center[2] - p[2] };
+  const double along = r[0] * axis[0] + r[1] * axis[1] + r[2] * axis[2];
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(r[c] - along * axis[c], 0.0, 1e-10);
+    EXPECT_NEAR(fit3.Translation[c], 0.3 * axis[c], 1e-10);
+  }
+  // A near translation keeps the centroid.
+  dgmf::FittedMotion tiny = fit3;
+  tiny.AngleDegrees = 1e-9;
+  const double before[3] = { tiny.Center[0], tiny.Center[1], tiny.Center[2] };
+  tiny.Translation[0] += 1.0;
+  EXPECT_FALSE(dgmf::CentreOnRotationAxis(tiny, 100.0));
+  EXPECT_EQ(tiny.Center[0], before[0]);
+}

@@ -131,6 +131,39 @@ double ResidualPass(const FittedMotion& fit, const double* points, const double*
 }
 } // namespace
 
+bool CentreOnRotationAxis(FittedMotion& fit, double maximumDistance)
+{
+  const double theta = fit.AngleDegrees * 3.14159265358979323846 / 180.0;
+  if (!(theta > 0.0))
+  {
+    return false;
+  }
+  const double* a = fit.Axis;
+  const double* t = fit.Translation;
+  // Solve (I - R) q = t_perp with q perpendicular to the axis:
+  // q = (t_perp + cot(theta / 2) a x t_perp) / 2.
+  const double along = t[0] * a[0] + t[1] * a[1] + t[2] * a[2];
+  const double perp[3] = { t[0] - along * a[0], t[1] - along * a[1], t[2] - along * a[2] };
+  const double cross[3] = { a[1] * perp[2] - a[2] * perp[1], a[2] * perp[0] - a[0] * perp[2],
+    a[0] * perp[1] - a[1] * perp[0] };
+  const double cot = std::cos(0.5 * theta) / std::sin(0.5 * theta);
+  double q[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    q[c] = 0.5 * (perp[c] + cot * cross[c]);
+  }
+  if (!(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]) <= maximumDistance))
+  {
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    fit.Center[c] += q[c];
+    fit.Translation[c] = along * a[c];
+  }
+  return true;
+}
+
 RigidMotion FittedMotion::ToRigidMotion() const
 {
   RigidMotion motion;

@@ -85,6 +85,18 @@ constexpr double RotationFitTolerance = 1e-12;
  * Throws std::invalid_argument for a dimension other than 2 or 3, a negative node id or a
  * non-finite coordinate or displacement.
  */
+/**
+ * Moves the fit's centre onto its rotation axis (Chasles: a rigid motion is a rotation about an
+ * axis line plus a translation along it): the point of the axis nearest the centroid, so that the
+ * translation keeps only its component along the axis (in 2D: the fixed point of the motion, and
+ * no translation). A body given the displacements of a rotation about some centre then gets back
+ * that very rotation, and DGMF turns the nodes around it about the same centre at every f. The
+ * residual is unchanged: the motion at f = 1 is the same. The centre stays at the centroid when
+ * the rotation is (nearly) a translation: when the axis point would be farther than
+ * `maximumDistance` from the centroid. Returns true if the centre moved.
+ */
+bool CentreOnRotationAxis(FittedMotion& fit, double maximumDistance);
+
 FittedMotion FitRigidMotion(int dimension, const double* points, const double* displacements,
   const std::int32_t* nodes, std::size_t count);
 
