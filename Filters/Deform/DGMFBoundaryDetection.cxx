@@ -2,7 +2,10 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkGenericCell.h"
 #include "vtkGeometryFilter.h"
 #include "vtkIdList.h"
@@ -34,14 +37,20 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
   vtkNew<vtkGeometryFilter> surface;
   surface->SetInputData(structure);
   surface->PassThroughPointIdsOn();
+  surface->PassThroughCellIdsOn();
   surface->MergingOff();
   surface->Update();
   vtkPolyData* boundary = surface->GetOutput();
   vtkDataArray* ids = boundary->GetPointData()->GetArray(surface->GetOriginalPointIdsName());
+  vtkDataArray* cellIds = boundary->GetCellData()->GetArray(surface->GetOriginalCellIdsName());
   if (!ids)
   {
     return;
   }
+  // The structure copy has no ghost array, so ghost cells count as cells: a face between a cell
+  // and a ghost cell (a partition interface) is inside. Faces of ghost cells themselves (the outer
+  // side of the ghost layer) are not the mesh's boundary: they are left out.
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
   std::vector<vtkIdType> original;
   auto faces = vtk::TakeSmartPointer(boundary->GetPolys()->NewIterator());
   for (faces->GoToFirstCell(); !faces->IsDoneWithTraversal(); faces->GoToNextCell())
@@ -49,6 +58,17 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
     vtkIdType npts;
     const vtkIdType* pts;
     faces->GetCurrentCell(npts, pts);
+    if (ghosts && cellIds)
+    {
+      // Cell data of a polydata is indexed over verts, lines, then polys.
+      const vtkIdType index =
+        boundary->GetNumberOfVerts() + boundary->GetNumberOfLines() + faces->GetCurrentCellId();
+      const auto cell = static_cast<vtkIdType>(cellIds->GetTuple1(index));
+      if ((ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0)
+      {
+        continue;
+      }
+    }
     original.resize(static_cast<std::size_t>(npts));
     for (vtkIdType k = 0; k < npts; ++k)
     {
@@ -75,12 +95,19 @@ void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
   uses.reserve(static_cast<std::size_t>(2 * mesh->GetNumberOfCells()));
   vtkNew<vtkGenericCell> cell;
   std::vector<vtkIdType> ids;
+  // Ghost cells count as cells (their edges with real cells are inside), but their own boundary
+  // edges (the outer side of the ghost layer) are not the mesh's boundary.
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
   for (int pass = 0; pass < 2; ++pass)
   {
     for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
     {
       mesh->GetCell(c, cell);
       if (cell->GetCellDimension() != 2)
+      {
+        continue;
+      }
+      if (pass == 1 && ghosts && (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0)
       {
         continue;
       }

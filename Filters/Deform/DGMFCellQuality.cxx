@@ -2,6 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace dgmf_vtk
 {
@@ -110,7 +112,19 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         flags[c] = quality.Inverted ? 1 : 0;
       }
     });
-  return dgmf::SummarizeQuality(values, flags, static_cast<std::size_t>(numberOfCells));
+  // Ghost cells are evaluated (their arrays must be complete) but counted by their owner.
+  std::vector<std::uint8_t> ghost;
+  if (vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray())
+  {
+    ghost.resize(static_cast<std::size_t>(numberOfCells));
+    for (vtkIdType c = 0; c < numberOfCells; ++c)
+    {
+      ghost[static_cast<std::size_t>(c)] =
+        (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0 ? 1 : 0;
+    }
+  }
+  return dgmf::SummarizeQuality(values, flags, static_cast<std::size_t>(numberOfCells),
+    ghost.empty() ? nullptr : ghost.data());
 }
 
 } // namespace dgmf_vtk

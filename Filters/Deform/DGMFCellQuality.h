@@ -18,7 +18,8 @@ namespace dgmf_vtk
 
 /**
  * Fills `sizeSkew` (one value per cell, NaN for cell types the metric does not cover) and
- * `inverted` (1 for an inverted cell) and returns the summary. `mesh` gives the connectivity;
+ * `inverted` (1 for an inverted cell) and returns the summary, which leaves out the ghost cells
+ * (vtkGhostType DUPLICATECELL: another process counts them). `mesh` gives the connectivity;
  * `originalPoints` and `deformedPoints` hold 3 doubles per point. Triangles, quads, pixels,
  * tetrahedra, hexahedra, voxels, wedges and pyramids are covered.
  */

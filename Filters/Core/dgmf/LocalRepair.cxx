@@ -30,6 +30,8 @@ constexpr double kSoftMinimumSharpness = 40.0;
 constexpr double kGradientStep = 1e-6;
 /// Most untangling steps of one node in one pass.
 constexpr int kUntangleStepsPerPass = 4;
+/// Most smoothing steps of one node in one pass.
+constexpr int kSmoothingStepsPerPass = 1;
 /// Largest number of corners of a covered shape (the hexahedron).
 constexpr int kMaximumCorners = 8;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -273,10 +275,12 @@ Vec3 PolygonNormal(CellShape shape, const double* corners)
 class Repairer
 {
 public:
-  Repairer(const CellMesh& mesh, const double* originalPoints, double* points)
+  Repairer(const CellMesh& mesh, const double* originalPoints, double* points,
+    const std::vector<std::int64_t>& freeIndex)
     : Mesh(mesh)
     , OriginalPoints(originalPoints)
     , Points(points)
+    , FreeIndex(freeIndex)
   {
   }
 
@@ -332,6 +336,7 @@ public:
   std::size_t Run(int maximumPasses, double threshold)
   {
     std::size_t passes = 0;
+    this->Dirty.assign(this->Nodes.size(), 1);
     for (int pass = 0; pass < maximumPasses; ++pass)
     {
       if (this->CountRepairableBadCells(threshold) == 0)
@@ -339,11 +344,15 @@ public:
         break;
       }
       std::size_t moved = 0;
-      for (FreeNode& node : this->Nodes)
+      for (std::size_t i = 0; i < this->Nodes.size(); ++i)
       {
-        if (node.Enabled && this->StepNode(node))
+        if (this->Nodes[i].Enabled && this->Dirty[i] != 0)
         {
-          ++moved;
+          this->Dirty[i] = 0;
+          if (this->StepNode(this->Nodes[i]))
+          {
+            ++moved;
+          }
         }
       }
       ++passes;
@@ -359,6 +368,10 @@ private:
   const CellMesh& Mesh;
   const double* OriginalPoints;
   double* Points;
+  const std::vector<std::int64_t>& FreeIndex; ///< index in Nodes of each mesh node, or -1
+  /// Per free node: its neighbourhood changed since its last step (a step of a node whose
+  /// neighbourhood did not change would fail again, so skipping it does not change the result).
+  std::vector<std::uint8_t> Dirty;
   // Scratch buffers, reused by every node step.
   std::vector<double> Margins0;
   std::vector<double> Margins;
@@ -550,7 +563,30 @@ private:
       const CellQuality quality = ComputeSizeSkew(cell.Shape, cell.Original, corners);
       cell.Quality = quality.SizeSkew;
       cell.Inverted = quality.Inverted;
+      for (int k = 0; k < cell.NumberOfNodes; ++k)
+      {
+        const std::int64_t index = this->FreeIndex[static_cast<std::size_t>(cell.Nodes[k])];
+        if (index >= 0)
+        {
+          this->Dirty[static_cast<std::size_t>(index)] = 1;
+        }
+      }
     }
+  }
+
+  /// Minimum cached SizeSkew of the node's cells.
+  double CurrentMinimum(const FreeNode& node) const
+  {
+    double minimum = kInfinity;
+    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    {
+      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      if (!cell.Degenerate)
+      {
+        minimum = std::min(minimum, cell.Quality);
+      }
+    }
+    return minimum;
   }
 
   /// One untangling or smoothing step of a node; true if it moved.
@@ -569,7 +605,17 @@ private:
     }
     if (!inverted)
     {
-      return this->SmoothNode(node, minimum);
+      bool moved = false;
+      for (int step = 0; step < kSmoothingStepsPerPass; ++step)
+      {
+        if (!this->SmoothNode(node, minimum))
+        {
+          break;
+        }
+        moved = true;
+        minimum = this->CurrentMinimum(node);
+      }
+      return moved;
     }
     bool moved = false;
     for (int step = 0; step < kUntangleStepsPerPass && inverted; ++step)
@@ -1006,7 +1052,7 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
   }
 
   // 4. Free nodes (slot becomes their index) and the cells around them.
-  Repairer repairer(mesh, originalPoints, points);
+  Repairer repairer(mesh, originalPoints, points, slot);
   std::vector<FreeNode>& nodes = repairer.Nodes;
   for (std::size_t n = 0; n < numberOfPoints; ++n)
   {

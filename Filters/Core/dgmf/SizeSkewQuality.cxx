@@ -439,8 +439,8 @@ CellQuality ComputeSizeSkew(CellShape shape, const double* original, const doubl
   return CellQuality{ std::numeric_limits<double>::quiet_NaN(), false };
 }
 
-QualitySummary SummarizeQuality(
-  const double* sizeSkew, const std::uint8_t* inverted, std::size_t count)
+QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
+  std::size_t count, const std::uint8_t* skip)
 {
   QualitySummary summary;
   if (sizeSkew == nullptr)
@@ -451,6 +451,10 @@ QualitySummary SummarizeQuality(
   double minimum = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < count; ++i)
   {
+    if (skip != nullptr && skip[i] != 0)
+    {
+      continue;
+    }
     const double value = sizeSkew[i];
     if (std::isnan(value))
     {
@@ -467,6 +471,7 @@ QualitySummary SummarizeQuality(
       ++summary.Inverted;
     }
   }
+  summary.Sum = sum;
   if (summary.Evaluated > 0)
   {
     summary.Mean = sum / static_cast<double>(summary.Evaluated);

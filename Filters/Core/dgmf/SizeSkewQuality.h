@@ -57,13 +57,17 @@ struct QualitySummary
   std::size_t Inverted = 0;    ///< number of inverted cells
   std::size_t Evaluated = 0;   ///< cells with a supported shape
   std::size_t NotComputed = 0; ///< cells of other types (their value is NaN)
+  double Sum = 0.0;            ///< sum of SizeSkew over the evaluated cells (to combine summaries)
 };
 
 /**
  * Summary of per-cell values; NaN values are counted as not computed. `inverted` (may be null)
- * flags inverted cells. The sum is taken in a fixed order, so the result is reproducible.
+ * flags inverted cells. Cells with a non-zero `skip` flag (may be null; e.g. ghost cells, counted
+ * by another process) are left out. The sum is taken in a fixed order, so the result is
+ * reproducible.
  */
-QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted, std::size_t count);
+QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
+  std::size_t count, const std::uint8_t* skip = nullptr);
 
 } // namespace dgmf
 
