@@ -23,6 +23,8 @@ def main():
     for name in ("BodyIdArray", "BodyMotions", "RigidMotionMode"):
         assert name in deform.ListProperties(), name
     assert "Extracted" in deform.GetProperty("RigidMotionMode").Available
+    # The body-id array is opt-in: it must not default to another 1-component array (the marker).
+    assert deform.BodyIdArray[1] == "None", deform.BodyIdArray
     deform.BoundaryMarkerArray = ["POINTS", "BoundaryMarker"]
     deform.BodyIdArray = ["POINTS", "BodyId"]
     deform.BodyMotions = [1, 0, 0, 0, -2.5, 0, 0, 0, 0, 45, 2, 0, 0, 0, 2.5, 0, 0, 0, 0, -45]
