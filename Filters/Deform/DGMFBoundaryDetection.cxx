@@ -12,9 +12,12 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <unordered_map>
 #include <utility>
@@ -34,6 +37,9 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
   // The geometry filter works on a structure-only copy, so no array of the input goes through it.
   vtkNew<vtkUnstructuredGrid> structure;
   structure->CopyStructure(mesh);
+  // CopyStructure keeps the ghost arrays: drop them, so that ghost cells count as cells.
+  structure->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  structure->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
   vtkNew<vtkGeometryFilter> surface;
   surface->SetInputData(structure);
   surface->PassThroughPointIdsOn();
@@ -43,11 +49,13 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
   vtkPolyData* boundary = surface->GetOutput();
   vtkDataArray* ids = boundary->GetPointData()->GetArray(surface->GetOriginalPointIdsName());
   vtkDataArray* cellIds = boundary->GetCellData()->GetArray(surface->GetOriginalCellIdsName());
-  if (!ids)
+  // The filter may pass every point through unchanged (it did with a mesh that had ghost cells),
+  // and then it writes no original-id array: the ids are the input's.
+  if (!ids && boundary->GetNumberOfPoints() != mesh->GetNumberOfPoints())
   {
     return;
   }
-  // The structure copy has no ghost array, so ghost cells count as cells: a face between a cell
+  // Without its ghost array, the copy counts ghost cells as cells: a face between a cell
   // and a ghost cell (a partition interface) is inside. Faces of ghost cells themselves (the outer
   // side of the ghost layer) are not the mesh's boundary: they are left out.
   vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
@@ -72,7 +80,7 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
     original.resize(static_cast<std::size_t>(npts));
     for (vtkIdType k = 0; k < npts; ++k)
     {
-      original[k] = static_cast<vtkIdType>(ids->GetTuple1(pts[k]));
+      original[k] = ids ? static_cast<vtkIdType>(ids->GetTuple1(pts[k])) : pts[k];
     }
     AddFacet(facets, original.data(), npts);
   }
@@ -130,18 +138,80 @@ void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
     }
   }
 }
+/// The first point at each point's exact position, or an empty vector when no two points coincide.
+std::vector<vtkIdType> CanonicalPointIds(vtkUnstructuredGrid* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::map<std::array<double, 3>, vtkIdType> first;
+  std::vector<vtkIdType> canonical(static_cast<std::size_t>(n));
+  bool duplicates = false;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    const auto found = first.emplace(std::array<double, 3>{ p[0], p[1], p[2] }, i);
+    canonical[static_cast<std::size_t>(i)] = found.first->second;
+    duplicates = duplicates || !found.second;
+  }
+  return duplicates ? canonical : std::vector<vtkIdType>();
+}
+
+/// The mesh's cells on the canonical points (same points, same cell ghost array).
+vtkSmartPointer<vtkUnstructuredGrid> RenumberedCopy(
+  vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical)
+{
+  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  copy->SetPoints(mesh->GetPoints());
+  copy->Allocate(mesh->GetNumberOfCells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    if (mesh->GetCellType(c) == VTK_POLYHEDRON)
+    {
+      vtkNew<vtkIdList> stream;
+      mesh->GetFaceStream(c, stream);
+      for (vtkIdType k = 1; k < stream->GetNumberOfIds();)
+      {
+        const vtkIdType count = stream->GetId(k++);
+        for (vtkIdType m = 0; m < count; ++m, ++k)
+        {
+          stream->SetId(k, canonical[static_cast<std::size_t>(stream->GetId(k))]);
+        }
+      }
+      copy->InsertNextCell(VTK_POLYHEDRON, stream);
+      continue;
+    }
+    mesh->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      ids->SetId(k, canonical[static_cast<std::size_t>(ids->GetId(k))]);
+    }
+    copy->InsertNextCell(mesh->GetCellType(c), ids);
+  }
+  if (vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray())
+  {
+    copy->GetCellData()->AddArray(ghosts);
+  }
+  return copy;
+}
 } // namespace
 
 BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension)
 {
   BoundaryFacets facets;
+  vtkSmartPointer<vtkUnstructuredGrid> work = mesh;
+  facets.Canonical = CanonicalPointIds(mesh);
+  if (!facets.Canonical.empty())
+  {
+    work = RenumberedCopy(mesh, facets.Canonical);
+  }
   if (dimension == 2)
   {
-    FindBoundaryEdges(mesh, facets);
+    FindBoundaryEdges(work, facets);
   }
   else
   {
-    FindBoundaryFaces(mesh, facets);
+    FindBoundaryFaces(work, facets);
   }
   return facets;
 }
@@ -154,6 +224,13 @@ std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdT
     if (id >= 0 && id < numberOfPoints)
     {
       flags[static_cast<std::size_t>(id)] = 1;
+    }
+  }
+  if (!facets.Canonical.empty())
+  {
+    for (std::size_t i = 0; i < flags.size(); ++i)
+    {
+      flags[i] = flags[static_cast<std::size_t>(facets.Canonical[i])];
     }
   }
   return flags;
@@ -191,6 +268,13 @@ std::vector<double> ComputeBoundaryNodeWeights(
     for (vtkIdType k = 0; k < count; ++k)
     {
       weights[static_cast<std::size_t>(ids[k])] += measure / static_cast<double>(count);
+    }
+  }
+  if (!facets.Canonical.empty())
+  {
+    for (std::size_t i = 0; i < weights.size(); ++i)
+    {
+      weights[i] = weights[static_cast<std::size_t>(facets.Canonical[i])];
     }
   }
   return weights;

@@ -21,6 +21,9 @@ struct BoundaryFacets
 {
   std::vector<vtkIdType> Offsets{ 0 }; ///< facet f uses Ids[Offsets[f] .. Offsets[f+1])
   std::vector<vtkIdType> Ids;
+  /// For meshes with coincident points: the first point at the position of each point (the
+  /// facets use these). Empty when every point has its own position.
+  std::vector<vtkIdType> Canonical;
 
   std::size_t Size() const { return this->Offsets.size() - 1; }
 };
@@ -31,11 +34,12 @@ struct BoundaryFacets
  *   grid (typically boundary patches).
  * - 2D meshes: the edges used by exactly one 2D cell (end nodes first, then mid-edge nodes of
  *   higher-order cells).
- * Coincident nodes with different ids are kept apart (no point merging).
+ * Coincident nodes with different ids are the same node here (a partition interface or a ghost
+ * layer duplicates them): a face between two cells that share only coincident copies is inside.
  */
 BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension);
 
-/// One flag per point: 1 for the nodes of the boundary facets.
+/// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);
 
 /**

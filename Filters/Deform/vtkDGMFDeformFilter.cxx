@@ -3,6 +3,7 @@
 #include "DGMFBoundaryDetection.h"
 #include "DGMFCellQuality.h"
 #include "DGMFCompositeMesh.h"
+#include "DGMFDistributed.h"
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DGMFDeformation.h"
@@ -21,6 +22,7 @@
 #include "vtkCellType.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -29,6 +31,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -44,6 +47,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <array>
 #include <map>
 #include <new>
 #include <unistd.h>
@@ -243,7 +247,8 @@ struct vtkDGMFDeformFilter::Cache
 /// Everything one execution works from, checked.
 struct vtkDGMFDeformFilter::Inputs
 {
-  std::size_t NumberOfNodes = 0;
+  std::size_t NumberOfNodes = 0; ///< with the other processes' boundary nodes (distributed run)
+  std::size_t LocalNodes = 0;    ///< this piece's nodes, the first ones
   int Dimension = 3;
   const double* Points = nullptr;
   std::vector<double> PointCopy;    ///< the points as doubles, when they are not already
@@ -267,7 +272,10 @@ vtkDGMFDeformFilter::vtkDGMFDeformFilter()
   : GraphCache(new Cache)
   , PerBodyMotions(new BodyMotions)
 {
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
+
+vtkCxxSetObjectMacro(vtkDGMFDeformFilter, Controller, vtkMultiProcessController);
 
 void vtkDGMFDeformFilter::SetBodyMotion(double bodyId, double tx, double ty, double tz, double cx,
   double cy, double cz, double ax, double ay, double az)
@@ -303,7 +311,10 @@ void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
   this->SetInputArrayToProcess(BodyIdArray, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
 }
 
-vtkDGMFDeformFilter::~vtkDGMFDeformFilter() = default;
+vtkDGMFDeformFilter::~vtkDGMFDeformFilter()
+{
+  this->SetController(nullptr);
+}
 
 void vtkDGMFDeformFilter::ReleaseCache()
 {
@@ -508,6 +519,24 @@ vtkTypeBool vtkDGMFDeformFilter::ProcessRequest(
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
+int vtkDGMFDeformFilter::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  // A distributed mesh without a marker array needs one layer of ghost cells, so that the faces
+  // between pieces are not taken for the boundary: ask upstream (e.g. Ghost Cells Generator) for it.
+  if (dgmf_vtk::IsDistributed(this->Controller) && SelectedArrayName(this, MarkerArray).empty())
+  {
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    const int requested =
+      inInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+      ? inInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+      : 0;
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(requested, 1));
+  }
+  return 1;
+}
+
 int vtkDGMFDeformFilter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
@@ -583,6 +612,12 @@ int vtkDGMFDeformFilter::RequestData(
     vtkErrorMacro("The input must be a vtkUnstructuredGrid or a composite dataset of meshes.");
     return 0;
   }
+  const bool distributed = dgmf_vtk::IsDistributed(this->Controller);
+  if (distributed)
+  {
+    this->DistributedDimension =
+      dgmf_vtk::AgreeOnDimension(this->Controller, input, this->DistributedZ);
+  }
   int status = 0;
   try
   {
@@ -599,6 +634,10 @@ int vtkDGMFDeformFilter::RequestData(
   {
     vtkErrorMacro(<< e.what());
     status = 0;
+  }
+  if (distributed)
+  {
+    this->ReduceAcrossProcesses(status, output);
   }
   if (composite)
   {
@@ -628,14 +667,26 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = 0.0;
   this->LastDeformationSeconds = this->LastQualitySeconds = 0.0;
-  if (!this->CheckMemory(input))
+  Inputs inputs;
+  bool ok = this->CheckMemory(input) && this->GatherInputs(input, inputs);
+  if (dgmf_vtk::IsDistributed(this->Controller))
+  {
+    // Every process reaches this point: it fails on all if it fails on one (no process may wait
+    // for another in the exchange below).
+    ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok);
+    if (ok)
+    {
+      this->AppendRemoteBoundaryNodes(inputs);
+    }
+  }
+  if (!ok)
   {
     return 0;
   }
-  Inputs inputs;
-  if (!this->GatherInputs(input, inputs))
+  if (inputs.LocalNodes == 0)
   {
-    return 0;
+    output->ShallowCopy(input); // an empty piece of a distributed mesh
+    return 1;
   }
   this->UpdateProgress(0.1);
   if (this->Method == DGMF || this->Method == DGM || this->Method == DGRBF)
@@ -685,6 +736,10 @@ bool vtkDGMFDeformFilter::CheckMemory(vtkUnstructuredGrid* input)
 bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs)
 {
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  if (numberOfPoints == 0 && dgmf_vtk::IsDistributed(this->Controller))
+  {
+    return true; // an empty piece: it still takes part in the exchanges
+  }
   if (numberOfPoints == 0 || input->GetNumberOfCells() == 0)
   {
     vtkErrorMacro("The input mesh is empty (" << numberOfPoints << " points, "
@@ -693,6 +748,7 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   }
   const auto n = static_cast<std::size_t>(numberOfPoints);
   inputs.NumberOfNodes = n;
+  inputs.LocalNodes = n;
   inputs.Parallel = dgmf_vtk::MakeSMPParallelFor();
   inputs.Points = PointsAsDouble(input->GetPoints(), inputs.PointCopy);
   Cache& cache = *this->GraphCache;
@@ -707,7 +763,8 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     cache.CheckedPoints = pointsArray;
     cache.CheckedPointsMTime = pointsArray->GetMTime();
   }
-  inputs.Dimension = DetectDimension(input, inputs.Points, n);
+  inputs.Dimension = dgmf_vtk::IsDistributed(this->Controller) ? this->DistributedDimension
+                                                              : DetectDimension(input, inputs.Points, n);
   if (inputs.Dimension < 0)
   {
     vtkErrorMacro("The mesh has no 3D cell but its points do not all have the same z: 2D meshes "
@@ -855,6 +912,13 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   }
   else
   {
+    if (dgmf_vtk::IsDistributed(this->Controller) && !input->GetCellGhostArray())
+    {
+      vtkErrorMacro("In a distributed run without a boundary-marker array, the pieces need ghost "
+                    "cells (e.g. ParaView's Ghost Cells Generator), or the faces between pieces "
+                    "would be taken for the mesh's boundary. Add ghost cells or select a marker.");
+      return false;
+    }
     const std::vector<std::uint8_t> flags =
       dgmf_vtk::FlagBoundaryNodes(this->GetBoundaryFacets(input, inputs.Dimension), numberOfPoints);
     for (std::size_t i = 0; i < n; ++i)
@@ -878,6 +942,123 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     vtkWarningMacro("No node is marked as moving: the output has the input's points.");
   }
   return true;
+}
+
+void vtkDGMFDeformFilter::AppendRemoteBoundaryNodes(Inputs& inputs)
+{
+  const std::size_t n = inputs.LocalNodes;
+  std::vector<dgmf_vtk::RemoteBoundaryNode> local;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (inputs.Kinds[i] == dgmf::NodeKind::Interior)
+    {
+      continue;
+    }
+    dgmf_vtk::RemoteBoundaryNode node;
+    for (int c = 0; c < 3; ++c)
+    {
+      node.Position[c] = inputs.Points[3 * i + c];
+      node.Displacement[c] = inputs.Displacement ? inputs.Displacement[3 * i + c] : 0.0;
+    }
+    node.Kind = static_cast<std::int32_t>(inputs.Kinds[i]);
+    node.BodyId = inputs.BodyIds.empty() ? 0 : inputs.BodyIds[i];
+    local.push_back(node);
+  }
+  const std::vector<dgmf_vtk::RemoteBoundaryNode> remote =
+    dgmf_vtk::ExchangeBoundaryNodes(this->Controller, local);
+  if (remote.empty())
+  {
+    return;
+  }
+  // A ghost node on the mesh's boundary may look interior here (its boundary face belongs to a
+  // ghost cell, whose faces are left out): it takes the kind its owner found for it.
+  {
+    std::map<std::array<double, 3>, dgmf::NodeKind> remoteKind;
+    for (const dgmf_vtk::RemoteBoundaryNode& node : remote)
+    {
+      auto& kind = remoteKind[{ node.Position[0], node.Position[1], node.Position[2] }];
+      kind = std::max(kind, static_cast<dgmf::NodeKind>(node.Kind));
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (inputs.Kinds[i] == dgmf::NodeKind::Interior)
+      {
+        const auto found = remoteKind.find(
+          { inputs.Points[3 * i], inputs.Points[3 * i + 1], inputs.Points[3 * i + 2] });
+        if (found != remoteKind.end())
+        {
+          inputs.Kinds[i] = found->second;
+        }
+      }
+    }
+  }
+  // The other pieces' boundary nodes follow this piece's nodes (coincident copies of the same
+  // node, on several pieces, share one graph vertex).
+  if (inputs.PointCopy.empty())
+  {
+    inputs.PointCopy.assign(inputs.Points, inputs.Points + 3 * n);
+  }
+  if (inputs.Displacement && inputs.DisplacementCopy.empty())
+  {
+    inputs.DisplacementCopy.assign(inputs.Displacement, inputs.Displacement + 3 * n);
+  }
+  for (const dgmf_vtk::RemoteBoundaryNode& node : remote)
+  {
+    inputs.PointCopy.insert(inputs.PointCopy.end(), node.Position, node.Position + 3);
+    if (inputs.Displacement)
+    {
+      inputs.DisplacementCopy.insert(
+        inputs.DisplacementCopy.end(), node.Displacement, node.Displacement + 3);
+    }
+    inputs.Kinds.push_back(static_cast<dgmf::NodeKind>(node.Kind));
+    if (!inputs.BodyIds.empty())
+    {
+      inputs.BodyIds.push_back(node.BodyId);
+      inputs.NumberOfBodies = std::max(inputs.NumberOfBodies, node.BodyId);
+    }
+  }
+  inputs.Points = inputs.PointCopy.data();
+  if (inputs.Displacement)
+  {
+    inputs.Displacement = inputs.DisplacementCopy.data();
+  }
+  inputs.NumberOfNodes = n + remote.size();
+}
+
+void vtkDGMFDeformFilter::ReduceAcrossProcesses(int& status, vtkUnstructuredGrid* output)
+{
+  vtkFieldData* fieldData = output->GetFieldData();
+  auto value = [fieldData](const char* name)
+  {
+    vtkDataArray* array = fieldData->GetArray(name);
+    return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : 0.0;
+  };
+  dgmf::QualitySummary summary;
+  summary.Evaluated = static_cast<std::size_t>(value("SizeSkewEvaluatedCells"));
+  summary.Sum = value("SizeSkewMean") * static_cast<double>(summary.Evaluated);
+  summary.Minimum = value("SizeSkewMinimum");
+  summary.Inverted = static_cast<std::size_t>(value("InvertedCellCount"));
+  std::size_t outside = static_cast<std::size_t>(value("OutsideNodeCount"));
+  bool ok = status != 0;
+  dgmf_vtk::ReduceSummary(this->Controller, ok, summary, outside);
+  status = ok ? 1 : 0;
+  if (!ok)
+  {
+    output->Initialize();
+    return;
+  }
+  auto set = [fieldData](const char* name, double v)
+  {
+    if (vtkDataArray* array = fieldData->GetArray(name))
+    {
+      array->SetTuple1(0, v);
+    }
+  };
+  set("SizeSkewMean", summary.Mean);
+  set("SizeSkewMinimum", summary.Minimum);
+  set("InvertedCellCount", static_cast<double>(summary.Inverted));
+  set("SizeSkewEvaluatedCells", static_cast<double>(summary.Evaluated));
+  set("OutsideNodeCount", static_cast<double>(outside));
 }
 
 bool vtkDGMFDeformFilter::GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs)
@@ -1159,6 +1340,27 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   fieldData->AddArray(methodName);
   this->UpdateProgress(0.8);
 
+  // A distributed run also deformed the other pieces' boundary nodes: keep this piece's nodes.
+  const auto localNodes = static_cast<vtkIdType>(inputs.LocalNodes);
+  if (inputs.LocalNodes < inputs.NumberOfNodes)
+  {
+    newCoordinates->Resize(localNodes);
+    newCoordinates->SetNumberOfTuples(localNodes);
+    for (const char* name : { "r", "f" })
+    {
+      if (vtkDataArray* shared = output->GetPointData()->GetArray(name))
+      {
+        vtkNew<vtkDoubleArray> local;
+        local->SetName(name);
+        local->SetNumberOfTuples(localNodes);
+        for (vtkIdType i = 0; i < localNodes; ++i)
+        {
+          local->SetValue(i, shared->GetTuple1(i));
+        }
+        output->GetPointData()->AddArray(local);
+      }
+    }
+  }
   vtkNew<vtkPoints> newPoints;
   newPoints->SetData(newCoordinates);
   output->SetPoints(newPoints);
@@ -1176,6 +1378,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     AddFieldValue(fieldData, "SizeSkewMean", summary.Mean);
     AddFieldValue(fieldData, "SizeSkewMinimum", summary.Minimum);
     AddFieldCount(fieldData, "InvertedCellCount", summary.Inverted);
+    AddFieldCount(fieldData, "SizeSkewEvaluatedCells", summary.Evaluated);
     this->LastQualitySeconds = std::chrono::duration<double>(Clock::now() - deformed).count();
     if (this->FailOnInvertedCells && summary.Inverted > 0)
     {

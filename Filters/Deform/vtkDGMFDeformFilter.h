@@ -66,6 +66,7 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 
 class vtkFieldData;
+class vtkMultiProcessController;
 
 #include <cstddef> // for std::size_t
 #include <cstdint> // for std::int32_t
@@ -299,6 +300,17 @@ public:
   void SetBodyIdArrayName(const char* name);
   ///@}
 
+  ///@{
+  /**
+   * The controller of a distributed run (pvbatch, pvserver under MPI): every process holds a
+   * piece of the mesh; the boundary nodes of all pieces are exchanged, every process builds the
+   * same Delaunay graph and deforms its own nodes, and the quality summary covers all pieces.
+   * Default: the global controller (none, or one process, in a serial run).
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
   /// True when the last execution reused the cached Delaunay graph and node locations.
   bool GetLastExecutionReusedGraph() const { return this->LastExecutionReusedGraph; }
 
@@ -328,6 +340,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Method = DGMF;
@@ -347,6 +360,7 @@ protected:
   bool ComputeQuality = true;
   bool FailOnInvertedCells = false;
   int NumberOfThreads = 0;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
@@ -366,6 +380,10 @@ private:
   std::unique_ptr<BodyMotions> PerBodyMotions;
   bool DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out);
   bool GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs);
+  void AppendRemoteBoundaryNodes(Inputs& inputs);
+  void ReduceAcrossProcesses(int& status, vtkUnstructuredGrid* output);
+  int DistributedDimension = 0; ///< the whole mesh's dimension in a distributed run
+  double DistributedZ = 0.0;    ///< and its z when it is 2D
   std::vector<dgmf::RigidMotion> PropertyBodyMotions(const Inputs& inputs) const;
   std::vector<std::int32_t> BodyIdsOrMovingNodes(const Inputs& inputs) const;
   std::vector<double> TotalBodyDisplacement(const Inputs& inputs) const;

@@ -110,7 +110,8 @@ TestMesh Grid3D(int n, bool tetrahedra)
       }
     }
   }
-  const auto id = [n](int i, int j, int k) { return static_cast<std::int64_t>((k * n + j) * n + i); };
+  const auto id = [n](int i, int j, int k)
+  { return static_cast<std::int64_t>((k * n + j) * n + i); };
   for (int k = 0; k + 1 < n; ++k)
   {
     for (int j = 0; j + 1 < n; ++j)
@@ -122,7 +123,8 @@ TestMesh Grid3D(int n, bool tetrahedra)
           id(i, j + 1, k + 1) };
         if (!tetrahedra)
         {
-          AddCell(grid.Mesh, CellShape::Hexahedron, { v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] });
+          AddCell(
+            grid.Mesh, CellShape::Hexahedron, { v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] });
         }
         else
         {
@@ -136,6 +138,43 @@ TestMesh Grid3D(int n, bool tetrahedra)
       }
     }
   }
+  grid.Points = grid.Original;
+  return grid;
+}
+
+/**
+ * Unit cube, n^3 grid nodes, boundary static; the cubes alternate (checkerboard) between two
+ * wedges and six pyramids around an extra centre node.
+ */
+TestMesh WedgePyramidGrid(int n)
+{
+  TestMesh grid = Grid3D(n, false);
+  const CellMesh hexahedra = grid.Mesh;
+  grid.Mesh = CellMesh();
+  const double h = 1.0 / (n - 1);
+  std::size_t points = static_cast<std::size_t>(n * n * n);
+  for (std::size_t c = 0; c + 1 < hexahedra.Offsets.size(); ++c)
+  {
+    const std::int64_t* v = hexahedra.Connectivity.data() + hexahedra.Offsets[c];
+    const double* p0 = grid.Original.data() + 3 * v[0];
+    const bool even = (static_cast<int>(std::lround(p0[0] / h + p0[1] / h + p0[2] / h)) & 1) == 0;
+    if (even)
+    {
+      AddCell(grid.Mesh, CellShape::Wedge, { v[0], v[1], v[3], v[4], v[5], v[7] });
+      AddCell(grid.Mesh, CellShape::Wedge, { v[1], v[2], v[3], v[5], v[6], v[7] });
+      continue;
+    }
+    const auto centre = static_cast<std::int64_t>(points++);
+    grid.Original.insert(grid.Original.end(), { p0[0] + h / 2, p0[1] + h / 2, p0[2] + h / 2 });
+    grid.Kinds.push_back(NodeKind::Interior);
+    const int faces[6][4] = { { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 4, 5, 1 }, { 1, 5, 6, 2 },
+      { 2, 6, 7, 3 }, { 3, 7, 4, 0 } };
+    for (const auto& f : faces)
+    {
+      AddCell(grid.Mesh, CellShape::Pyramid, { v[f[0]], v[f[1]], v[f[2]], v[f[3]], centre });
+    }
+  }
+  grid.Mesh.NumberOfPoints = points;
   grid.Points = grid.Original;
   return grid;
 }
@@ -186,7 +225,8 @@ std::vector<CellQuality> Qualities(const TestMesh& grid, const std::vector<doubl
     for (std::int64_t k = mesh.Offsets[c]; k < mesh.Offsets[c + 1]; ++k)
     {
       const auto node = static_cast<std::size_t>(mesh.Connectivity[static_cast<std::size_t>(k)]);
-      original.insert(original.end(), grid.Original.begin() + 3 * node, grid.Original.begin() + 3 * node + 3);
+      original.insert(
+        original.end(), grid.Original.begin() + 3 * node, grid.Original.begin() + 3 * node + 3);
       deformed.insert(deformed.end(), points.begin() + 3 * node, points.begin() + 3 * node + 3);
     }
     result.push_back(dgmf::ComputeSizeSkew(mesh.Shapes[c], original.data(), deformed.data()));
@@ -217,7 +257,8 @@ Stats Summarize(const TestMesh& grid, const std::vector<double>& points, double 
  * Layer of every node around the bad cells: 0 for their nodes, l for the nodes of cells that
  * share a node of layer l - 1; -1 beyond.
  */
-std::vector<int> NodeLayers(const TestMesh& grid, const std::vector<double>& points, double threshold)
+std::vector<int> NodeLayers(
+  const TestMesh& grid, const std::vector<double>& points, double threshold)
 {
   const CellMesh& mesh = grid.Mesh;
   const std::vector<CellQuality> qualities = Qualities(grid, points);
@@ -240,7 +281,8 @@ std::vector<int> NodeLayers(const TestMesh& grid, const std::vector<double>& poi
       bool touches = false;
       for (std::int64_t k = mesh.Offsets[c]; k < mesh.Offsets[c + 1]; ++k)
       {
-        const int value = layer[static_cast<std::size_t>(mesh.Connectivity[static_cast<std::size_t>(k)])];
+        const int value =
+          layer[static_cast<std::size_t>(mesh.Connectivity[static_cast<std::size_t>(k)])];
         touches = touches || value == l - 1;
       }
       for (std::int64_t k = mesh.Offsets[c]; touches && k < mesh.Offsets[c + 1]; ++k)
@@ -267,7 +309,12 @@ void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::R
     return;
   }
   const std::size_t middle = begin + (end - begin) / 2;
-  std::thread first([&] { if (begin < middle) body(begin, middle); });
+  std::thread first(
+    [&]
+    {
+      if (begin < middle)
+        body(begin, middle);
+    });
   std::thread second([&] { body(middle, end); });
   first.join();
   second.join();
@@ -332,7 +379,8 @@ void PrintReport(const char* name, const RepairReport& report, double seconds)
             << report.InvertedAfter << ", minimum " << report.MinimumBefore << " -> "
             << report.MinimumAfter << ", free " << report.FreeNodes << ", moved "
             << report.MovedNodes << ", passes " << report.Passes << ", "
-            << 1e6 * seconds / static_cast<double>(std::max<std::size_t>(1, report.FreeNodes * report.Passes))
+            << 1e6 * seconds /
+                 static_cast<double>(std::max<std::size_t>(1, report.FreeNodes * report.Passes))
             << " us per node and pass\n";
 }
 
@@ -380,6 +428,35 @@ TEST(LocalRepair, Untangles2DQuads)
   }
 }
 
+TEST(LocalRepair, Untangles2DCellsInATiltedPlane)
+{
+  const int n = 11;
+  TestMesh grid = Grid2D(n, true, true, 0.0);
+  Displace(grid, NodeIndex2D(n, 5, 5), 0.17, 0.13, 0.0);
+  // Rotate everything (original and deformed) into a plane that is not normal to an axis.
+  const double c = std::cos(0.7), s = std::sin(0.7), ct = std::cos(0.4), st = std::sin(0.4);
+  for (std::vector<double>* points : { &grid.Original, &grid.Points })
+  {
+    for (std::size_t node = 0; node < grid.Kinds.size(); ++node)
+    {
+      double* p = points->data() + 3 * node;
+      const double x = c * p[0] - s * p[1], y = s * p[0] + c * p[1];
+      p[0] = x;
+      p[1] = ct * y;
+      p[2] = st * y + 0.3;
+    }
+  }
+  const std::vector<double> deformed = grid.Points;
+  const RepairParameters parameters;
+  const RepairReport report = Repair(grid, parameters);
+  CheckRepaired(grid, deformed, report, parameters);
+  for (std::size_t node = 0; node < grid.Kinds.size(); ++node)
+  {
+    const double* p = grid.Points.data() + 3 * node;
+    EXPECT_NEAR(-st * p[1] + ct * (p[2] - 0.3), 0.0, 1e-14); // distance to the plane
+  }
+}
+
 TEST(LocalRepair, Untangles3DTetrahedra)
 {
   const int n = 7;
@@ -405,6 +482,18 @@ TEST(LocalRepair, Untangles3DHexahedra)
   CheckRepaired(grid, deformed, report, parameters);
 }
 
+TEST(LocalRepair, Untangles3DWedgesAndPyramids)
+{
+  const int n = 6;
+  TestMesh grid = WedgePyramidGrid(n);
+  const double h = 1.0 / (n - 1);
+  Displace(grid, NodeIndex3D(n, 2, 2, 2), 1.2 * h, 0.9 * h, -1.1 * h);
+  const std::vector<double> deformed = grid.Points;
+  const RepairParameters parameters;
+  const RepairReport report = TimedRepair("3D wedges and pyramids", grid, parameters);
+  CheckRepaired(grid, deformed, report, parameters);
+}
+
 TEST(LocalRepair, RecoversNonFiniteNode)
 {
   const int n = 6;
@@ -419,6 +508,18 @@ TEST(LocalRepair, RecoversNonFiniteNode)
   {
     EXPECT_TRUE(std::isfinite(value));
   }
+
+  // 2D: the lost node comes back into the plane z = 0.25, exactly.
+  TestMesh flat = Grid2D(n, false);
+  flat.Points[3 * NodeIndex2D(n, 2, 3)] = std::numeric_limits<double>::infinity();
+  const RepairReport flatReport = Repair(flat, parameters);
+  EXPECT_EQ(flatReport.InvertedAfter, 0u);
+  EXPECT_EQ(flatReport.BadCellsAfter, 0u);
+  for (std::size_t node = 0; node < flat.Kinds.size(); ++node)
+  {
+    EXPECT_TRUE(std::isfinite(flat.Points[3 * node]) && std::isfinite(flat.Points[3 * node + 1]));
+    EXPECT_EQ(flat.Points[3 * node + 2], 0.25);
+  }
 }
 
 TEST(LocalRepair, NothingToRepairLeavesMeshUntouched)
@@ -432,7 +533,8 @@ TEST(LocalRepair, NothingToRepairLeavesMeshUntouched)
     const RepairParameters parameters;
     ASSERT_EQ(Summarize(grid, deformed, parameters.Threshold).Bad, 0u);
     const RepairReport report = Repair(grid, parameters);
-    EXPECT_EQ(std::memcmp(grid.Points.data(), deformed.data(), deformed.size() * sizeof(double)), 0);
+    EXPECT_EQ(
+      std::memcmp(grid.Points.data(), deformed.data(), deformed.size() * sizeof(double)), 0);
     EXPECT_EQ(report.BadCellsBefore, 0u);
     EXPECT_EQ(report.BadCellsAfter, 0u);
     EXPECT_EQ(report.InvertedBefore, 0u);
@@ -527,7 +629,9 @@ TEST(LocalRepair, SameResultForAnyParallelFor)
   const RepairReport a = Repair(serial, parameters, dgmf::SerialFor);
   const RepairReport b = Repair(threaded, parameters, TwoThreadFor);
   EXPECT_GT(a.MovedNodes, 0u);
-  EXPECT_EQ(std::memcmp(serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(
+              serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)),
+    0);
   EXPECT_EQ(a.BadCellsAfter, b.BadCellsAfter);
   EXPECT_EQ(a.MovedNodes, b.MovedNodes);
   EXPECT_EQ(a.Passes, b.Passes);
@@ -572,9 +676,9 @@ TEST(LocalRepair, MinimumNeverDecreases)
       EXPECT_EQ(after.Inverted, 0u);
       if (seed == 1)
       {
-        std::cout << "[ repair   ] jittered " << test.Name << ": minimum " << before.Minimum << " -> "
-                  << after.Minimum << ", cells below " << test.Threshold << " " << before.Bad << " -> " << after.Bad
-                  << ", passes " << report.Passes << "\n";
+        std::cout << "[ repair   ] jittered " << test.Name << ": minimum " << before.Minimum
+                  << " -> " << after.Minimum << ", cells below " << test.Threshold << " "
+                  << before.Bad << " -> " << after.Bad << ", passes " << report.Passes << "\n";
       }
     }
   }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -30,8 +31,11 @@ constexpr double kSoftMinimumSharpness = 40.0;
 constexpr double kGradientStep = 1e-6;
 /// Most untangling steps of one node in one pass.
 constexpr int kUntangleStepsPerPass = 4;
-/// Most smoothing steps of one node in one pass.
-constexpr int kSmoothingStepsPerPass = 1;
+/**
+ * Nodes whose cells all score at least this times the threshold are not smoothed: they move only
+ * once a neighbour's move has brought one of their cells below it (to make room).
+ */
+constexpr double kComfortFactor = 1.5;
 /// Largest number of corners of a covered shape (the hexahedron).
 constexpr int kMaximumCorners = 8;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -40,6 +44,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kUntangleSteps[] = { 2.0, 1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125 };
 constexpr double kLaplacianFractions[] = { 1.0, 0.5, 0.25, 0.125 };
 constexpr double kAscentSteps[] = { 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625 };
+constexpr double kPatternSteps[] = { 0.125, 0.03125 };
 
 struct Vec3
 {
@@ -108,8 +113,8 @@ constexpr Corner kQuadCorners[] = { { 0, 1, 3, -1 }, { 1, 2, 0, -1 }, { 2, 3, 1,
 constexpr Corner kTetraCorners[] = { { 0, 1, 2, 3 } };
 constexpr Corner kHexCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 5 }, { 2, 3, 1, 6 }, { 3, 0, 2, 7 },
   { 4, 7, 5, 0 }, { 5, 4, 6, 1 }, { 6, 5, 7, 2 }, { 7, 6, 4, 3 } };
-constexpr Corner kWedgeCorners[] = { { 0, 2, 1, 3 }, { 1, 0, 2, 4 }, { 2, 1, 0, 5 },
-  { 3, 4, 5, 0 }, { 4, 5, 3, 1 }, { 5, 3, 4, 2 } };
+constexpr Corner kWedgeCorners[] = { { 0, 2, 1, 3 }, { 1, 0, 2, 4 }, { 2, 1, 0, 5 }, { 3, 4, 5, 0 },
+  { 4, 5, 3, 1 }, { 5, 3, 4, 2 } };
 constexpr Corner kPyramidCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 4 }, { 2, 3, 1, 4 },
   { 3, 0, 2, 4 } };
 
@@ -134,7 +139,8 @@ struct ShapeTables
 };
 
 template <std::size_t C, std::size_t E>
-constexpr ShapeTables MakeTables(const Corner (&corners)[C], const int (&edges)[E][2], int dimension)
+constexpr ShapeTables MakeTables(
+  const Corner (&corners)[C], const int (&edges)[E][2], int dimension)
 {
   return { corners, static_cast<int>(C), edges, static_cast<int>(E), dimension };
 }
@@ -166,15 +172,15 @@ struct ActiveCell
   CellShape Shape = CellShape::Triangle;
   ShapeTables Tables{ nullptr, 0, nullptr, 0, 0 };
   int NumberOfNodes = 0;
-  const std::int64_t* Nodes = nullptr;      ///< into the mesh connectivity
+  const std::int64_t* Nodes = nullptr;       ///< into the mesh connectivity
   double Original[3 * kMaximumCorners] = {}; ///< original corner coordinates
-  Vec3 Normal0{ 0.0, 0.0, 0.0 };            ///< 2D: unit normal of the original cell
-  double Orientation = 1.0;                 ///< 3D: sign of the original cell's size
-  double Beta = 0.0;                        ///< untangling target of every corner Jacobian
-  bool Degenerate = false;                  ///< degenerate original cell: always 0, ignored
-  double Quality = 0.0;                     ///< current SizeSkew
-  bool Inverted = false;                    ///< currently inverted
-  int FreeNodeCount = 0;                    ///< free nodes among its corners
+  Vec3 Normal0{ 0.0, 0.0, 0.0 };             ///< 2D: unit normal of the original cell
+  double Orientation = 1.0;                  ///< 3D: sign of the original cell's size
+  double Beta = 0.0;                         ///< untangling target of every corner Jacobian
+  bool Degenerate = false;                   ///< degenerate original cell: always 0, ignored
+  double Quality = 0.0;                      ///< current SizeSkew
+  bool Inverted = false;                     ///< currently inverted
+  int FreeNodeCount = 0;                     ///< free nodes among its corners
 };
 
 /// A node the repair may move.
@@ -183,7 +189,7 @@ struct FreeNode
   std::int64_t Id = 0;
   std::size_t CellBegin = 0; ///< its cells are Incident[CellBegin, CellEnd)
   std::size_t CellEnd = 0;
-  int Dimension = 3;         ///< 2: moves in Basis[0], Basis[1]; 3: in all directions
+  int Dimension = 3; ///< 2: moves in Basis[0], Basis[1]; 3: in all directions
   Vec3 Basis[3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
   Vec3 Normal{ 0.0, 0.0, 0.0 }; ///< 2D: unit normal of the plane of its cells
   bool Enabled = true;
@@ -226,13 +232,15 @@ void Validate(const CellMesh& mesh, const double* originalPoints, const double* 
   }
   if (mesh.Shapes.size() != cells || (!mesh.Covered.empty() && mesh.Covered.size() != cells))
   {
-    throw std::invalid_argument("RepairCells: Shapes (and Covered, if given) need one entry per cell");
+    throw std::invalid_argument(
+      "RepairCells: Shapes (and Covered, if given) need one entry per cell");
   }
   if (originalPoints == nullptr || points == nullptr || kinds == nullptr)
   {
     throw std::invalid_argument("RepairCells: points, original points and node kinds are required");
   }
-  if (mesh.Offsets[0] < 0 || static_cast<std::size_t>(mesh.Offsets[cells]) > mesh.Connectivity.size())
+  if (mesh.Offsets[0] < 0 ||
+      static_cast<std::size_t>(mesh.Offsets[cells]) > mesh.Connectivity.size())
   {
     throw std::invalid_argument("RepairCells: the offsets do not fit the connectivity");
   }
@@ -335,6 +343,7 @@ public:
   /// Runs at most `maximumPasses` passes; returns the number run.
   std::size_t Run(int maximumPasses, double threshold)
   {
+    this->Threshold = threshold;
     std::size_t passes = 0;
     this->Dirty.assign(this->Nodes.size(), 1);
     for (int pass = 0; pass < maximumPasses; ++pass)
@@ -372,8 +381,10 @@ private:
   /// Per free node: its neighbourhood changed since its last step (a step of a node whose
   /// neighbourhood did not change would fail again, so skipping it does not change the result).
   std::vector<std::uint8_t> Dirty;
+  double Threshold = 0.0;
   // Scratch buffers, reused by every node step.
   std::vector<double> Margins0;
+  std::vector<double> Targets0;
   std::vector<double> Margins;
   std::vector<Vec3> CornerGradients;
   std::vector<double> Qualities0;
@@ -383,12 +394,13 @@ private:
   static double Alpha3(const Corner& corner, const double* corners)
   {
     const Vec3 o = Load(corners, corner.Origin);
-    return Dot(Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o),
-      Load(corners, corner.C) - o);
+    return Dot(
+      Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o), Load(corners, corner.C) - o);
   }
 
   /// The cell's deformed corners with `node` at `position`.
-  void GatherWith(const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const
+  void GatherWith(
+    const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const
   {
     for (int k = 0; k < cell.NumberOfNodes; ++k)
     {
@@ -403,7 +415,7 @@ private:
     for (const ActiveCell& cell : this->Cells)
     {
       if (cell.FreeNodeCount > 0 && !cell.Degenerate &&
-        IsBadCell(CellQuality{ cell.Quality, cell.Inverted }, threshold))
+          IsBadCell(CellQuality{ cell.Quality, cell.Inverted }, threshold))
       {
         ++count;
       }
@@ -411,17 +423,23 @@ private:
     return count;
   }
 
-  /// Minimum SizeSkew over the node's cells (0 if one is inverted) with the node at `position`;
-  /// per-cell values to `qualities` if not null; `inverted` tells if one is inverted.
+  /**
+   * Minimum SizeSkew over the node's cells (0 if one is inverted) with the node at `position`;
+   * per-cell values to `qualities` if not null; `inverted` tells if one is inverted. Without
+   * `qualities`, stops at the first cell at or below `cutoff` (the caller rejects such a point
+   * anyway), starting with the cell at offset `first` (the worst one, most likely to stop it).
+   */
   double IncidentMinimum(const FreeNode& node, const Vec3& position, bool& inverted,
-    double* qualities) const
+    double* qualities, double cutoff = -kInfinity, std::size_t first = 0) const
   {
     double corners[3 * kMaximumCorners];
     double minimum = kInfinity;
     inverted = false;
-    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    const std::size_t count = node.CellEnd - node.CellBegin;
+    for (std::size_t j = 0; j < count; ++j)
     {
-      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      const std::size_t offset = (first + j) % count;
+      const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
       if (cell.Degenerate)
       {
         continue;
@@ -432,7 +450,11 @@ private:
       minimum = std::min(minimum, quality.SizeSkew);
       if (qualities != nullptr)
       {
-        qualities[i - node.CellBegin] = quality.SizeSkew;
+        qualities[offset] = quality.SizeSkew;
+      }
+      else if (minimum <= cutoff)
+      {
+        break;
       }
     }
     return minimum;
@@ -440,16 +462,23 @@ private:
 
   /**
    * alpha_k - beta for every corner of the node's cells with the node at `position`, appended to
-   * `margins` in a fixed order; returns Knupp's objective sum_k max(0, beta - alpha_k) (half of
-   * sum_k |alpha_k - beta| - (alpha_k - beta)), infinite if a Jacobian is not finite.
+   * `margins` in a fixed order (and beta to `targets`). Returns Knupp's objective
+   * sum_k max(0, beta - alpha_k), half of sum_k |alpha_k - beta| - (alpha_k - beta), or infinity
+   * if a Jacobian is not finite. Without `margins`, stops as soon as the objective reaches
+   * `cutoff`.
    */
-  double CornerMargins(const FreeNode& node, const Vec3& position, std::vector<double>* margins) const
+  double CornerMargins(const FreeNode& node, const Vec3& position, std::vector<double>* margins,
+    std::vector<double>* targets = nullptr, double cutoff = kInfinity) const
   {
     double corners[3 * kMaximumCorners];
     double objective = 0.0;
     if (margins != nullptr)
     {
       margins->clear();
+    }
+    if (targets != nullptr)
+    {
+      targets->clear();
     }
     for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
     {
@@ -466,7 +495,8 @@ private:
         if (cell.Tables.Dimension == 2)
         {
           const Vec3 o = Load(corners, corner.Origin);
-          alpha = Dot(Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o), cell.Normal0);
+          alpha =
+            Dot(Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o), cell.Normal0);
         }
         else
         {
@@ -485,14 +515,27 @@ private:
         {
           margins->push_back(margin);
         }
+        if (targets != nullptr)
+        {
+          targets->push_back(cell.Beta);
+        }
+      }
+      if (margins == nullptr && objective >= cutoff)
+      {
+        break;
       }
     }
     return objective;
   }
 
-  /// The mean of the node's edge neighbours (Laplacian position) and the mean edge length.
+  /**
+   * The mean of the node's edge neighbours (Laplacian position) and the mean edge length. The
+   * mean is taken relative to the first neighbour, so that a coordinate all neighbours share (z
+   * in a 2D mesh) is reproduced exactly.
+   */
   void Neighbourhood(const FreeNode& node, const Vec3& x, Vec3& laplacian, double& length) const
   {
+    Vec3 reference{ 0.0, 0.0, 0.0 };
     Vec3 sum{ 0.0, 0.0, 0.0 };
     double deformedLength = 0.0;
     double originalLength = 0.0;
@@ -511,7 +554,11 @@ private:
         }
         const std::int64_t other = a == node.Id ? b : a;
         const Vec3 p = Load(this->Points, other);
-        sum = sum + p;
+        if (count == 0)
+        {
+          reference = p;
+        }
+        sum = sum + (p - reference);
         deformedLength += Norm(p - x);
         originalLength += Norm(Load(this->OriginalPoints, other) - x0);
         ++count;
@@ -523,7 +570,7 @@ private:
       length = 0.0;
       return;
     }
-    laplacian = (1.0 / count) * sum;
+    laplacian = reference + (1.0 / count) * sum;
     length = deformedLength / count;
     if (!(length > 0.0 && std::isfinite(length)))
     {
@@ -551,6 +598,27 @@ private:
     }
   }
 
+  /// Adds the 26 (3D) or 8 (2D) directions to the neighbours of a cubic (square) lattice.
+  void AddLatticeDirections(const FreeNode& node)
+  {
+    for (int a = -1; a <= 1; ++a)
+    {
+      for (int b = -1; b <= 1; ++b)
+      {
+        for (int c = -1; c <= 1; ++c)
+        {
+          if ((a == 0 && b == 0 && c == 0) || (node.Dimension == 2 && c != 0))
+          {
+            continue;
+          }
+          this->AddDirection(static_cast<double>(a) * node.Basis[0] +
+                             static_cast<double>(b) * node.Basis[1] +
+                             static_cast<double>(c) * node.Basis[2]);
+        }
+      }
+    }
+  }
+
   /// Moves the node to `position` and refreshes the cached quality of its cells.
   void Accept(FreeNode& node, const Vec3& position)
   {
@@ -574,21 +642,6 @@ private:
     }
   }
 
-  /// Minimum cached SizeSkew of the node's cells.
-  double CurrentMinimum(const FreeNode& node) const
-  {
-    double minimum = kInfinity;
-    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
-    {
-      const ActiveCell& cell = this->Cells[this->Incident[i]];
-      if (!cell.Degenerate)
-      {
-        minimum = std::min(minimum, cell.Quality);
-      }
-    }
-    return minimum;
-  }
-
   /// One untangling or smoothing step of a node; true if it moved.
   bool StepNode(FreeNode& node)
   {
@@ -605,17 +658,11 @@ private:
     }
     if (!inverted)
     {
-      bool moved = false;
-      for (int step = 0; step < kSmoothingStepsPerPass; ++step)
+      if (minimum >= std::min(1.0, kComfortFactor * this->Threshold))
       {
-        if (!this->SmoothNode(node, minimum))
-        {
-          break;
-        }
-        moved = true;
-        minimum = this->CurrentMinimum(node);
+        return false; // every cell of the node is comfortably good: it need not make room
       }
-      return moved;
+      return this->SmoothNode(node, minimum);
     }
     bool moved = false;
     for (int step = 0; step < kUntangleStepsPerPass && inverted; ++step)
@@ -625,7 +672,12 @@ private:
         break;
       }
       moved = true;
-      this->IncidentMinimum(node, Load(this->Points, node.Id), inverted, nullptr);
+      inverted = false;
+      for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+      {
+        const ActiveCell& cell = this->Cells[this->Incident[i]];
+        inverted = inverted || (cell.Inverted && !cell.Degenerate);
+      }
     }
     return moved;
   }
@@ -635,7 +687,8 @@ private:
    * cells. Every alpha_k is an affine function of the node's position, so the objective is convex
    * and piecewise linear; its gradients are exact finite differences. A pattern search tries steps
    * of 2 to 1/32 edge lengths along the descent direction, each violated corner's own ascent
-   * direction, the Laplacian direction and the axes, and keeps the best point.
+   * direction, a descent that includes the nearly violated corners, the Laplacian direction and
+   * the 26 (2D: 8) lattice directions, and keeps the best point.
    */
   bool UntangleNode(FreeNode& node)
   {
@@ -657,7 +710,7 @@ private:
     {
       return false;
     }
-    const double objective0 = this->CornerMargins(node, x, &this->Margins0);
+    const double objective0 = this->CornerMargins(node, x, &this->Margins0, &this->Targets0);
     if (!(objective0 > 0.0) || !std::isfinite(objective0))
     {
       return false; // the inverted cells do not depend on this node's corners
@@ -692,12 +745,19 @@ private:
         this->AddDirection(this->CornerGradients[k]);
       }
     }
-    this->AddDirection(InPlane(node, laplacian - x));
-    for (int d = 0; d < node.Dimension; ++d)
+    // Descent that also pushes the nearly violated corners (alpha below 2 beta) away: steepest
+    // descent alone stalls at the kinks of the objective.
+    Vec3 wideDescent{ 0.0, 0.0, 0.0 };
+    for (std::size_t k = 0; k < corners; ++k)
     {
-      this->AddDirection(node.Basis[d]);
-      this->AddDirection(-1.0 * node.Basis[d]);
+      if (this->Margins0[k] < this->Targets0[k])
+      {
+        wideDescent = wideDescent + this->CornerGradients[k];
+      }
     }
+    this->AddDirection(wideDescent);
+    this->AddDirection(InPlane(node, laplacian - x));
+    this->AddLatticeDirections(node);
 
     double best = objective0 * (1.0 - kMinimumRelativeDecrease);
     Vec3 bestPosition = x;
@@ -711,7 +771,7 @@ private:
         {
           continue;
         }
-        const double objective = this->CornerMargins(node, y, nullptr);
+        const double objective = this->CornerMargins(node, y, nullptr, nullptr, best);
         if (objective < best)
         {
           best = objective;
@@ -730,7 +790,8 @@ private:
   /**
    * Max-min smoothing: the best of the points on the segment toward the Laplacian position and
    * of steps along the ascent direction of a soft minimum of the cells' SizeSkew (and of the worst
-   * cell's own), accepted only if no cell is inverted there and the minimum rises.
+   * cell's own), or if none of them improves, of short steps along the lattice directions;
+   * accepted only if no cell is inverted there and the minimum rises.
    */
   bool SmoothNode(FreeNode& node, double minimum0)
   {
@@ -742,18 +803,53 @@ private:
     {
       return false;
     }
-    this->Directions.clear();
+    std::size_t worst = 0;
+    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    {
+      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      if (!cell.Degenerate && cell.Quality == minimum0)
+      {
+        worst = i - node.CellBegin;
+        break;
+      }
+    }
+    double best = minimum0 + kMinimumGain;
+    Vec3 bestPosition = x;
+    bool found = false;
+    const auto tryPosition = [&](const Vec3& y)
+    {
+      if (!IsFinite(y))
+      {
+        return;
+      }
+      bool yInverted;
+      const double value = this->IncidentMinimum(node, y, yInverted, nullptr, best, worst);
+      if (!yInverted && value > best)
+      {
+        best = value;
+        bestPosition = y;
+        found = true;
+      }
+    };
+    const Vec3 towardLaplacian = InPlane(node, laplacian - x);
+    for (double fraction : kLaplacianFractions)
+    {
+      tryPosition(x + fraction * towardLaplacian);
+    }
 
-    // SizeSkew gradients by forward differences.
+    // SizeSkew gradients by forward differences from the cached values.
     const std::size_t count = node.CellEnd - node.CellBegin;
     this->Qualities0.resize(count);
     this->Margins.resize(count);
     this->QualityGradients.assign(count, Vec3{ 0.0, 0.0, 0.0 });
-    bool inverted;
-    this->IncidentMinimum(node, x, inverted, this->Qualities0.data());
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      this->Qualities0[i] = this->Cells[this->Incident[node.CellBegin + i]].Quality;
+    }
     const double delta = kGradientStep * h;
     for (int d = 0; d < node.Dimension; ++d)
     {
+      bool inverted;
       this->IncidentMinimum(node, x + delta * node.Basis[d], inverted, this->Margins.data());
       for (std::size_t i = 0; i < count; ++i)
       {
@@ -778,30 +874,7 @@ private:
         worstFound = true;
       }
     }
-
-    double best = minimum0 + kMinimumGain;
-    Vec3 bestPosition = x;
-    bool found = false;
-    const auto tryPosition = [&](const Vec3& y)
-    {
-      if (!IsFinite(y))
-      {
-        return;
-      }
-      bool yInverted;
-      const double value = this->IncidentMinimum(node, y, yInverted, nullptr);
-      if (!yInverted && value > best)
-      {
-        best = value;
-        bestPosition = y;
-        found = true;
-      }
-    };
-    const Vec3 towardLaplacian = InPlane(node, laplacian - x);
-    for (double fraction : kLaplacianFractions)
-    {
-      tryPosition(x + fraction * towardLaplacian);
-    }
+    this->Directions.clear();
     this->AddDirection(softAscent);
     this->AddDirection(worstAscent);
     for (const Vec3& direction : this->Directions)
@@ -809,6 +882,19 @@ private:
       for (double step : kAscentSteps)
       {
         tryPosition(x + (step * h) * direction);
+      }
+    }
+    if (!found)
+    {
+      // At a kink of the minimum (several worst cells): a fixed pattern of directions.
+      this->Directions.clear();
+      this->AddLatticeDirections(node);
+      for (const Vec3& direction : this->Directions)
+      {
+        for (double step : kPatternSteps)
+        {
+          tryPosition(x + (step * h) * direction);
+        }
       }
     }
     if (found)
@@ -991,13 +1077,14 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
   std::vector<std::int64_t> slot(numberOfPoints, -1);
   const auto nodesOf = [&](std::size_t c)
   {
-    return std::make_pair(mesh.Connectivity.data() + mesh.Offsets[c],
-      mesh.Connectivity.data() + mesh.Offsets[c + 1]);
+    return std::make_pair(
+      mesh.Connectivity.data() + mesh.Offsets[c], mesh.Connectivity.data() + mesh.Offsets[c + 1]);
   };
   bool anySeed = false;
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
-    if (!IsCovered(mesh, c) || !IsBadCell(CellQuality{ quality[c], inverted[c] != 0 }, parameters.Threshold))
+    if (!IsCovered(mesh, c) ||
+        !IsBadCell(CellQuality{ quality[c], inverted[c] != 0 }, parameters.Threshold))
     {
       continue;
     }
@@ -1158,7 +1245,7 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
     const double* p = points + 3 * nodes[i].Id;
-    if (!std::equal(p, p + 3, before.begin() + 3 * i))
+    if (std::memcmp(p, before.data() + 3 * i, 3 * sizeof(double)) != 0)
     {
       ++report.MovedNodes;
     }

@@ -23,10 +23,10 @@ namespace dgmf
  */
 struct CellMesh
 {
-  std::size_t NumberOfPoints = 0;        ///< node indices are in [0, NumberOfPoints)
-  std::vector<std::int64_t> Offsets;     ///< number of cells + 1 entries, Offsets[0] = 0
+  std::size_t NumberOfPoints = 0;         ///< node indices are in [0, NumberOfPoints)
+  std::vector<std::int64_t> Offsets;      ///< number of cells + 1 entries, Offsets[0] = 0
   std::vector<std::int64_t> Connectivity; ///< node indices
-  std::vector<CellShape> Shapes;         ///< one per cell (ignored where Covered is 0)
+  std::vector<CellShape> Shapes;          ///< one per cell (ignored where Covered is 0)
   /**
    * One per cell, or empty (all cells covered): 0 for a cell the size-skew metric does not cover
    * (polygon, polyhedron, quadratic cell, ...). Such a cell is never bad, and its nodes never
@@ -69,36 +69,36 @@ struct RepairReport
 /**
  * Repairs, in place, the cells of a deformed mesh that are inverted or whose SizeSkew
  * (ComputeSizeSkew against the same cell of the original mesh) is below
- * `parameters.Threshold`, by moving nearby interior nodes only.
+ * `parameters.Threshold`, by moving nearby interior nodes only (Documentation/repair.md).
  *
  * The free nodes are the interior nodes of the bad cells and of the cells up to
  * `parameters.Layers` node-neighbour layers around them. Nodes of cells the metric does not
  * cover, nodes shared by 2D and 3D cells, and nodes of 2D cells that are not coplanar stay
  * fixed, as do all boundary nodes (StaticBoundary, MovingBoundary): their coordinates are never
- * written. Then, in Gauss-Seidel passes over the free nodes in increasing index order, each node
- * takes one step of
- * - untangling, if one of its cells is inverted: Knupp's objective
- *   sum_k (|alpha_k - beta| - (alpha_k - beta)) over the corner Jacobians alpha_k of its cells
- *   (P. Knupp, "Hexahedral and tetrahedral mesh untangling", Engineering with Computers 17, 2001),
- *   with beta a tenth of the cell's original mean corner Jacobian, decreased by a pattern search
- *   along its descent direction and a few others; or else
- * - max-min smoothing: the node goes to the best of the points on the segment toward the mean of
- *   its edge neighbours (Laplacian) and along the ascent direction of its worst cells, if that
- *   raises the minimum SizeSkew of its cells (the "smart Laplacian" combined with optimisation-based
- *   smoothing of L. Freitag, "On combining Laplacian and optimization-based mesh smoothing
- *   techniques", AMD Trends in Unstructured Mesh Generation, 1997; Freitag and Plassmann,
- *   "Local optimization-based simplicial mesh untangling and improvement", IJNME 49, 2000).
+ * written. Then, in Gauss-Seidel passes over the free nodes in increasing index order, a node
+ * with an inverted cell takes up to 4 untangling steps, and a node whose worst cell scores below
+ * 1.5 x the threshold takes one smoothing step:
+ * - untangling: Knupp's objective sum_k (|alpha_k - beta| - (alpha_k - beta)) over the corner
+ *   Jacobians alpha_k of the node's cells (P. Knupp, "Hexahedral and tetrahedral mesh
+ *   untangling", Engineering with Computers 17, 2001), beta a tenth of the cell's original mean
+ *   corner Jacobian, decreased by a pattern search (descent directions and a fixed lattice);
+ * - smoothing: the node goes to the best of the points toward the mean of its edge neighbours
+ *   (Laplacian) and along the ascent direction of its worst cells, if that raises the minimum
+ *   SizeSkew of its cells: the "smart Laplacian" with an optimisation step of L. Freitag, "On
+ *   combining Laplacian and optimization-based mesh smoothing techniques" (AMD Trends in
+ *   Unstructured Mesh Generation, 1997), the max-min criterion of Freitag and Plassmann, "Local
+ *   optimization-based simplicial mesh untangling and improvement" (IJNME 49, 2000).
  * A move is accepted only if it strictly improves the objective, so a smoothing move never lowers
  * the minimum SizeSkew of the node's cells, and the minimum over the mesh never decreases.
  * The passes stop when no bad cell with a free node is left, when a pass moves no node, or after
  * `parameters.MaximumPasses`. Nodes of 2D cells move in their cells' plane (z is kept bit for bit
- * in a mesh at constant z).
+ * in a mesh at constant z). Threshold 0 only untangles.
  *
  * Deterministic: the passes run in the calling thread; `parallelFor` (SerialFor if empty) only
  * evaluates the quality of all cells, in fixed blocks, so the result does not depend on it.
- * Cost: one quality evaluation of every cell, a few scans of the connectivity (Layers + 2) and
- * one byte and one 8-byte index per node; the passes cost in proportion to the free region.
- * A mesh without bad cells is left untouched (bit for bit).
+ * Cost: one quality evaluation of every cell, Layers + 5 scans of the connectivity, 9 bytes per
+ * node and per cell; the passes cost in proportion to the free region. A mesh without bad cells
+ * is left untouched (bit for bit).
  *
  * @param mesh cells and their shapes
  * @param originalPoints 3 coordinates per node before deformation (the reference of SizeSkew)

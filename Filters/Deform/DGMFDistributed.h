@@ -1,0 +1,58 @@
+/**
+ * @file DGMFDistributed.h
+ * @brief The collective steps of a distributed run (pvbatch or pvserver under MPI): every process
+ * holds a piece of the mesh, and every process builds the same Delaunay graph of all the boundary
+ * nodes (private to the DGMF::Filters module).
+ */
+#ifndef DGMFDistributed_h
+#define DGMFDistributed_h
+
+#include "dgmf/SizeSkewQuality.h"
+
+#include <cstdint>
+#include <vector>
+
+class vtkMultiProcessController;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/// True when `controller` runs more than one process.
+bool IsDistributed(vtkMultiProcessController* controller);
+
+/// The dimension of the whole distributed mesh: 3 if any piece has a 3D cell; 2 if the pieces
+/// have only lower-dimensional cells and all their points have one z (-1 when the z differ); 0 for
+/// no cell at all. `z` receives that z. Collective.
+int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid* piece, double& z);
+
+/// True on every process when `ok` is true on every process. Collective.
+bool AllProcessesAgree(vtkMultiProcessController* controller, bool ok);
+
+/// One boundary node as it travels between processes.
+struct RemoteBoundaryNode
+{
+  double Position[3];
+  double Displacement[3];
+  std::int32_t Kind;   ///< dgmf::NodeKind
+  std::int32_t BodyId; ///< 0 when there is no body-id array
+};
+
+/**
+ * Sends this process's boundary nodes to every process and returns those of the other processes
+ * (in process order). Collective.
+ */
+std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
+  vtkMultiProcessController* controller, const std::vector<RemoteBoundaryNode>& local);
+
+/**
+ * The quality summary over all processes (each process's summary leaves out its ghost cells),
+ * and the sum of the outside-node counts; `ok` false on any process makes it false on all.
+ * Collective.
+ */
+void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::QualitySummary& summary,
+  std::size_t& outsideNodes);
+
+} // namespace dgmf_vtk
+
+#endif
