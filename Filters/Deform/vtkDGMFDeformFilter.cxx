@@ -15,6 +15,7 @@
 #include "dgmf/IDWDeformation.h"
 #include "dgmf/MultiBodyDeformation.h"
 #include "dgmf/RigidMotionFit.h"
+#include "dgmf/SubStepDeformation.h"
 #include "dgmf/RBFDeformation.h"
 
 #include "vtkCellArray.h"
@@ -30,6 +31,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -104,6 +106,22 @@ const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
     points->GetPoint(i, copy.data() + 3 * i);
   }
   return copy.data();
+}
+
+void AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
+}
+
+void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->InsertNextValue(static_cast<vtkIdType>(value));
+  fieldData->AddArray(array);
 }
 
 /// Boundary nodes that carry no facet weight (marked, but on no boundary facet) get the mean.
@@ -480,6 +498,77 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
     static_cast<dgmf::DampingFunction>(this->DampingFunction),
     static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out,
     cache.F->GetPointer(0), inputs.Parallel);
+  return true;
+}
+
+namespace
+{
+/// The grid's cells in the corner order of the size-skew metric (pixels and voxels reordered).
+dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)
+{
+  dgmf::CellMesh cells;
+  cells.NumberOfPoints = static_cast<std::size_t>(mesh->GetNumberOfPoints());
+  cells.Offsets.push_back(0);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    static const int pixel[4] = { 0, 1, 3, 2 };
+    static const int voxel[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+    const int type = mesh->GetCellType(c);
+    mesh->GetCellPoints(c, ids);
+    const int* order = type == VTK_PIXEL ? pixel : type == VTK_VOXEL ? voxel : nullptr;
+    dgmf::CellShape shape = dgmf::CellShape::Triangle;
+    bool covered = true;
+    switch (type)
+    {
+      case VTK_TRIANGLE: shape = dgmf::CellShape::Triangle; break;
+      case VTK_QUAD:
+      case VTK_PIXEL: shape = dgmf::CellShape::Quad; break;
+      case VTK_TETRA: shape = dgmf::CellShape::Tetra; break;
+      case VTK_HEXAHEDRON:
+      case VTK_VOXEL: shape = dgmf::CellShape::Hexahedron; break;
+      case VTK_WEDGE: shape = dgmf::CellShape::Wedge; break;
+      case VTK_PYRAMID: shape = dgmf::CellShape::Pyramid; break;
+      default: covered = false;
+    }
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      cells.Connectivity.push_back(ids->GetId(order && k < 8 ? order[k] : k));
+    }
+    cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
+    cells.Shapes.push_back(shape);
+    cells.Covered.push_back(covered ? 1 : 0);
+  }
+  return cells;
+}
+} // namespace
+
+bool vtkDGMFDeformFilter::DeformInSubSteps(
+  vtkUnstructuredGrid* input, Inputs& inputs, vtkFieldData* fieldData, double* out)
+{
+  if (inputs.LocalNodes < inputs.NumberOfNodes)
+  {
+    vtkErrorMacro("Sub-steps and the quality guard are not available in distributed runs.");
+    return false;
+  }
+  dgmf::SubStepParameters parameters;
+  parameters.SubSteps = this->SubSteps;
+  parameters.RepairThreshold = this->RepairThreshold;
+  parameters.Repair = this->RepairThreshold > 0.0;
+  parameters.RepairLayers = this->RepairLayers;
+  parameters.RepairPasses = this->RepairPasses;
+  parameters.Damping = static_cast<dgmf::DampingFunction>(this->DampingFunction);
+  parameters.StaticR0 = this->StaticBoundaryR0;
+  const dgmf::CellMesh cells = ToCellMesh(input);
+  const dgmf::SubStepReport report = dgmf::DeformInSubSteps(inputs.Dimension, inputs.Points,
+    inputs.NumberOfNodes, inputs.Kinds.data(), cells, inputs.Motion, inputs.Displacement,
+    parameters, out, inputs.Parallel);
+  AddFieldCount(fieldData, "SubStepsUsed", static_cast<std::size_t>(report.SubSteps));
+  AddFieldCount(fieldData, "RejectedSubSteps", static_cast<std::size_t>(report.RejectedSteps));
+  AddFieldCount(fieldData, "RepairedCellCount", report.RepairedCells);
+  AddFieldCount(fieldData, "UnrepairedCellCount", report.BadCellsLeft);
+  this->LastGraphSeconds += report.GraphSeconds;
+  this->LastLocationSeconds += report.LocationSeconds;
   return true;
 }
 
@@ -1181,22 +1270,6 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
 
 namespace
 {
-void AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fieldData->AddArray(array);
-}
-
-void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value)
-{
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->InsertNextValue(static_cast<vtkIdType>(value));
-  fieldData->AddArray(array);
-}
-
 const char* MethodName(int method)
 {
   static const char* const names[] = { "DGMF", "DGM", "DGRBF", "RBF", "IDW" };
@@ -1222,7 +1295,45 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   output->GetFieldData()->PassData(input->GetFieldData());
   vtkFieldData* fieldData = output->GetFieldData();
 
-  if (this->Method == DGMF && (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED))
+  const bool largeMotion = this->SubSteps != 1 || this->RepairThreshold > 0.0;
+  if (this->Method == DGMF && largeMotion)
+  {
+    if (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED)
+    {
+      vtkErrorMacro("Sub-steps and the quality guard work with one body whose motion is given by "
+                    "the properties (no body-id array, RigidMotionMode Properties).");
+      return false;
+    }
+    Cache& cache = *this->GraphCache;
+    if (!this->DeformInSubSteps(input, inputs, fieldData, out))
+    {
+      return false;
+    }
+    // r and f describe the input mesh's graph (the first step).
+    if (!cache.R || cache.StaticR0 != this->StaticBoundaryR0)
+    {
+      cache.R = vtkSmartPointer<vtkDoubleArray>::New();
+      cache.R->SetName("r");
+      cache.R->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      dgmf::ComputeBoundaryDistanceField(
+        *cache.Mapping, this->StaticBoundaryR0, cache.R->GetPointer(0), inputs.Parallel);
+      cache.StaticR0 = this->StaticBoundaryR0;
+      cache.F = nullptr;
+    }
+    if (!cache.F || cache.Damping != this->DampingFunction)
+    {
+      cache.F = vtkSmartPointer<vtkDoubleArray>::New();
+      cache.F->SetName("f");
+      cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      dgmf::ComputeDampingFactor(*cache.Mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
+        cache.R->GetPointer(0), cache.F->GetPointer(0), inputs.Parallel);
+      cache.Damping = this->DampingFunction;
+    }
+    output->GetPointData()->AddArray(cache.R);
+    output->GetPointData()->AddArray(cache.F);
+    AddFieldCount(fieldData, "OutsideNodeCount", cache.Mapping->GetNumberOfOutsideNodes());
+  }
+  else if (this->Method == DGMF && (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED))
   {
     if (!this->DeformBodies(inputs, fieldData, out))
     {
@@ -1412,6 +1523,9 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RBFGreedyMaximumPoints: " << this->RBFGreedyMaximumPoints << "\n";
   os << indent << "IDWAlpha: " << this->IDWAlpha << "\n";
   os << indent << "IDWReferenceLength: " << this->IDWReferenceLength << "\n";
+  os << indent << "SubSteps: " << this->SubSteps << "\n";
+  os << indent << "RepairThreshold: " << this->RepairThreshold << " (layers " << this->RepairLayers
+     << ", passes " << this->RepairPasses << ")\n";
   os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off") << "\n";
   os << indent << "FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -262,6 +262,35 @@ public:
 
   ///@{
   /**
+   * Large motions (DGMF, one body given by the properties): the motion is split into SubSteps
+   * steps along the moving nodes' path (the rotation about its axis, the translation and the
+   * displacement in equal parts); the Delaunay graph is rebuilt on the current mesh before each
+   * step. 0 = automatic: a step is halved until its mesh has no inverted cell and no SizeSkew below
+   * RepairThreshold, and the next step tries twice as far (at most 64 steps). Default: 1 (the
+   * paper's single step).
+   */
+  vtkSetClampMacro(SubSteps, int, 0, 1000);
+  vtkGetMacro(SubSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * The quality guard: after each step, the cells whose SizeSkew (relative to the input cell) is
+   * below RepairThreshold, and every inverted cell, are repaired by moving nearby interior nodes
+   * (untangling and optimisation-based smoothing, Documentation/repair.md); boundary nodes never
+   * move. 0 turns the guard off. RepairLayers: node-neighbour layers around the bad cells whose
+   * interior nodes may move; RepairPasses: most passes. Defaults: 0 (off), 2, 20.
+   */
+  vtkSetClampMacro(RepairThreshold, double, 0.0, 1.0);
+  vtkGetMacro(RepairThreshold, double);
+  vtkSetClampMacro(RepairLayers, int, 0, 100);
+  vtkGetMacro(RepairLayers, int);
+  vtkSetClampMacro(RepairPasses, int, 0, 10000);
+  vtkGetMacro(RepairPasses, int);
+  ///@}
+
+  ///@{
+  /**
    * Compute the SizeSkew and Inverted cell arrays and the quality summary. Default: on.
    */
   vtkSetMacro(ComputeQuality, bool);
@@ -357,6 +386,10 @@ protected:
   int RBFGreedyMaximumPoints = 2000;
   double IDWAlpha = 5.0;
   double IDWReferenceLength = 0.0;
+  int SubSteps = 1;
+  double RepairThreshold = 0.0;
+  int RepairLayers = 2;
+  int RepairPasses = 20;
   bool ComputeQuality = true;
   bool FailOnInvertedCells = false;
   int NumberOfThreads = 0;
@@ -379,6 +412,7 @@ private:
   struct BodyMotions;
   std::unique_ptr<BodyMotions> PerBodyMotions;
   bool DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out);
+  bool DeformInSubSteps(vtkUnstructuredGrid* input, Inputs& inputs, vtkFieldData* fieldData, double* out);
   bool GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs);
   void AppendRemoteBoundaryNodes(Inputs& inputs);
   void ReduceAcrossProcesses(int& status, vtkUnstructuredGrid* output);

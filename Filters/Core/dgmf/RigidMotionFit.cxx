@@ -131,6 +131,26 @@ double ResidualPass(const FittedMotion& fit, const double* points, const double*
 }
 } // namespace
 
+void RotationToAxisAngle(const double R[3][3], double axis[3], double& angleDegrees)
+{
+  Eigen::Matrix3d matrix;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      matrix(i, j) = R[i][j];
+    }
+  }
+  Eigen::Vector3d k;
+  double angle = 0.0;
+  ToAxisAngle(matrix, k, angle);
+  for (int c = 0; c < 3; ++c)
+  {
+    axis[c] = k[c];
+  }
+  angleDegrees = angle * 180.0 / 3.14159265358979323846;
+}
+
 bool CentreOnRotationAxis(FittedMotion& fit, double maximumDistance)
 {
   const double theta = fit.AngleDegrees * 3.14159265358979323846 / 180.0;

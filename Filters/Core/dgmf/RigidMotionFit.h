@@ -97,6 +97,9 @@ constexpr double RotationFitTolerance = 1e-12;
  */
 bool CentreOnRotationAxis(FittedMotion& fit, double maximumDistance);
 
+/// Axis (unit) and angle (degrees, in [0, 180]) of a rotation matrix R (row-major).
+void RotationToAxisAngle(const double R[3][3], double axis[3], double& angleDegrees);
+
 FittedMotion FitRigidMotion(int dimension, const double* points, const double* displacements,
   const std::int32_t* nodes, std::size_t count);
 
