@@ -41,6 +41,10 @@ const char* const Usage =
   "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
   "  --damping 1..7          damping function u1..u7 (default 1)\n"
   "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
+  "  --sub-steps N           large motions: N sub-steps, 0 = automatic (default 1: one step)\n"
+  "  --repair T              quality guard: repair cells with SizeSkew below T (default 0: off)\n"
+  "  --repair-layers N       layers around bad cells whose interior nodes may move (default 2)\n"
+  "  --repair-passes N       most repair passes per step (default 20)\n"
   "  --threads N             number of threads, 0 = all (default 0)\n"
   "  --no-quality            skip the SizeSkew quality metric\n";
 
@@ -163,6 +167,22 @@ int main(int argc, char* argv[])
     {
       filter->SetStaticBoundaryR0(v[0]);
     }
+    else if (option == "--sub-steps" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0)
+    {
+      filter->SetSubSteps(static_cast<int>(v[0]));
+    }
+    else if (option == "--repair" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0 && v[0] <= 1)
+    {
+      filter->SetRepairThreshold(v[0]);
+    }
+    else if (option == "--repair-layers" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0)
+    {
+      filter->SetRepairLayers(static_cast<int>(v[0]));
+    }
+    else if (option == "--repair-passes" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0)
+    {
+      filter->SetRepairPasses(static_cast<int>(v[0]));
+    }
     else if (option == "--threads" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0)
     {
       filter->SetNumberOfThreads(static_cast<int>(v[0]));
@@ -238,6 +258,14 @@ int main(int argc, char* argv[])
     std::cout << "; SizeSkew mean " << FieldValue(deformed, "SizeSkewMean") << ", minimum "
               << FieldValue(deformed, "SizeSkewMinimum") << ", inverted cells "
               << static_cast<long long>(FieldValue(deformed, "InvertedCellCount"));
+  }
+  if (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0)
+  {
+    std::cout << "; sub-steps " << static_cast<long long>(FieldValue(deformed, "SubStepsUsed"))
+              << ", cells repaired "
+              << static_cast<long long>(FieldValue(deformed, "RepairedCellCount"))
+              << ", left unrepaired "
+              << static_cast<long long>(FieldValue(deformed, "UnrepairedCellCount"));
   }
   std::cout << "; wrote " << outputPath << std::endl;
   return 0;

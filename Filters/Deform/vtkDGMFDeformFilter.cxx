@@ -562,7 +562,7 @@ bool vtkDGMFDeformFilter::DeformInSubSteps(
   const dgmf::CellMesh cells = ToCellMesh(input);
   const dgmf::SubStepReport report = dgmf::DeformInSubSteps(inputs.Dimension, inputs.Points,
     inputs.NumberOfNodes, inputs.Kinds.data(), cells, inputs.Motion, inputs.Displacement,
-    parameters, out, inputs.Parallel);
+    parameters, out, inputs.Parallel, this->GraphCache->Mapping.get());
   AddFieldCount(fieldData, "SubStepsUsed", static_cast<std::size_t>(report.SubSteps));
   AddFieldCount(fieldData, "RejectedSubSteps", static_cast<std::size_t>(report.RejectedSteps));
   AddFieldCount(fieldData, "RepairedCellCount", report.RepairedCells);

@@ -4,10 +4,10 @@
 #include "dgmf/DampingField.h"
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/RigidMotionFit.h"
-#include "dgmf/SizeSkewQuality.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -15,9 +15,33 @@ namespace dgmf
 {
 namespace
 {
-/// The rotation of `motion` as one rotation about an axis (degrees).
+/// The rotation of `motion` as one rotation about an axis (degrees). A rotation given about an
+/// axis, or by one Euler angle, keeps its angle (which may exceed 180 degrees, as the single step
+/// allows); a combination of Euler angles becomes the equivalent rotation of at most 180 degrees.
 void AxisAngleOf(const RigidMotion& motion, double axis[3], double& angleDegrees)
 {
+  if (!motion.HasEulerAngles())
+  {
+    motion.GetUnitAxis(axis);
+    angleDegrees = motion.AxisAngleDegrees;
+    return;
+  }
+  int nonZero = 0, last = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    if (motion.AnglesDegrees[c] != 0.0)
+    {
+      ++nonZero;
+      last = c;
+    }
+  }
+  if (nonZero == 1 && !motion.HasAxisRotation())
+  {
+    axis[0] = axis[1] = axis[2] = 0.0;
+    axis[last] = 1.0;
+    angleDegrees = motion.AnglesDegrees[last];
+    return;
+  }
   double R[3][3];
   motion.GetRotationMatrix(1.0, R);
   RotationToAxisAngle(R, axis, angleDegrees);
@@ -51,45 +75,12 @@ void PathPositions(const double* points, std::size_t n, const NodeKind* kinds, c
   }
 }
 
-/// Lowest SizeSkew against the original points, and whether a cell is inverted.
-void Quality(const CellMesh& cells, const double* original, const double* current, double& minimum,
-  bool& inverted)
-{
-  minimum = 1.0;
-  inverted = false;
-  double before[8 * 3], after[8 * 3];
-  for (std::size_t c = 0; c < cells.GetNumberOfCells(); ++c)
-  {
-    if (!cells.Covered.empty() && !cells.Covered[c])
-    {
-      continue;
-    }
-    const std::int64_t begin = cells.Offsets[c];
-    const int corners = static_cast<int>(cells.Offsets[c + 1] - begin);
-    if (corners > 8)
-    {
-      continue;
-    }
-    for (int k = 0; k < corners; ++k)
-    {
-      const auto p = static_cast<std::size_t>(cells.Connectivity[static_cast<std::size_t>(begin + k)]);
-      for (int d = 0; d < 3; ++d)
-      {
-        before[3 * k + d] = original[3 * p + d];
-        after[3 * k + d] = current[3 * p + d];
-      }
-    }
-    const CellQuality q = ComputeSizeSkew(cells.Shapes[c], before, after);
-    minimum = std::min(minimum, q.SizeSkew);
-    inverted = inverted || q.Inverted;
-  }
-}
 } // namespace
 
 SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t n,
   const NodeKind* kinds, const CellMesh& cells, const RigidMotion& motion,
   const double* displacement, const SubStepParameters& parameters, double* deformed,
-  const ParallelFor& parallelFor)
+  const ParallelFor& parallelFor, const DelaunayMapping* initialMapping)
 {
   if (parameters.SubSteps < 0 || parameters.MaximumSubSteps < 1)
   {
@@ -107,13 +98,38 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
 
   std::vector<double> current(points, points + 3 * n);
   std::vector<double> nextPath(3 * n), trial(3 * n), stepDisplacement(3 * n), f(n), r(n);
+  std::unique_ptr<DelaunayMapping> built;
+  const DelaunayMapping* mapping = initialMapping;
+  if (mapping)
+  {
+    if (mapping->GetNumberOfNodes() != n)
+    {
+      throw std::invalid_argument("sub-steps: the initial graph is not the mesh's");
+    }
+    ComputeBoundaryDistanceField(*mapping, parameters.StaticR0, r.data(), parallelFor);
+    ComputeDampingFactor(*mapping, parameters.Damping, r.data(), f.data(), parallelFor);
+  }
   const bool automatic = parameters.SubSteps == 0;
   const double minimumStep = automatic ? 1.0 / parameters.MaximumSubSteps : 0.0;
   double s = 0.0;
-  double step = automatic ? 1.0 : 1.0 / parameters.SubSteps;
+  double step = 1.0; // automatic mode: the next step's length in s
+  struct Attempt      // automatic mode: the last step rejected from the current mesh
+  {
+    std::vector<double> Points;
+    RepairReport Repair;
+    double Next = 0.0; // its end; 0: none
+  } rejected;
+  if (automatic)
+  {
+    rejected.Points.resize(3 * n); // swapped with trial: both keep 3 n values
+  }
   while (s < 1.0)
   {
-    const double next = std::min(1.0, s + step);
+    // Fixed mode: s_k = k / SubSteps exactly (a sum of 1/SubSteps would miss 1 by round-off).
+    double next = automatic ? std::min(1.0, s + step)
+                                  : (report.SubSteps + 1 == parameters.SubSteps
+                                        ? 1.0
+                                        : static_cast<double>(report.SubSteps + 1) / parameters.SubSteps);
     // The step's rigid part: the rotation by (next - s) angle about the current centre, and the
     // translation; the moving nodes' path decides the rest (the step's shape deformation).
     PathPositions(points, n, kinds, motion.Center, axis, angle, motion.Translation, displacement,
@@ -142,13 +158,18 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
         }
       }
     }
-    // The graph of the current boundary, and the DGMF step.
-    const DelaunayMapping mapping(dimension, current.data(), n, kinds, parallelFor);
-    report.GraphSeconds += mapping.GetGraphSeconds();
-    report.LocationSeconds += mapping.GetLocationSeconds();
-    ComputeBoundaryDistanceField(mapping, parameters.StaticR0, r.data(), parallelFor);
-    ComputeDampingFactor(mapping, parameters.Damping, r.data(), f.data(), parallelFor);
-    DeformDGMF(mapping, f.data(), rigid, stepDisplacement.data(), DeformationMode::DGMF2,
+    // The graph of the current boundary (built once per accepted mesh: a rejected step's retry
+    // and the first step, when the caller has the input's graph, reuse it), and the DGMF step.
+    if (!mapping)
+    {
+      built = std::make_unique<DelaunayMapping>(dimension, current.data(), n, kinds, parallelFor);
+      mapping = built.get();
+      report.GraphSeconds += mapping->GetGraphSeconds();
+      report.LocationSeconds += mapping->GetLocationSeconds();
+      ComputeBoundaryDistanceField(*mapping, parameters.StaticR0, r.data(), parallelFor);
+      ComputeDampingFactor(*mapping, parameters.Damping, r.data(), f.data(), parallelFor);
+    }
+    DeformDGMF(*mapping, f.data(), rigid, stepDisplacement.data(), DeformationMode::DGMF2,
       current.data(), trial.data(), parallelFor);
     // Moving nodes exactly on their path (the step's rigid part plus its residual gives it up to
     // round-off; the path itself does not accumulate round-off over the steps).
@@ -159,37 +180,54 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
         std::copy(nextPath.begin() + 3 * i, nextPath.begin() + 3 * i + 3, trial.begin() + 3 * i);
       }
     }
-    if (automatic && step > minimumStep)
+    // The quality guard (with 0 passes it only counts the bad cells), then in automatic mode the
+    // step's acceptance: a step is too long when the mesh it leaves, repaired if the guard is on,
+    // still has a bad cell, and halving it is worth trying.
+    RepairParameters repair;
+    repair.Threshold = parameters.RepairThreshold;
+    repair.Layers = parameters.RepairLayers;
+    repair.MaximumPasses = parameters.Repair ? parameters.RepairPasses : 0;
+    RepairReport repaired;
+    if (parameters.Repair || automatic)
     {
-      double minimum = 0.0;
-      bool inverted = false;
-      Quality(cells, points, trial.data(), minimum, inverted);
-      if (inverted || minimum < parameters.RepairThreshold)
+      repaired = RepairCells(cells, points, trial.data(), kinds, repair, parallelFor);
+    }
+    if (automatic && repaired.BadCellsAfter > 0)
+    {
+      if (rejected.Next > s && repaired.BadCellsAfter >= rejected.Repair.BadCellsAfter)
+      {
+        // Halving did not help (rotations: each step's damping field is nearly the same, so
+        // shorter steps add up to the same shear): take the longer step tried before.
+        trial.swap(rejected.Points);
+        repaired = rejected.Repair;
+        next = rejected.Next;
+      }
+      else if (step > minimumStep)
       {
         // Too far for one step: halve it and try again from the same mesh.
         ++report.RejectedSteps;
-        step = std::max(minimumStep, 0.5 * step);
+        rejected.Points.swap(trial);
+        rejected.Repair = repaired;
+        rejected.Next = next;
+        step = std::max(minimumStep, 0.5 * (next - s));
         continue;
       }
     }
     current.swap(trial);
+    mapping = nullptr; // the mesh moved: the next step needs its graph
+    rejected.Next = 0.0;
     if (parameters.Repair)
     {
-      RepairParameters repair;
-      repair.Threshold = parameters.RepairThreshold;
-      repair.Layers = parameters.RepairLayers;
-      repair.MaximumPasses = parameters.RepairPasses;
-      const RepairReport repaired =
-        RepairCells(cells, points, current.data(), kinds, repair, parallelFor);
       report.RepairedCells += repaired.BadCellsBefore;
-      report.BadCellsLeft = repaired.BadCellsAfter;
     }
+    report.BadCellsLeft = repaired.BadCellsAfter;
     ++report.SubSteps;
-    s = next;
     if (automatic)
     {
-      step = std::min(2.0 * step, 1.0);
+      // After a clean step, try twice as far; after a step accepted with bad cells, as far.
+      step = repaired.BadCellsAfter == 0 ? std::min(2.0 * (next - s), 1.0) : next - s;
     }
+    s = next;
     if (report.SubSteps + report.RejectedSteps > 4 * parameters.MaximumSubSteps)
     {
       throw std::runtime_error("sub-steps: too many steps (the motion could not be split finely enough)");

@@ -16,12 +16,15 @@
 
 namespace dgmf
 {
+class DelaunayMapping;
 
 /// Settings of DeformInSubSteps.
 struct SubStepParameters
 {
-  /// Number of sub-steps; 0: automatic (a step is halved, down to 1/MaximumSubSteps of the
-  /// motion, until its mesh passes the quality threshold, and the next step tries twice as far).
+  /// Number of sub-steps (step k ends at s = k / SubSteps); 0: automatic: a step is tried,
+  /// repaired when the guard is on, and halved (down to 1/MaximumSubSteps of the motion) while
+  /// the mesh it leaves still has an inverted cell or a cell below RepairThreshold; the step after
+  /// an accepted one tries twice as far. The first step tries the whole motion.
   int SubSteps = 1;
   int MaximumSubSteps = 64;  ///< most sub-steps in automatic mode
   double RepairThreshold = 0.0; ///< repair cells below this SizeSkew after each step (0: only inverted)
@@ -37,7 +40,7 @@ struct SubStepReport
 {
   int SubSteps = 0;             ///< steps taken
   int RejectedSteps = 0;        ///< automatic mode: steps tried, found too bad, and halved
-  std::size_t RepairedCells = 0; ///< bad cells before the repairs, summed over the steps
+  std::size_t RepairedCells = 0; ///< bad cells before the repairs, summed over the accepted steps
   std::size_t BadCellsLeft = 0;  ///< bad cells after the last repair
   double GraphSeconds = 0.0;    ///< summed over the steps
   double LocationSeconds = 0.0;
@@ -56,12 +59,13 @@ struct SubStepReport
  *
  * @param dimension 2 or 3; `points`, `deformed`: 3 per node; `displacement`: the shape
  * deformation d at the moving nodes (3 per node, may be null); `cells`: the mesh's cells for the
- * quality metric and the repair.
+ * quality metric and the repair; `initialMapping` (may be null): the graph of `points` with
+ * these `kinds`, if the caller has it (the first step then does not build it again).
  */
 SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const CellMesh& cells, const RigidMotion& motion,
   const double* displacement, const SubStepParameters& parameters, double* deformed,
-  const ParallelFor& parallelFor);
+  const ParallelFor& parallelFor, const DelaunayMapping* initialMapping = nullptr);
 
 } // namespace dgmf
 
