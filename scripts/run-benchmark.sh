@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The paper's Table 3 on this machine: builds (Release), runs Benchmarks/dgmf-benchmark on the
 # four mesh sizes with DGM, DGMF, DGRBF (and IDW on the two smallest) on 1 and 2 threads, and
-# writes Documentation/benchmark/benchmark.csv and Documentation/benchmark/README.md.
+# writes Documentation/benchmark/benchmark.csv and Documentation/benchmark/README.md; then the
+# large-motion options on the thin slab (Documentation/benchmark/large_motion.md).
 # Takes about 10 minutes on 2 cores; run it on a quiet machine.
 #   SIZES=0,1 METHODS=dgmf bash scripts/run-benchmark.sh   # a subset
 set -euo pipefail
@@ -21,3 +22,6 @@ mkdir -p "$OUT"
 } > "$OUT/machine.txt"
 /usr/bin/python3 "$SOURCE_DIR/Benchmarks/write_benchmark_page.py" "$OUT/benchmark.csv" "$OUT/machine.txt" "$OUT/README.md"
 echo "wrote $OUT/README.md"
+# Large motions (issue 10): sub-steps and the quality guard on the thin slab (about 30 s).
+/usr/bin/python3 "$SOURCE_DIR/Benchmarks/large_motion.py" "$BUILD_DIR" "$OUT/large_motion.md" \
+  --repeats "${REPEATS:-5}"
