@@ -265,9 +265,10 @@ public:
    * Large motions (DGMF, one body given by the properties): the motion is split into SubSteps
    * steps along the moving nodes' path (the rotation about its axis, the translation and the
    * displacement in equal parts); the Delaunay graph is rebuilt on the current mesh before each
-   * step. 0 = automatic: a step is halved until its mesh has no inverted cell and no SizeSkew below
-   * RepairThreshold, and the next step tries twice as far (at most 64 steps). Default: 1 (the
-   * paper's single step).
+   * step. 0 = automatic: the first step tries the whole motion; a step whose mesh (repaired, when
+   * the guard is on) still has an inverted cell or a SizeSkew below RepairThreshold is halved
+   * (down to 1/64 of the motion) while halving reduces the bad cells; after a clean step the next
+   * tries twice as far. Default: 1 (the paper's single step). See Documentation/large_motions.md.
    */
   vtkSetClampMacro(SubSteps, int, 0, 1000);
   vtkGetMacro(SubSteps, int);
