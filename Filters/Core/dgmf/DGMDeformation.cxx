@@ -34,32 +34,25 @@ std::size_t DeformDGM(const DelaunayMapping& mapping, const BoundaryMotion& boun
   const std::vector<double> vertexDisplacement = GatherVertexDisplacement(mapping, boundary);
   const DelaunayGraph& graph = mapping.GetGraph();
   const int n = graph.GetVerticesPerElement();
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      double d[3] = { 0.0, 0.0, 0.0 };
+      if (!mapping.IsBoundaryNode(i))
       {
-        double d[3] = { 0.0, 0.0, 0.0 };
-        if (!mapping.IsBoundaryNode(i))
+        const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+        const double* w = mapping.GetWeights(i);
+        for (int k = 0; k < n; ++k)
         {
-          const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
-          const double* w = mapping.GetWeights(i);
-          for (int k = 0; k < n; ++k)
-          {
-            const double* dk = vertexDisplacement.data() + 3 * static_cast<std::size_t>(vertices[k]);
-            d[0] += w[k] * dk[0];
-            d[1] += w[k] * dk[1];
-            d[2] += w[k] * dk[2];
-          }
+          const double* dk = vertexDisplacement.data() + 3 * static_cast<std::size_t>(vertices[k]);
+          d[0] += w[k] * dk[0];
+          d[1] += w[k] * dk[1];
+          d[2] += w[k] * dk[2];
         }
-        for (int c = 0; c < 3; ++c)
-        {
-          deformed[3 * i + c] = points[3 * i + c] + d[c];
-        }
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        deformed[3 * i + c] = points[3 * i + c] + d[c];
       }
     });
   // Boundary nodes: their own prescribed displacement (coincident nodes may differ from their vertex).

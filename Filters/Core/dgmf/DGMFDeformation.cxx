@@ -61,40 +61,33 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
   const std::vector<double> vertexDeformation =
     interpolate ? GatherVertexDeformation(mapping, displacement) : std::vector<double>();
   const DampedRigidMotion damped(motion);
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      const double* x = points + 3 * i;
+      double* out = deformed + 3 * i;
+      const NodeKind kind = mapping.GetNodeKind(i);
+      const double* own = displacement ? displacement + 3 * i : nullptr;
+      if (kind == NodeKind::MovingBoundary)
       {
-        const double* x = points + 3 * i;
-        double* out = deformed + 3 * i;
-        const NodeKind kind = mapping.GetNodeKind(i);
-        const double* own = displacement ? displacement + 3 * i : nullptr;
-        if (kind == NodeKind::MovingBoundary)
-        {
-          damped.Apply(1.0, x, own, out);
-        }
-        else if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
-        {
-          out[0] = x[0];
-          out[1] = x[1];
-          out[2] = x[2];
-        }
-        else if (!interpolate)
-        {
-          damped.Apply(f[i], x, mode == DeformationMode::DGMF1 ? own : nullptr, out);
-        }
-        else
-        {
-          double d[3];
-          InterpolateMovingDeformation(
-            mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
-          damped.Apply(f[i], x, d, out);
-        }
+        damped.Apply(1.0, x, own, out);
+      }
+      else if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
+      {
+        out[0] = x[0];
+        out[1] = x[1];
+        out[2] = x[2];
+      }
+      else if (!interpolate)
+      {
+        damped.Apply(f[i], x, mode == DeformationMode::DGMF1 ? own : nullptr, out);
+      }
+      else
+      {
+        double d[3];
+        InterpolateMovingDeformation(
+          mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
+        damped.Apply(f[i], x, d, out);
       }
     });
 }

@@ -100,60 +100,53 @@ void DeformDGRBF(const DelaunayMapping& mapping, const BoundaryMotion& boundary,
     });
 
   // Evaluate at every interior node.
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      const double* x = points + 3 * i;
+      double d[3] = { 0.0, 0.0, 0.0 };
+      if (!mapping.IsBoundaryNode(i))
       {
-        const double* x = points + 3 * i;
-        double d[3] = { 0.0, 0.0, 0.0 };
-        if (!mapping.IsBoundaryNode(i))
+        const std::int32_t e = mapping.GetElementOfNode(i);
+        const std::int32_t* v = graph.GetElement(e);
+        const double* c = coefficients.data() + static_cast<std::size_t>(e) * stride;
+        const double R = c[0];
+        double p[3] = { x[0], x[1], mapping.GetDimension() == 3 ? x[2] : 0.0 };
+        double denominator = 0.0;
+        for (int k = 0; k < n; ++k)
         {
-          const std::int32_t e = mapping.GetElementOfNode(i);
-          const std::int32_t* v = graph.GetElement(e);
-          const double* c = coefficients.data() + static_cast<std::size_t>(e) * stride;
-          const double R = c[0];
-          double p[3] = { x[0], x[1], mapping.GetDimension() == 3 ? x[2] : 0.0 };
-          double denominator = 0.0;
+          const double phi = Wendland(Distance(p, graph.GetVertexPosition(v[k])) / R);
+          const double* ck = c + 1 + 4 * k;
+          d[0] += ck[0] * phi;
+          d[1] += ck[1] * phi;
+          d[2] += ck[2] * phi;
+          denominator += ck[3] * phi;
+        }
+        if (denominator > 1e-12)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            d[k] /= denominator;
+          }
+        }
+        else
+        {
+          // Degenerate local fit (not seen in practice): fall back to DGM's barycentric mapping.
+          const double* w = mapping.GetWeights(i);
+          d[0] = d[1] = d[2] = 0.0;
           for (int k = 0; k < n; ++k)
           {
-            const double phi = Wendland(Distance(p, graph.GetVertexPosition(v[k])) / R);
-            const double* ck = c + 1 + 4 * k;
-            d[0] += ck[0] * phi;
-            d[1] += ck[1] * phi;
-            d[2] += ck[2] * phi;
-            denominator += ck[3] * phi;
-          }
-          if (denominator > 1e-12)
-          {
-            for (int k = 0; k < 3; ++k)
+            const double* dk = vertexDisplacement.data() + 3 * static_cast<std::size_t>(v[k]);
+            for (int c = 0; c < 3; ++c)
             {
-              d[k] /= denominator;
-            }
-          }
-          else
-          {
-            // Degenerate local fit (not seen in practice): fall back to DGM's barycentric mapping.
-            const double* w = mapping.GetWeights(i);
-            d[0] = d[1] = d[2] = 0.0;
-            for (int k = 0; k < n; ++k)
-            {
-              const double* dk = vertexDisplacement.data() + 3 * static_cast<std::size_t>(v[k]);
-              for (int c = 0; c < 3; ++c)
-              {
-                d[c] += w[k] * dk[c];
-              }
+              d[c] += w[k] * dk[c];
             }
           }
         }
-        for (int k = 0; k < 3; ++k)
-        {
-          deformed[3 * i + k] = x[k] + d[k];
-        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        deformed[3 * i + k] = x[k] + d[k];
       }
     });
   ApplyBoundaryMotion(boundary, points, deformed);

@@ -23,52 +23,38 @@ void ComputeBoundaryDistanceField(
       mapping.GetVertexKind(static_cast<std::int32_t>(v)) == NodeKind::MovingBoundary ? 0.0 : staticR0;
   }
   const int n = graph.GetVerticesPerElement();
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      if (mapping.IsBoundaryNode(i))
       {
-        if (mapping.IsBoundaryNode(i))
-        {
-          r[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 0.0 : staticR0;
-          continue;
-        }
-        const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
-        const double* w = mapping.GetWeights(i);
-        double sum = 0.0;
-        for (int k = 0; k < n; ++k)
-        {
-          sum += w[k] * vertexR0[static_cast<std::size_t>(vertices[k])];
-        }
-        r[i] = std::min(sum, staticR0); // round-off must not leave [0, r0s]
+        r[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 0.0 : staticR0;
+        return;
       }
+      const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+      const double* w = mapping.GetWeights(i);
+      double sum = 0.0;
+      for (int k = 0; k < n; ++k)
+      {
+        sum += w[k] * vertexR0[static_cast<std::size_t>(vertices[k])];
+      }
+      r[i] = std::min(sum, staticR0); // round-off must not leave [0, r0s]
     });
 }
 
 void ComputeDampingFactor(const DelaunayMapping& mapping, DampingFunction u, const double* r,
   double* f, const ParallelFor& parallelFor)
 {
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      if (mapping.IsBoundaryNode(i))
       {
-        if (mapping.IsBoundaryNode(i))
-        {
-          f[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 1.0 : 0.0;
-        }
-        else
-        {
-          f[i] = EvaluateDamping(u, r[i]);
-        }
+        f[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 1.0 : 0.0;
+      }
+      else
+      {
+        f[i] = EvaluateDamping(u, r[i]);
       }
     });
 }

@@ -9,6 +9,7 @@
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -42,6 +43,25 @@ class DelaunayMapping
 public:
   /// Number of nodes per location block.
   static constexpr std::size_t BlockSize = 4096;
+
+  /**
+   * Calls body(i) for every node i, in the fixed blocks of BlockSize nodes that run in parallel
+   * (the split does not depend on the number of threads, so neither does the result).
+   */
+  template <typename Body>
+  void ForEachNode(const ParallelFor& parallelFor, Body&& body) const
+  {
+    const std::size_t nodes = this->GetNumberOfNodes();
+    ForEachBlock(parallelFor, (nodes + BlockSize - 1) / BlockSize,
+      [&](std::size_t block)
+      {
+        const std::size_t end = std::min(block * BlockSize + BlockSize, nodes);
+        for (std::size_t i = block * BlockSize; i < end; ++i)
+        {
+          body(i);
+        }
+      });
+  }
 
   /**
    * @param dimension 2 (x, y used; all nodes in a plane z = constant) or 3

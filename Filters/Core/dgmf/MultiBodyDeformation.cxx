@@ -140,31 +140,24 @@ void ComputeBodyDampingFactor(const DelaunayMapping& mapping, const std::int32_t
   const std::vector<std::int32_t> vertexBody = VertexBodies(mapping, bodyIds);
   const DelaunayGraph& graph = mapping.GetGraph();
   const int n = graph.GetVerticesPerElement();
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      if (mapping.IsBoundaryNode(i))
       {
-        if (mapping.IsBoundaryNode(i))
-        {
-          f[i] = bodyIds[i] == body ? 1.0 : 0.0;
-          continue;
-        }
-        const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
-        std::int32_t present[4];
-        const int count = ElementBodies(vertexBody.data(), vertices, n, present);
-        if (std::find(present, present + count, body) == present + count)
-        {
-          f[i] = 0.0;
-          continue;
-        }
-        f[i] = EvaluateDamping(
-          u, BodyDistance(vertexBody.data(), vertices, mapping.GetWeights(i), n, body, staticR0));
+        f[i] = bodyIds[i] == body ? 1.0 : 0.0;
+        return;
       }
+      const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+      std::int32_t present[4];
+      const int count = ElementBodies(vertexBody.data(), vertices, n, present);
+      if (std::find(present, present + count, body) == present + count)
+      {
+        f[i] = 0.0;
+        return;
+      }
+      f[i] = EvaluateDamping(
+        u, BodyDistance(vertexBody.data(), vertices, mapping.GetWeights(i), n, body, staticR0));
     });
 }
 
@@ -210,88 +203,81 @@ void DeformMultiBody(const DelaunayMapping& mapping, const std::int32_t* bodyIds
 
   const DelaunayGraph& graph = mapping.GetGraph();
   const int n = graph.GetVerticesPerElement();
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blocks = (nodes + DelaunayMapping::BlockSize - 1) / DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  mapping.ForEachNode(parallelFor,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * DelaunayMapping::BlockSize;
-      const std::size_t end = std::min(begin + DelaunayMapping::BlockSize, nodes);
-      for (std::size_t i = begin; i < end; ++i)
+      const double* x = points + 3 * i;
+      double* out = deformed + 3 * i;
+      const NodeKind kind = mapping.GetNodeKind(i);
+      if (kind == NodeKind::MovingBoundary)
       {
-        const double* x = points + 3 * i;
-        double* out = deformed + 3 * i;
-        const NodeKind kind = mapping.GetNodeKind(i);
-        if (kind == NodeKind::MovingBoundary)
-        {
-          const auto k = static_cast<std::size_t>(bodyIds[i] - 1);
-          const double* own = bodies[k].Displacement ? bodies[k].Displacement + 3 * i : nullptr;
-          damped[k].Apply(1.0, x, own, out);
-          if (dampingFactor)
-          {
-            dampingFactor[i] = 1.0;
-          }
-          continue;
-        }
-        std::copy(x, x + 3, out);
+        const auto k = static_cast<std::size_t>(bodyIds[i] - 1);
+        const double* own = bodies[k].Displacement ? bodies[k].Displacement + 3 * i : nullptr;
+        damped[k].Apply(1.0, x, own, out);
         if (dampingFactor)
         {
-          dampingFactor[i] = 0.0;
+          dampingFactor[i] = 1.0;
         }
-        if (kind == NodeKind::StaticBoundary)
+        return;
+      }
+      std::copy(x, x + 3, out);
+      if (dampingFactor)
+      {
+        dampingFactor[i] = 0.0;
+      }
+      if (kind == NodeKind::StaticBoundary)
+      {
+        return;
+      }
+      const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
+      const double* w = mapping.GetWeights(i);
+      std::int32_t present[4];
+      const int count = ElementBodies(vertexBody.data(), vertices, n, present);
+      double displacement[3] = { 0.0, 0.0, 0.0 };
+      double sumF = 0.0;
+      int contributing = 0;
+      for (int b = 0; b < count; ++b)
+      {
+        const std::int32_t body = present[b];
+        const double f =
+          EvaluateDamping(u, BodyDistance(vertexBody.data(), vertices, w, n, body, staticR0));
+        if (f == 0.0)
         {
           continue;
         }
-        const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
-        const double* w = mapping.GetWeights(i);
-        std::int32_t present[4];
-        const int count = ElementBodies(vertexBody.data(), vertices, n, present);
-        double displacement[3] = { 0.0, 0.0, 0.0 };
-        double sumF = 0.0;
-        int contributing = 0;
-        for (int b = 0; b < count; ++b)
+        const auto k = static_cast<std::size_t>(body - 1);
+        const double* own = bodies[k].Displacement ? bodies[k].Displacement + 3 * i : nullptr;
+        double moved[3];
+        if (own && mode == DeformationMode::DGMF2)
         {
-          const std::int32_t body = present[b];
-          const double f =
-            EvaluateDamping(u, BodyDistance(vertexBody.data(), vertices, w, n, body, staticR0));
-          if (f == 0.0)
-          {
-            continue;
-          }
-          const auto k = static_cast<std::size_t>(body - 1);
-          const double* own = bodies[k].Displacement ? bodies[k].Displacement + 3 * i : nullptr;
-          double moved[3];
-          if (own && mode == DeformationMode::DGMF2)
-          {
-            double d[3];
-            BodyDeformation(vertexBody.data(), vertexDeformation.data(), vertices, w, n, body, d);
-            damped[k].Apply(f, x, d, moved);
-          }
-          else
-          {
-            damped[k].Apply(f, x, mode == DeformationMode::DGMF1 ? own : nullptr, moved);
-          }
-          if (contributing++ == 0)
-          {
-            std::copy(moved, moved + 3, out); // one body: its motion itself, no round-off
-          }
-          for (int c = 0; c < 3; ++c)
-          {
-            displacement[c] += moved[c] - x[c];
-          }
-          sumF += f;
+          double d[3];
+          BodyDeformation(vertexBody.data(), vertexDeformation.data(), vertices, w, n, body, d);
+          damped[k].Apply(f, x, d, moved);
         }
-        if (contributing > 1)
+        else
         {
-          for (int c = 0; c < 3; ++c)
-          {
-            out[c] = x[c] + displacement[c];
-          }
+          damped[k].Apply(f, x, mode == DeformationMode::DGMF1 ? own : nullptr, moved);
         }
-        if (dampingFactor)
+        if (contributing++ == 0)
         {
-          dampingFactor[i] = std::min(1.0, sumF);
+          std::copy(moved, moved + 3, out); // one body: its motion itself, no round-off
         }
+        for (int c = 0; c < 3; ++c)
+        {
+          displacement[c] += moved[c] - x[c];
+        }
+        sumF += f;
+      }
+      if (contributing > 1)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          out[c] = x[c] + displacement[c];
+        }
+      }
+      if (dampingFactor)
+      {
+        dampingFactor[i] = std::min(1.0, sumF);
       }
     });
 }
