@@ -15,6 +15,7 @@
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -37,56 +38,6 @@ using Cb3 = CGAL::Triangulation_cell_base_with_info_3<std::int32_t, Kernel,
   CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Tds3 = CGAL::Triangulation_data_structure_3<Vb3, Cb3>;
 using Delaunay3 = CGAL::Delaunay_triangulation_3<Kernel, Tds3>;
-
-/**
- * A point whose barycentric coordinates are all >= -WeightTolerance is taken to be in the element:
- * points on a shared face (common in structured meshes, where nodes lie on the segments between
- * boundary nodes) come out a few ulps negative in one of the two elements, and must not send every
- * such node on a walk. Such weights are clamped to 0 afterwards.
- */
-constexpr double WeightTolerance = 1e-12;
-
-inline double Cross2(const double a[2], const double b[2])
-{
-  return a[0] * b[1] - a[1] * b[0];
-}
-
-inline void Cross3(const double a[3], const double b[3], double c[3])
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline double Dot3(const double a[3], const double b[3])
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/// Makes weights non-negative and summing to 1 (used for points outside the hull or round-off).
-void ClampWeights(double* w, int n)
-{
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i)
-  {
-    w[i] = w[i] > 0.0 ? w[i] : 0.0;
-    sum += w[i];
-  }
-  if (sum > 0.0)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      w[i] /= sum;
-    }
-  }
-  else
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      w[i] = 1.0 / n;
-    }
-  }
-}
 
 void CheckFinite(const double* xyz, std::size_t count, int dimension)
 {
@@ -282,14 +233,15 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
         this->ElementVertices.push_back(faces[e]->vertex(k)->info());
       }
     }
-    this->ElementNeighbors.reserve(this->ElementVertices.size());
-    for (const Delaunay2::Face_handle& f : faces)
+    this->Records.resize(faces.size());
+    for (std::size_t e = 0; e < faces.size(); ++e)
     {
       for (int k = 0; k < 3; ++k)
       {
-        const Delaunay2::Face_handle g = f->neighbor(k);
-        this->ElementNeighbors.push_back(t.is_infinite(g) ? -1 : g->info());
+        const Delaunay2::Face_handle g = faces[e]->neighbor(k);
+        this->Records[e].Neighbors[k] = t.is_infinite(g) ? -1 : g->info();
       }
+      this->Records[e].Neighbors[3] = -1;
     }
   }
   else
@@ -339,12 +291,12 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
         c->info() = -1;
       }
     }
-    this->ElementNeighbors.reserve(this->ElementVertices.size());
-    for (const Delaunay3::Cell_handle& c : cells)
+    this->Records.resize(cells.size());
+    for (std::size_t e = 0; e < cells.size(); ++e)
     {
       for (int k = 0; k < 4; ++k)
       {
-        this->ElementNeighbors.push_back(c->neighbor(k)->info());
+        this->Records[e].Neighbors[k] = cells[e]->neighbor(k)->info();
       }
     }
   }
@@ -361,18 +313,21 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
     }
   }
   // Each element's corner coordinates, stored with the element: a walk step reads one record
-  // instead of chasing four vertex indices.
+  // instead of chasing the vertex indices.
   const std::size_t elements = this->GetNumberOfElements();
-  this->ElementCorners.resize(elements * 3 * static_cast<std::size_t>(n));
   for (std::size_t e = 0; e < elements; ++e)
   {
     const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
-    for (int k = 0; k < n; ++k)
+    WalkRecord& record = this->Records[e];
+    for (int k = 0; k < 4; ++k)
     {
-      std::copy(this->GetVertexPosition(v[k]), this->GetVertexPosition(v[k]) + 3,
-        this->ElementCorners.begin() + (e * n + k) * 3);
+      for (int c = 0; c < 3; ++c)
+      {
+        record.Corners[k][c] = k < n ? this->GetVertexPosition(v[k])[c] : 0.0;
+      }
     }
   }
+  this->BuildSeedGrid();
   // Elements that are flat in the original coordinates: artefacts of coplanar or cospherical
   // boundary points, given a tiny volume by the perturbation.
   this->FlatElements = this->CountInvertedElements(nullptr);
@@ -382,64 +337,99 @@ DelaunayGraph::~DelaunayGraph() = default;
 
 bool DelaunayGraph::ComputeWeights(std::int32_t e, const double p[3], double w[4]) const
 {
-  const double* corners = this->ElementCorners.data() + static_cast<std::size_t>(e) * 3 * (this->Dimension + 1);
-  double total;
-  if (this->Dimension == 2)
+  return BarycentricWeights(this->Records[static_cast<std::size_t>(e)], this->Dimension, p, w);
+}
+
+void DelaunayGraph::BuildSeedGrid()
+{
+  // A uniform grid with about one cell per 4 elements over the graph's bounding box.
+  const std::size_t elements = this->GetNumberOfElements();
+  double lower[3] = { 0, 0, 0 }, upper[3] = { 0, 0, 0 };
+  for (std::size_t v = 0; v < this->GetNumberOfVertices(); ++v)
   {
-    double rel[3][2];
-    for (int k = 0; k < 3; ++k)
+    const double* x = this->GetVertexPosition(static_cast<std::int32_t>(v));
+    for (int c = 0; c < this->Dimension; ++c)
     {
-      const double* x = corners + 3 * k;
-      rel[k][0] = x[0] - p[0];
-      rel[k][1] = x[1] - p[1];
+      lower[c] = v == 0 || x[c] < lower[c] ? x[c] : lower[c];
+      upper[c] = v == 0 || x[c] > upper[c] ? x[c] : upper[c];
     }
-    // Twice the signed areas of the sub-triangles opposite each vertex.
-    w[0] = Cross2(rel[1], rel[2]);
-    w[1] = Cross2(rel[2], rel[0]);
-    w[2] = Cross2(rel[0], rel[1]);
-    total = w[0] + w[1] + w[2];
-    if (!(total > 0.0))
+  }
+  double volume = 1.0;
+  for (int c = 0; c < this->Dimension; ++c)
+  {
+    volume *= std::max(upper[c] - lower[c], 1e-300);
+  }
+  const double cellsWanted = std::max(1.0, static_cast<double>(elements) / 4.0);
+  const double size = std::pow(volume / cellsWanted, 1.0 / this->Dimension);
+  this->SeedInverseSize = size > 0.0 && std::isfinite(1.0 / size) ? 1.0 / size : 1.0;
+  std::size_t total = 1;
+  for (int c = 0; c < 3; ++c)
+  {
+    this->SeedOrigin[c] = lower[c];
+    this->SeedCells[c] = c < this->Dimension
+      ? std::clamp<std::int64_t>(static_cast<std::int64_t>((upper[c] - lower[c]) * this->SeedInverseSize) + 1, 1, 1024)
+      : 1;
+    total *= static_cast<std::size_t>(this->SeedCells[c]);
+  }
+  // Each cell gets the first element (in the Hilbert order) whose centroid lies in it...
+  this->SeedGrid.assign(total, -1);
+  const int n = this->Dimension + 1;
+  for (std::size_t e = 0; e < elements; ++e)
+  {
+    double centroid[3] = { 0, 0, 0 };
+    for (int k = 0; k < n; ++k)
     {
-      return false;
+      for (int c = 0; c < 3; ++c)
+      {
+        centroid[c] += this->Records[e].Corners[k][c] / n;
+      }
     }
-    const double inv = 1.0 / total;
-    w[0] *= inv;
-    w[1] *= inv;
-    w[2] *= inv;
-    return w[0] >= -WeightTolerance && w[1] >= -WeightTolerance && w[2] >= -WeightTolerance;
+    std::int32_t& cell = this->SeedGrid[this->SeedCell(centroid)];
+    cell = cell < 0 ? static_cast<std::int32_t>(e) : cell;
   }
-  double a[3], b[3], c[3], d[3];
-  const double* x0 = corners;
-  const double* x1 = corners + 3;
-  const double* x2 = corners + 6;
-  const double* x3 = corners + 9;
-  for (int k = 0; k < 3; ++k)
+  // ... and empty cells the element of a filled neighbour, by sweeps along each axis.
+  const std::int64_t stride[3] = { 1, this->SeedCells[0], this->SeedCells[0] * this->SeedCells[1] };
+  for (int c = 0; c < 3; ++c)
   {
-    a[k] = x0[k] - p[k];
-    b[k] = x1[k] - p[k];
-    c[k] = x2[k] - p[k];
-    d[k] = x3[k] - p[k];
+    for (std::size_t i = 0; i < total; ++i)
+    {
+      const std::int64_t along = (static_cast<std::int64_t>(i) / stride[c]) % this->SeedCells[c];
+      if (this->SeedGrid[i] < 0 && along > 0)
+      {
+        this->SeedGrid[i] = this->SeedGrid[i - stride[c]];
+      }
+    }
+    for (std::size_t i = total; i-- > 0;)
+    {
+      const std::int64_t along = (static_cast<std::int64_t>(i) / stride[c]) % this->SeedCells[c];
+      if (this->SeedGrid[i] < 0 && along + 1 < this->SeedCells[c])
+      {
+        this->SeedGrid[i] = this->SeedGrid[i + stride[c]];
+      }
+    }
   }
-  // Six times the signed volumes of the sub-tetrahedra opposite each vertex.
-  double cd[3], ab[3];
-  Cross3(c, d, cd);
-  Cross3(a, b, ab);
-  w[0] = Dot3(b, cd);
-  w[1] = -Dot3(a, cd);
-  w[2] = Dot3(ab, d);
-  w[3] = -Dot3(ab, c);
-  total = w[0] + w[1] + w[2] + w[3];
-  if (!(total > 0.0))
+  for (std::int32_t& cell : this->SeedGrid)
   {
-    return false;
+    cell = cell < 0 ? 0 : cell; // only when there are no elements near at all
   }
-  const double inv = 1.0 / total;
-  for (int k = 0; k < 4; ++k)
+}
+
+std::size_t DelaunayGraph::SeedCell(const double p[3]) const
+{
+  std::size_t index = 0, stride = 1;
+  for (int c = 0; c < 3; ++c)
   {
-    w[k] *= inv;
+    const double x = (p[c] - this->SeedOrigin[c]) * this->SeedInverseSize;
+    const std::int64_t i = x > 0.0 ? std::min<std::int64_t>(static_cast<std::int64_t>(std::min(x, 1e9)), this->SeedCells[c] - 1) : 0;
+    index += static_cast<std::size_t>(i) * stride;
+    stride *= static_cast<std::size_t>(this->SeedCells[c]);
   }
-  return w[0] >= -WeightTolerance && w[1] >= -WeightTolerance && w[2] >= -WeightTolerance &&
-    w[3] >= -WeightTolerance;
+  return index;
+}
+
+std::int32_t DelaunayGraph::GetSeedElement(const double p[3]) const
+{
+  return this->SeedGrid[this->SeedCell(p)];
 }
 
 bool DelaunayGraph::Walk(const double p[3], std::int32_t start, int maximumSteps, Location& result) const
@@ -456,12 +446,7 @@ bool DelaunayGraph::Walk(const double p[3], std::int32_t start, int maximumSteps
       ClampWeights(result.Weights, n);
       return true;
     }
-    int most = 0;
-    for (int k = 1; k < n; ++k)
-    {
-      most = result.Weights[k] < result.Weights[most] ? k : most;
-    }
-    const std::int32_t next = this->GetNeighbors(e)[most];
+    const std::int32_t next = this->Records[static_cast<std::size_t>(e)].Neighbors[MostNegativeWeight(result.Weights, this->Dimension)];
     if (next < 0)
     {
       return false; // leaving the hull: CGAL decides exactly
@@ -478,6 +463,12 @@ DelaunayGraph::Location DelaunayGraph::Locate(const double p[3], std::int32_t hi
   {
     return result;
   }
+  return this->LocateExactly(p, hint);
+}
+
+DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int32_t hint) const
+{
+  Location result;
   std::int32_t element = -1;
   if (this->Dimension == 2)
   {
@@ -567,8 +558,7 @@ std::size_t DelaunayGraph::GetMemorySize() const
     this->PointOfVertex.capacity() * sizeof(std::int32_t) +
     (this->VertexPositions.capacity() + this->OriginalPositions.capacity()) * sizeof(double) +
     this->ElementVertices.capacity() * sizeof(std::int32_t) +
-    this->ElementNeighbors.capacity() * sizeof(std::int32_t) +
-    this->ElementCorners.capacity() * sizeof(double);
+    this->Records.capacity() * sizeof(WalkRecord) + this->SeedGrid.capacity() * sizeof(std::int32_t);
   if (this->Triangulation2)
   {
     const Delaunay2& t = this->Triangulation2->Triangulation;

@@ -5,6 +5,8 @@
 #ifndef dgmf_DelaunayGraph_h
 #define dgmf_DelaunayGraph_h
 
+#include "dgmf/WalkRecord.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -116,8 +118,34 @@ public:
   /// Elements across the faces of element `e`: neighbour k is opposite vertex k (-1 on the hull).
   const std::int32_t* GetNeighbors(std::int32_t e) const
   {
-    return this->ElementNeighbors.data() + static_cast<std::size_t>(e) * (this->Dimension + 1);
+    return this->Records[static_cast<std::size_t>(e)].Neighbors;
   }
+
+  /// Corners and neighbours of element `e`, as the walk reads them.
+  const WalkRecord& GetWalkRecord(std::int32_t e) const
+  {
+    return this->Records[static_cast<std::size_t>(e)];
+  }
+
+  /// Asks the processor to start loading element `e`'s record (no effect on results).
+  void PrefetchElement(std::int32_t e) const
+  {
+    __builtin_prefetch(&this->Records[static_cast<std::size_t>(e)]);
+    __builtin_prefetch(reinterpret_cast<const char*>(&this->Records[static_cast<std::size_t>(e)]) + 64);
+  }
+
+  /**
+   * An element near `p` from which to start a walk: the graph keeps a uniform grid over its
+   * bounding box, with an element whose centroid lies in (or, for empty grid cells, near) each
+   * grid cell. It depends only on the graph, so walks started from it are deterministic.
+   */
+  std::int32_t GetSeedElement(const double p[3]) const;
+
+  /**
+   * Locates `p` with CGAL's exact walk, starting from element `hint` (or CGAL's default start
+   * when `hint` < 0). Points outside the hull are handled as in Locate().
+   */
+  Location LocateExactly(const double p[3], std::int32_t hint) const;
 
   /// Steps of the visibility walk before CGAL takes over.
   static constexpr int MaximumWalkSteps = 4096;
@@ -137,8 +165,14 @@ private:
   std::vector<double> OriginalPositions;
   std::size_t FlatElements = 0;
   std::vector<std::int32_t> ElementVertices;
-  std::vector<std::int32_t> ElementNeighbors;
-  std::vector<double> ElementCorners; ///< 3 coordinates of each corner of each element
+  std::vector<WalkRecord> Records; ///< corners and neighbours of each element
+  /// Seed grid (see GetSeedElement): origin, inverse cell size, cells per axis, element per cell.
+  double SeedOrigin[3] = { 0, 0, 0 };
+  double SeedInverseSize = 1.0;
+  std::int64_t SeedCells[3] = { 1, 1, 1 };
+  std::vector<std::int32_t> SeedGrid;
+  void BuildSeedGrid();
+  std::size_t SeedCell(const double p[3]) const;
 };
 
 } // namespace dgmf

@@ -1,5 +1,7 @@
 #include "dgmf/DelaunayMapping.h"
 
+#include "dgmf/BlockLocation.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -9,60 +11,6 @@
 
 namespace dgmf
 {
-namespace
-{
-/// Steps of the walk from the previous node's element before the recent nodes are consulted.
-constexpr int ShortWalkSteps = 16;
-
-/// The last located nodes of a block (a ring buffer), to restart a walk near a node after a jump.
-class RecentNodes
-{
-public:
-  void Add(const double p[3], std::int32_t element)
-  {
-    Entry& entry = this->Entries[this->Next];
-    entry.Position[0] = p[0];
-    entry.Position[1] = p[1];
-    entry.Position[2] = p[2];
-    entry.Element = element;
-    this->Next = (this->Next + 1) % Capacity;
-    this->Count = this->Count < Capacity ? this->Count + 1 : Capacity;
-  }
-
-  /// Element of the recent node nearest to p, or `fallback` when there is none.
-  std::int32_t Nearest(const double p[3], std::int32_t fallback) const
-  {
-    double best = std::numeric_limits<double>::infinity();
-    std::int32_t element = fallback;
-    for (std::size_t k = 0; k < this->Count; ++k)
-    {
-      const Entry& entry = this->Entries[k];
-      const double dx = entry.Position[0] - p[0];
-      const double dy = entry.Position[1] - p[1];
-      const double dz = entry.Position[2] - p[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
-      if (d2 < best)
-      {
-        best = d2;
-        element = entry.Element;
-      }
-    }
-    return element;
-  }
-
-private:
-  static constexpr std::size_t Capacity = 256;
-  struct Entry
-  {
-    double Position[3];
-    std::int32_t Element;
-  };
-  std::array<Entry, Capacity> Entries;
-  std::size_t Next = 0;
-  std::size_t Count = 0;
-};
-} // namespace
-
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const ParallelFor& parallelFor)
 {
@@ -131,51 +79,29 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   // Steps 2-3: the element and barycentric coordinates of every interior node.
   const int n = dimension + 1;
   this->NodeElement.assign(numberOfNodes, 0);
-  this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
+  // Not zero-filled: every node's weights are written below (boundary nodes here, interior nodes
+  // by their block), which saves a pass over the largest array and spreads its first touch over
+  // the threads.
+  this->Weights.reset(new double[numberOfNodes * static_cast<std::size_t>(n)]);
   for (std::size_t b = 0; b < this->BoundaryNodes.size(); ++b)
   {
     const auto node = static_cast<std::size_t>(this->BoundaryNodes[b]);
     this->NodeElement[node] = -vertexOfPoint[b] - 1;
+    std::fill(this->Weights.get() + node * n, this->Weights.get() + node * n + n, 0.0);
     this->Weights[node * n] = 1.0;
   }
 
   const std::size_t blocks = (numberOfNodes + BlockSize - 1) / BlockSize;
   std::vector<std::size_t> outsidePerBlock(blocks, 0);
   std::vector<std::size_t> walksPerBlock(blocks, 0);
-  const DelaunayGraph& graph = *this->Graph;
   ForEachBlock(parallelFor, blocks,
     [&](std::size_t block)
     {
       const std::size_t begin = block * BlockSize;
-      const std::size_t end = std::min(begin + BlockSize, numberOfNodes);
-      // Hints: the previous node's element; when a short walk from it fails (a jump in the
-      // numbering, such as a new row of a structured block), the element of the nearest of the
-      // block's most recent nodes.
-      RecentNodes recent;
-      std::int32_t hint = -1;
-      std::size_t outside = 0;
-      std::size_t walks = 0;
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        if (IsBoundary(kinds[i]))
-        {
-          continue;
-        }
-        const double p[3] = { points[3 * i], points[3 * i + 1], dimension == 3 ? points[3 * i + 2] : 0.0 };
-        DelaunayGraph::Location location;
-        if (hint < 0 || !graph.Walk(p, hint, ShortWalkSteps, location))
-        {
-          location = graph.Locate(p, recent.Nearest(p, hint));
-          ++walks;
-        }
-        outside += location.Outside ? 1 : 0;
-        hint = location.Element;
-        recent.Add(p, hint);
-        this->NodeElement[i] = location.Element;
-        std::copy(location.Weights, location.Weights + n, this->Weights.begin() + i * n);
-      }
-      outsidePerBlock[block] = outside;
-      walksPerBlock[block] = walks;
+      const BlockLocationCounts counts = LocateBlock(*this->Graph, points, kinds, begin,
+        std::min(begin + BlockSize, numberOfNodes), this->NodeElement.data(), this->Weights.get());
+      outsidePerBlock[block] = counts.Outside;
+      walksPerBlock[block] = counts.Restarts;
     });
   for (std::size_t block = 0; block < blocks; ++block)
   {
@@ -188,7 +114,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
 std::size_t DelaunayMapping::GetMemorySize() const
 {
   return this->Graph->GetMemorySize() + this->BoundaryNodes.capacity() * sizeof(std::int32_t) +
-    this->NodeElement.capacity() * sizeof(std::int32_t) + this->Weights.capacity() * sizeof(double) +
+    this->NodeElement.capacity() * sizeof(std::int32_t) + this->NodeElement.size() * static_cast<std::size_t>(this->GetDimension() + 1) * sizeof(double) +
     this->Kinds.capacity() * sizeof(NodeKind) + this->VertexKind.capacity() * sizeof(NodeKind) + this->VertexNode.capacity() * sizeof(std::int32_t);
 }
 

@@ -26,13 +26,12 @@ namespace dgmf
  * It depends only on the original node positions and on which nodes are boundary nodes of which
  * kind, so one mapping serves every later motion of the same mesh (time steps, design loops).
  *
- * Nodes are located in mesh order, in fixed blocks of BlockSize nodes: the first node of a block
- * is located by a CGAL walk from CGAL's default start; every other node walks (a few steps of a
- * visibility walk) from the element of the previous node, and after a jump in the numbering from
- * the element of the nearest of the block's 256 most recent nodes (DelaunayGraph::Locate, with
- * CGAL as the exact fallback). Mesh generators number nodes with spatial coherence, so most nodes
- * are found in a step or two. Because blocks are fixed, the result does not depend on the number
- * of threads.
+ * Nodes are located in fixed blocks of BlockSize nodes (LocateBlock): each block is cut into
+ * runs of consecutive nodes; the first node of a run walks from the graph's seed element, every
+ * other node from the element of the run's previous node (mesh generators number nodes with
+ * spatial coherence, so most nodes are found in a step or two), with CGAL as the exact fallback.
+ * The runs of a block walk in turn so that their cache misses overlap. Because blocks and runs
+ * are fixed, the result does not depend on the number of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
@@ -93,7 +92,7 @@ public:
   /// Barycentric coordinates of interior node `i` in its element (dim+1 values).
   const double* GetWeights(std::size_t i) const
   {
-    return this->Weights.data() + i * static_cast<std::size_t>(this->GetDimension() + 1);
+    return this->Weights.get() + i * static_cast<std::size_t>(this->GetDimension() + 1);
   }
 
   /// Kind of graph vertex `v`: StaticBoundary or MovingBoundary.
@@ -103,7 +102,8 @@ public:
 
   /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
-  /// Number of interior nodes not found by a short walk from the previous node's element.
+  /// Number of walks started from the graph's seed grid: the first node of each run, and the
+  /// nodes not found by a short walk from the previous node's element.
   std::size_t GetNumberOfWalks() const { return this->Walks; }
   /// Number of moving graph vertices.
   std::size_t GetNumberOfMovingVertices() const { return this->MovingVertices; }
@@ -123,7 +123,7 @@ private:
   std::vector<NodeKind> Kinds;
   /// >= 0: element of an interior node; < 0: -(vertex + 1) for a boundary node.
   std::vector<std::int32_t> NodeElement;
-  std::vector<double> Weights;
+  std::unique_ptr<double[]> Weights; ///< dim+1 per node
   std::vector<NodeKind> VertexKind;
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
