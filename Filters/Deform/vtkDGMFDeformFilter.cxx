@@ -260,7 +260,41 @@ struct vtkDGMFDeformFilter::Cache
   // The mesh's boundary facets depend on the cells only.
   ContentKey Cells;
   std::unique_ptr<dgmf_vtk::BoundaryFacets> Facets;
+  // The points of the last output, reused by the next execution when nobody else holds them.
+  vtkSmartPointer<vtkPoints> OutputPoints;
 };
+
+namespace
+{
+/**
+ * The output points for `n` nodes: the last output's points when only this filter and its output
+ * hold them (no downstream filter, shallow copy or array reference from user code: their data
+ * would change underneath them), otherwise new ones. A repeated deformation of a large mesh then
+ * writes into memory that is already mapped: first touches of new pages cost about as much as
+ * the mapping itself here.
+ */
+vtkSmartPointer<vtkPoints> OutputPointsFor(
+  vtkSmartPointer<vtkPoints>& last, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, std::size_t n)
+{
+  if (last && input->GetPoints() != last.GetPointer())
+  {
+    const int holders = output->GetPoints() == last.GetPointer() ? 2 : 1;
+    vtkDataArray* data = last->GetData();
+    if (last->GetReferenceCount() == holders && data->GetReferenceCount() == 1 &&
+      vtkDoubleArray::SafeDownCast(data) && data->GetNumberOfComponents() == 3 &&
+      data->GetNumberOfTuples() == static_cast<vtkIdType>(n))
+    {
+      return last;
+    }
+  }
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  last = vtkSmartPointer<vtkPoints>::New();
+  last->SetData(coordinates);
+  return last;
+}
+} // namespace
 
 /// Everything one execution works from, checked.
 struct vtkDGMFDeformFilter::Inputs
@@ -1283,9 +1317,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   const Clock::time_point start = Clock::now();
   const std::size_t n = inputs.NumberOfNodes;
   const double* displacement = inputs.Displacement;
-  vtkNew<vtkDoubleArray> newCoordinates;
-  newCoordinates->SetNumberOfComponents(3);
-  newCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  const vtkSmartPointer<vtkPoints> newPoints = OutputPointsFor(this->GraphCache->OutputPoints, input, output, n);
+  vtkDoubleArray* newCoordinates = vtkDoubleArray::SafeDownCast(newPoints->GetData());
   double* out = newCoordinates->GetPointer(0);
 
   // Copy the input's structure and arrays first; the method adds its own arrays and values.
@@ -1472,8 +1505,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
       }
     }
   }
-  vtkNew<vtkPoints> newPoints;
-  newPoints->SetData(newCoordinates);
+  newCoordinates->Modified();
+  newPoints->Modified();
   output->SetPoints(newPoints);
 
   if (this->ComputeQuality)

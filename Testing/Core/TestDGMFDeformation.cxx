@@ -2,6 +2,7 @@
 #include "SyntheticNodes.h"
 
 #include "dgmf/DGMFDeformation.h"
+#include "dgmf/DampedRotation.h"
 #include "dgmf/DampingField.h"
 #include "dgmf/DelaunayMapping.h"
 
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -301,4 +303,47 @@ TEST(DGMFDeformation, SameBitsWithOneAndTwoThreads)
   const Result threaded = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, TwoThreadFor);
   EXPECT_EQ(std::memcmp(serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(serial.F.data(), threaded.F.data(), serial.F.size() * sizeof(double)), 0);
+}
+
+TEST(DGMFDeformation, TwoNodesAtOnceGiveTheSameBitsAsOneAtATime)
+{
+  // DeformDGMF moves interior nodes two at a time (ApplyPair); the result must be Apply's, bit
+  // for bit, for Euler angles, an axis rotation, with and without a node's own displacement.
+  dgmf::RigidMotion euler;
+  euler.AnglesDegrees[0] = 17.0;
+  euler.AnglesDegrees[1] = -230.0;
+  euler.AnglesDegrees[2] = 600.0;
+  euler.Translation[0] = 0.3;
+  euler.Center[1] = -1.5;
+  dgmf::RigidMotion axis;
+  axis.Axis[0] = 1.0;
+  axis.Axis[1] = 2.0;
+  axis.Axis[2] = -0.5;
+  axis.AxisAngleDegrees = 95.0;
+  axis.Translation[2] = -2.0;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), coordinate(-20.0, 20.0);
+  for (const dgmf::RigidMotion& motion : { euler, axis })
+  {
+    const dgmf::DampedRigidMotion damped(motion);
+    for (int t = 0; t < 2000; ++t)
+    {
+      // f in [0, 1], with the table's end points and exact entries among them.
+      const double f[2] = { t % 50 == 0 ? 1.0 : unit(random), t % 7 == 0 ? 0.25 : unit(random) };
+      double x[2][3], d[2][3], single[2][3], pair[2][3];
+      for (int l = 0; l < 2; ++l)
+        for (int c = 0; c < 3; ++c)
+        {
+          x[l][c] = coordinate(random);
+          d[l][c] = coordinate(random) * 0.01;
+        }
+      const bool withD = t % 2 == 1;
+      for (int l = 0; l < 2; ++l)
+      {
+        damped.Apply(f[l], x[l], withD ? d[l] : nullptr, single[l]);
+      }
+      damped.ApplyPair(f, x[0], x[1], withD ? d[0] : nullptr, withD ? d[1] : nullptr, pair[0], pair[1]);
+      ASSERT_EQ(std::memcmp(single, pair, sizeof(single)), 0) << "f = " << f[0] << ", " << f[1];
+    }
+  }
 }

@@ -343,6 +343,52 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
   EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
 }
 
+TEST(DeformFilter, RepeatedDeformationReusesOutputPointsOnlyWhenNobodyElseHoldsThem)
+{
+  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto deformed = [&mesh](double angle)
+  {
+    vtkNew<vtkDGMFDeformFilter> fresh;
+    fresh->SetInputData(mesh);
+    fresh->SetBoundaryMarkerArrayName("BoundaryMarker");
+    fresh->SetRotationAngles(0, 0, angle);
+    fresh->Update();
+    return Fingerprint(fresh->GetOutput());
+  };
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetRotationAngles(0, 0, 30);
+  filter->Update();
+  vtkPoints* first = filter->GetOutput()->GetPoints();
+  const vtkMTimeType firstTime = filter->GetOutput()->GetMTime();
+
+  // Nobody else holds the points: the next motion is written into them, and is right.
+  filter->SetRotationAngles(0, 0, 40);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetPoints(), first);
+  EXPECT_GT(filter->GetOutput()->GetMTime(), firstTime);
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == deformed(40));
+
+  // A shallow copy (what a downstream filter keeps) holds them: they must not change.
+  vtkNew<vtkUnstructuredGrid> kept;
+  kept->ShallowCopy(filter->GetOutput());
+  filter->SetRotationAngles(0, 0, 50);
+  filter->Update();
+  EXPECT_NE(filter->GetOutput()->GetPoints(), kept->GetPoints());
+  EXPECT_TRUE(Fingerprint(kept) == deformed(40));
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == deformed(50));
+
+  // A reference to the coordinate array alone (as numpy keeps) protects it too.
+  vtkSmartPointer<vtkDataArray> coordinates = filter->GetOutput()->GetPoints()->GetData();
+  const double before = coordinates->GetComponent(100, 0);
+  filter->SetRotationAngles(0, 0, 60);
+  filter->Update();
+  EXPECT_NE(filter->GetOutput()->GetPoints()->GetData(), coordinates.GetPointer());
+  EXPECT_EQ(coordinates->GetComponent(100, 0), before);
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == deformed(60));
+}
+
 TEST(DeformFilter, SameBitsWithOneAndTwoThreads)
 {
   auto mesh = ReadData("sphere_in_box.vtu", SpherePoints, SphereCells);

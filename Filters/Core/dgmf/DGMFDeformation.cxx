@@ -61,33 +61,57 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
   const std::vector<double> vertexDeformation =
     interpolate ? GatherVertexDeformation(mapping, displacement) : std::vector<double>();
   const DampedRigidMotion damped(motion);
-  mapping.ForEachNode(parallelFor,
-    [&](std::size_t i)
+  const std::size_t nodes = mapping.GetNumberOfNodes();
+  const std::size_t blockSize = DelaunayMapping::BlockSize;
+  ForEachBlock(parallelFor, (nodes + blockSize - 1) / blockSize,
+    [&](std::size_t block)
     {
-      const double* x = points + 3 * i;
-      double* out = deformed + 3 * i;
-      const NodeKind kind = mapping.GetNodeKind(i);
-      const double* own = displacement ? displacement + 3 * i : nullptr;
-      if (kind == NodeKind::MovingBoundary)
+      const std::size_t end = std::min(block * blockSize + blockSize, nodes);
+      // Interior nodes damped by the motion alone go by two (ApplyPair, the same bits as Apply):
+      // `pending` is one waiting for its partner.
+      std::size_t pending = end;
+      for (std::size_t i = block * blockSize; i < end; ++i)
       {
-        damped.Apply(1.0, x, own, out);
+        const double* x = points + 3 * i;
+        double* out = deformed + 3 * i;
+        const NodeKind kind = mapping.GetNodeKind(i);
+        const double* own = displacement ? displacement + 3 * i : nullptr;
+        if (kind == NodeKind::MovingBoundary)
+        {
+          damped.Apply(1.0, x, own, out);
+        }
+        else if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
+        {
+          out[0] = x[0];
+          out[1] = x[1];
+          out[2] = x[2];
+        }
+        else if (!interpolate)
+        {
+          if (pending == end)
+          {
+            pending = i;
+            continue;
+          }
+          const double pair[2] = { f[pending], f[i] };
+          const bool withOwn = mode == DeformationMode::DGMF1 && displacement;
+          damped.ApplyPair(pair, points + 3 * pending, x, withOwn ? displacement + 3 * pending : nullptr,
+            withOwn ? own : nullptr, deformed + 3 * pending, out);
+          pending = end;
+        }
+        else
+        {
+          double d[3];
+          InterpolateMovingDeformation(
+            mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
+          damped.Apply(f[i], x, d, out);
+        }
       }
-      else if (kind == NodeKind::StaticBoundary || f[i] == 0.0)
+      if (pending < end)
       {
-        out[0] = x[0];
-        out[1] = x[1];
-        out[2] = x[2];
-      }
-      else if (!interpolate)
-      {
-        damped.Apply(f[i], x, mode == DeformationMode::DGMF1 ? own : nullptr, out);
-      }
-      else
-      {
-        double d[3];
-        InterpolateMovingDeformation(
-          mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
-        damped.Apply(f[i], x, d, out);
+        damped.Apply(f[pending], points + 3 * pending,
+          mode == DeformationMode::DGMF1 && displacement ? displacement + 3 * pending : nullptr,
+          deformed + 3 * pending);
       }
     });
 }

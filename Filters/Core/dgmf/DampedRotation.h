@@ -70,10 +70,76 @@ public:
     }
   }
 
+  /**
+   * Apply() for two nodes at once, in the processor's two-lane double-precision vectors: the
+   * same operations in the same order as Apply(), so the same bits, at about the cost of one.
+   * `d0` and `d1` may be null.
+   */
+  void ApplyPair(const double f[2], const double* x0, const double* x1, const double* d0,
+    const double* d1, double* out0, double* out1) const
+  {
+    const Pair fv = { f[0], f[1] };
+    int k[2];
+    const Pair frac = TableSplit(fv, k);
+    Pair y[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      y[c] = Pair{ x0[c], x1[c] } - this->Motion.Center[c];
+    }
+    if (this->HasAxisRotation)
+    {
+      Pair s, c;
+      this->AxisRotation.SinCos(k, frac, s, c);
+      const double* a = this->UnitAxis;
+      const Pair kv = (1.0 - c) * (a[0] * y[0] + a[1] * y[1] + a[2] * y[2]);
+      const Pair w[3] = { a[1] * y[2] - a[2] * y[1], a[2] * y[0] - a[0] * y[2],
+        a[0] * y[1] - a[1] * y[0] };
+      for (int i = 0; i < 3; ++i)
+      {
+        y[i] = c * y[i] + s * w[i] + kv * a[i];
+      }
+    }
+    for (int j = 0; j < this->NumberOfAxes; ++j)
+    {
+      const Axis& axis = this->Axes[j];
+      Pair s, c;
+      axis.SinCos(k, frac, s, c);
+      const Pair u = y[axis.I];
+      const Pair v = y[axis.J];
+      y[axis.I] = c * u - s * v;
+      y[axis.J] = s * u + c * v;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const Pair d = { d0 ? d0[c] : 0.0, d1 ? d1[c] : 0.0 };
+      const Pair hasD = { d0 ? 1.0 : 0.0, d1 ? 1.0 : 0.0 };
+      // As in Apply: c + y + f t + (d ? f d : 0); f d is 0 exactly when there is no d.
+      const Pair r = this->Motion.Center[c] + y[c] + fv * this->Motion.Translation[c] + hasD * (fv * d);
+      out0[c] = r[0];
+      out1[c] = r[1];
+    }
+  }
+
   /// Number of table intervals per angle.
   static constexpr int Steps = 1024;
 
 private:
+  /// Two doubles processed together (GCC and Clang vector extension: SSE2 on x86-64).
+  typedef double Pair __attribute__((vector_size(16)));
+
+  /// f * Steps split into a table entry k and a remainder, as Axis::SinCos(double) does.
+  static Pair TableSplit(Pair f, int k[2])
+  {
+    const Pair scaled = f * static_cast<double>(Steps);
+    for (int l = 0; l < 2; ++l)
+    {
+      k[l] = static_cast<int>(scaled[l]);
+      k[l] = k[l] < 0 ? 0 : (k[l] > Steps ? Steps : k[l]);
+    }
+    const Pair kd = { static_cast<double>(k[0]), static_cast<double>(k[1]) };
+    return scaled - kd;
+  }
+
   struct Axis
   {
     int I = 0, J = 1;                  ///< the plane of the rotation
@@ -96,6 +162,22 @@ private:
       const double cr = 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       const double sk = this->Sin[static_cast<std::size_t>(k)];
       const double ck = this->Cos[static_cast<std::size_t>(k)];
+      s = sk * cr + ck * sr;
+      c = ck * cr - sk * sr;
+    }
+
+    /// SinCos for two factors at once (the same operations, lane by lane), given their table
+    /// entries `k` and remainders `frac` (TableSplit: the same for every angle).
+    void SinCos(const int k[2], Pair frac, Pair& s, Pair& c) const
+    {
+      const Pair rho = this->AnglePerStep * frac;
+      const Pair r2 = rho * rho;
+      constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
+      constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
+      const Pair sr = rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
+      const Pair cr = 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
+      const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])], this->Sin[static_cast<std::size_t>(k[1])] };
+      const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])], this->Cos[static_cast<std::size_t>(k[1])] };
       s = sk * cr + ck * sr;
       c = ck * cr - sk * sr;
     }
