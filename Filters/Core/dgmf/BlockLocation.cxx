@@ -9,6 +9,9 @@ namespace
 /// Interleaved walks per block: enough to keep several cache misses in flight.
 constexpr std::size_t Lanes = 8;
 
+/// How many nodes ahead of a run's current node its coordinates and outputs are prefetched.
+constexpr std::size_t PrefetchNodes = 4;
+
 /// Steps of a walk from the previous node's element before it restarts from the seed grid.
 constexpr int ShortWalkSteps = 16;
 
@@ -63,6 +66,10 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     lane.Node = nextInterior(lane.Node + 1, lane.End);
     if (lane.Node < lane.End)
     {
+      // The run's next nodes are read and written a few walks from now: start loading them.
+      const std::size_t ahead = std::min(lane.Node + PrefetchNodes, lane.End - 1);
+      __builtin_prefetch(points + 3 * ahead);
+      __builtin_prefetch(weights + ahead * static_cast<std::size_t>(n), 1);
       loadPoint(lane);
       lane.Element = element;
       lane.Steps = 0;
@@ -81,6 +88,10 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     lane.Node = nextInterior(first, lane.End);
     if (lane.Node < lane.End)
     {
+      // The run's next nodes are read and written a few walks from now: start loading them.
+      const std::size_t ahead = std::min(lane.Node + PrefetchNodes, lane.End - 1);
+      __builtin_prefetch(points + 3 * ahead);
+      __builtin_prefetch(weights + ahead * static_cast<std::size_t>(n), 1);
       loadPoint(lane);
       startFromSeed(lane);
       ++active;
@@ -95,12 +106,23 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     double total[Lanes];
     bool inside[Lanes];
     std::int32_t next[Lanes];
-    for (std::size_t j = 0; j < active; ++j)
+    std::size_t j = 0;
+    if (dimension == 3)
     {
-      const WalkRecord& record = graph.GetWalkRecord(lanes[j].Element);
-      total[j] = SubVolumes(record, dimension, lanes[j].P, w[j]);
+      for (; j + 1 < active; j += 2)
+      {
+        SubVolumesPair3(graph.GetWalkRecord(lanes[j].Element), graph.GetWalkRecord(lanes[j + 1].Element),
+          lanes[j].P, lanes[j + 1].P, w[j], w[j + 1], total[j], total[j + 1]);
+      }
+    }
+    for (; j < active; ++j)
+    {
+      total[j] = SubVolumes(graph.GetWalkRecord(lanes[j].Element), dimension, lanes[j].P, w[j]);
+    }
+    for (j = 0; j < active; ++j)
+    {
       inside[j] = IsInside(w[j], total[j], dimension);
-      next[j] = record.Neighbors[MostNegativeWeight(w[j], dimension)];
+      next[j] = graph.GetWalkRecord(lanes[j].Element).Neighbors[MostNegativeWeight(w[j], dimension)];
     }
     // ... then the decisions.
     for (std::size_t k = 0; k < active; ++k)

@@ -132,7 +132,8 @@ std::vector<Handle> HilbertOrderedElements(Iterator begin, Iterator end, int cor
     }
     using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel,
       CGAL::Pointer_property_map<Kernel::Point_2>::type>;
-    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())));
+    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())),
+    CGAL::Hilbert_sort_middle_policy());
   }
   std::vector<Handle> ordered;
   ordered.reserve(handles.size());
@@ -158,7 +159,8 @@ std::vector<Handle> HilbertOrderedCells(Iterator begin, Iterator end)
   std::iota(order.begin(), order.end(), 0);
   using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel,
     CGAL::Pointer_property_map<Kernel::Point_3>::type>;
-  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())));
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())),
+    CGAL::Hilbert_sort_middle_policy());
   std::vector<Handle> ordered;
   ordered.reserve(handles.size());
   for (std::size_t k : order)

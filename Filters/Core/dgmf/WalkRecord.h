@@ -70,6 +70,42 @@ inline double SubVolumes(const WalkRecord& record, int dimension, const double p
 }
 
 /**
+ * SubVolumes() of two points in two 3D elements at once, in the processor's two-lane
+ * double-precision vectors (GCC and Clang vector extension): the same operations in the same
+ * order, so the same bits, at about the cost of one.
+ */
+inline void SubVolumesPair3(const WalkRecord& r0, const WalkRecord& r1, const double p0[3],
+  const double p1[3], double w0[4], double w1[4], double& total0, double& total1)
+{
+  typedef double Pair __attribute__((vector_size(16)));
+  Pair rel[4][3];
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rel[k][c] = Pair{ r0.Corners[k][c], r1.Corners[k][c] } - Pair{ p0[c], p1[c] };
+    }
+  }
+  const Pair(&a)[3] = rel[0];
+  const Pair(&b)[3] = rel[1];
+  const Pair(&c)[3] = rel[2];
+  const Pair(&d)[3] = rel[3];
+  const Pair cd[3] = { c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2], c[0] * d[1] - c[1] * d[0] };
+  const Pair ab[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  const Pair w[4] = { b[0] * cd[0] + b[1] * cd[1] + b[2] * cd[2],
+    -(a[0] * cd[0] + a[1] * cd[1] + a[2] * cd[2]), ab[0] * d[0] + ab[1] * d[1] + ab[2] * d[2],
+    -(ab[0] * c[0] + ab[1] * c[1] + ab[2] * c[2]) };
+  const Pair total = w[0] + w[1] + w[2] + w[3];
+  for (int k = 0; k < 4; ++k)
+  {
+    w0[k] = w[k][0];
+    w1[k] = w[k][1];
+  }
+  total0 = total[0];
+  total1 = total[1];
+}
+
+/**
  * True when the unnormalised coordinates `w` (with sum `total`) put the point in the element up to
  * round-off: total > 0 and every w[k] >= -WeightTolerance * total. Bitwise, without branches (the
  * walk interleaves several of these).
