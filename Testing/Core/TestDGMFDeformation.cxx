@@ -347,3 +347,34 @@ TEST(DGMFDeformation, TwoNodesAtOnceGiveTheSameBitsAsOneAtATime)
     }
   }
 }
+
+TEST(DGMFDeformation, DampedRotationMatchesSinAndCosForSmallAndLargeAngles)
+{
+  // Small angles use a shorter Taylor series (DampedRigidMotion::ShortSeriesLimit): both series
+  // must give the rotation by f * angle to round-off.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double degrees : { 0.5, 3.0, 28.0, 57.0, 60.0, 170.0, -300.0, 719.0 })
+  {
+    dgmf::RigidMotion motion;
+    motion.AnglesDegrees[2] = degrees;
+    const dgmf::DampedRigidMotion damped(motion);
+    double worst = 0.0;
+    for (int t = 0; t < 5000; ++t)
+    {
+      const double f = unit(random);
+      const double x[3] = { 3.0, -4.0, 1.0 };
+      double out[3];
+      damped.Apply(f, x, nullptr, out);
+      // Reference in long double: its own round-off is far below the tolerance.
+      const long double a = static_cast<long double>(f) * degrees * 3.14159265358979323846264338327950288L / 180.0L;
+      const long double ca = std::cos(a), sa = std::sin(a);
+      const long double expected[3] = { ca * x[0] - sa * x[1], sa * x[0] + ca * x[1], x[2] };
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, static_cast<double>(std::abs(out[c] - expected[c])));
+      }
+    }
+    EXPECT_LT(worst, 1e-14) << degrees << " degrees"; // |x| = 5.1: a few units in the last place
+  }
+}

@@ -39,6 +39,7 @@ DampedRigidMotion::DampedRigidMotion(const RigidMotion& motion)
     motion.GetUnitAxis(this->UnitAxis);
     Axis& a = this->AxisRotation;
     Tabulate(motion.AxisAngleDegrees, Steps, a.Sin, a.Cos, a.Angle, a.AnglePerStep);
+    a.ShortSeries = std::abs(a.AnglePerStep) <= ShortSeriesLimit;
     return;
   }
   for (int axis = 0; axis < 3; ++axis)
@@ -51,6 +52,7 @@ DampedRigidMotion::DampedRigidMotion(const RigidMotion& motion)
     a.I = (axis + 1) % 3;
     a.J = (axis + 2) % 3;
     Tabulate(motion.AnglesDegrees[axis], Steps, a.Sin, a.Cos, a.Angle, a.AnglePerStep);
+    a.ShortSeries = std::abs(a.AnglePerStep) <= ShortSeriesLimit;
   }
 }
 

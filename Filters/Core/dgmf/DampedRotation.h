@@ -123,6 +123,9 @@ public:
   /// Number of table intervals per angle.
   static constexpr int Steps = 1024;
 
+  /// Largest angle step (radians; up to about 58 degrees per angle) with the short Taylor series.
+  static constexpr double ShortSeriesLimit = 1e-3;
+
 private:
   /// Two doubles processed together (GCC and Clang vector extension: SSE2 on x86-64).
   typedef double Pair __attribute__((vector_size(16)));
@@ -145,6 +148,9 @@ private:
     int I = 0, J = 1;                  ///< the plane of the rotation
     double Angle = 0.0;                ///< radians
     double AnglePerStep = 0.0;         ///< Angle / Steps
+    /// |AnglePerStep| <= ShortSeriesLimit: the terms beyond rho^5 (sin) and rho^4 (cos) are
+    /// below 1e-20 (absolute; the terms are bounded by rho^6 / 720), and are left out.
+    bool ShortSeries = false;
     std::vector<double> Sin, Cos;      ///< at angle * k / Steps
 
     void SinCos(double f, double& s, double& c) const
@@ -158,8 +164,11 @@ private:
       // factorial ratios: divisions here would dominate the cost of a node).
       constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
       constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
-      const double sr = rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
-      const double cr = 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
+      // Angles up to ShortSeriesLimit per step need the series only to rho^5 and rho^4.
+      const double sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
+                                          : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
+      const double cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
+                                          : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       const double sk = this->Sin[static_cast<std::size_t>(k)];
       const double ck = this->Cos[static_cast<std::size_t>(k)];
       s = sk * cr + ck * sr;
@@ -174,8 +183,10 @@ private:
       const Pair r2 = rho * rho;
       constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
       constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
-      const Pair sr = rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
-      const Pair cr = 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
+      const Pair sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
+                                        : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
+      const Pair cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
+                                        : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])], this->Sin[static_cast<std::size_t>(k[1])] };
       const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])], this->Cos[static_cast<std::size_t>(k[1])] };
       s = sk * cr + ck * sr;
