@@ -12,6 +12,7 @@
 #include "dgmf/DGMDeformation.h"
 #include "dgmf/DGRBFDeformation.h"
 #include "dgmf/DelaunayMapping.h"
+#include "dgmf/HintStride.h"
 #include "dgmf/IDWDeformation.h"
 #include "dgmf/MultiBodyDeformation.h"
 #include "dgmf/RigidMotionFit.h"
@@ -1303,6 +1304,27 @@ const dgmf_vtk::BoundaryFacets& vtkDGMFDeformFilter::GetBoundaryFacets(
   return *cache.Facets;
 }
 
+namespace
+{
+/// The mesh's hint stride for the point location (dgmf::FindHintStride), from up to 4,096 cells
+/// spread over the mesh.
+std::size_t HintStrideOf(vtkUnstructuredGrid* mesh)
+{
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  const vtkIdType samples = std::min<vtkIdType>(cells, 4096);
+  std::vector<std::vector<std::int64_t>> sampled;
+  sampled.reserve(static_cast<std::size_t>(samples));
+  for (vtkIdType s = 0; s < samples; ++s)
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    mesh->GetCellPoints(s * cells / samples, count, ids);
+    sampled.emplace_back(ids, ids + count);
+  }
+  return dgmf::FindHintStride(sampled);
+}
+} // namespace
+
 bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs)
 {
   Cache& cache = *this->GraphCache;
@@ -1320,7 +1342,7 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
   cache.R = nullptr;
   cache.F = nullptr;
   cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(inputs.Dimension, inputs.Points,
-    inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel);
+    inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel, HintStrideOf(input));
   cache.Points.Set(pointsArray, hashPoints);
   cache.Dimension = inputs.Dimension;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;

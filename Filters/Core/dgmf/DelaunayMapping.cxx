@@ -12,7 +12,7 @@
 namespace dgmf
 {
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
-  const NodeKind* kinds, const ParallelFor& parallelFor)
+  const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride)
 {
   if (numberOfNodes > static_cast<std::size_t>(INT32_MAX))
   {
@@ -78,7 +78,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
 
   // Steps 2-3: the element and barycentric coordinates of every interior node.
   const int n = dimension + 1;
-  this->NodeElement.assign(numberOfNodes, 0);
+  this->NodeElement.assign(numberOfNodes, NotLocated);
   // Not zero-filled: every node's weights are written below (boundary nodes here, interior nodes
   // by their block), which saves a pass over the largest array and spreads its first touch over
   // the threads.
@@ -94,19 +94,34 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   const std::size_t blocks = (numberOfNodes + BlockSize - 1) / BlockSize;
   std::vector<std::size_t> outsidePerBlock(blocks, 0);
   std::vector<std::size_t> walksPerBlock(blocks, 0);
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
-    {
-      const std::size_t begin = block * BlockSize;
-      const BlockLocationCounts counts = LocateBlock(*this->Graph, points, kinds, begin,
-        std::min(begin + BlockSize, numberOfNodes), this->NodeElement.data(), this->Weights.get());
-      outsidePerBlock[block] = counts.Outside;
-      walksPerBlock[block] = counts.Restarts;
-    });
+  std::vector<std::size_t> strideHitsPerBlock(blocks, 0);
+  // With a hint stride of at least a block, blocks go in waves of whole blocks no longer than
+  // the stride: every node's stride neighbour is then in an earlier wave, located whatever the
+  // number of threads. A shorter stride stays within a block's runs: one wave.
+  const std::size_t blocksPerWave =
+    hintStride >= BlockSize ? hintStride / BlockSize : std::max<std::size_t>(blocks, 1);
+  for (std::size_t first = 0; first < blocks; first += blocksPerWave)
+  {
+    const std::size_t waveBlocks = std::min(blocksPerWave, blocks - first);
+    const std::size_t waveBegin = first * BlockSize;
+    ForEachBlock(parallelFor, waveBlocks,
+      [&](std::size_t w)
+      {
+        const std::size_t block = first + w;
+        const std::size_t begin = block * BlockSize;
+        const BlockLocationCounts counts = LocateBlock(*this->Graph, points, kinds, begin,
+          std::min(begin + BlockSize, numberOfNodes), this->NodeElement.data(), this->Weights.get(),
+          hintStride, waveBegin);
+        outsidePerBlock[block] = counts.Outside;
+        walksPerBlock[block] = counts.Restarts;
+        strideHitsPerBlock[block] = counts.StrideHits;
+      });
+  }
   for (std::size_t block = 0; block < blocks; ++block)
   {
     this->OutsideNodes += outsidePerBlock[block];
     this->Walks += walksPerBlock[block];
+    this->StrideHits += strideHitsPerBlock[block];
   }
   this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
 }

@@ -27,11 +27,13 @@ namespace dgmf
  * kind, so one mapping serves every later motion of the same mesh (time steps, design loops).
  *
  * Nodes are located in fixed blocks of BlockSize nodes (LocateBlock): each block is cut into
- * runs of consecutive nodes; the first node of a run walks from the graph's seed element, every
- * other node from the element of the run's previous node (mesh generators number nodes with
- * spatial coherence, so most nodes are found in a step or two), with CGAL as the exact fallback.
- * The runs of a block walk in turn so that their cache misses overlap. Because blocks and runs
- * are fixed, the result does not depend on the number of threads.
+ * runs of consecutive nodes; a node walks from the element of its stride neighbour (node
+ * i - hintStride, for structured and layered meshes), else from the element of the run's
+ * previous node (mesh generators number nodes with spatial coherence), else from the graph's
+ * seed element, with CGAL as the exact fallback. The runs of a block walk in turn so that their
+ * cache misses overlap. With a hint stride of at least a block, blocks go in waves no longer than
+ * the stride. Because blocks, runs and waves are fixed, the result does not depend on the number
+ * of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
@@ -42,6 +44,9 @@ class DelaunayMapping
 public:
   /// Number of nodes per location block.
   static constexpr std::size_t BlockSize = 4096;
+
+  /// The element of an interior node not located yet (while the mapping is being built).
+  static constexpr std::int32_t NotLocated = INT32_MIN;
 
   /**
    * Calls body(i) for every node i, in the fixed blocks of BlockSize nodes that run in parallel
@@ -66,11 +71,13 @@ public:
    * @param dimension 2 (x, y used; all nodes in a plane z = constant) or 3
    * @param points 3 coordinates per node
    * @param kinds the kind of every node
+   * @param hintStride 0, or the index difference of mesh neighbours across layers (see
+   *   FindHintStride): node i's walk then starts from node i - hintStride's element (LocateBlock)
    * Throws std::invalid_argument when there are no boundary nodes, when the boundary nodes do
    * not span the dimension, or when a coordinate is not finite.
    */
   DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
-    const NodeKind* kinds, const ParallelFor& parallelFor);
+    const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride = 0);
 
   int GetDimension() const { return this->Graph->GetDimension(); }
   std::size_t GetNumberOfNodes() const { return this->NodeElement.size(); }
@@ -105,6 +112,8 @@ public:
   /// Number of walks started from the graph's seed grid: the first node of each run, and the
   /// nodes not found by a short walk from the previous node's element.
   std::size_t GetNumberOfWalks() const { return this->Walks; }
+  /// Number of interior nodes found from their stride neighbour's element (see hintStride).
+  std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
   /// Number of moving graph vertices.
   std::size_t GetNumberOfMovingVertices() const { return this->MovingVertices; }
   /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
@@ -128,6 +137,7 @@ private:
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
   std::size_t Walks = 0;
+  std::size_t StrideHits = 0;
   std::size_t MovingVertices = 0;
   std::size_t ConflictingNodes = 0;
   double GraphSeconds = 0.0;
