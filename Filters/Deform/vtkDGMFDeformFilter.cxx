@@ -52,6 +52,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <array>
 #include <map>
 #include <new>
@@ -146,9 +147,20 @@ void FillMissingWeights(std::vector<double>& weights)
 
 bool AllFinite(const double* values, std::size_t count)
 {
-  for (std::size_t i = 0; i < count; ++i)
+  // A double is finite when its exponent bits are not all ones: tested without a branch per value
+  // (the points of a large mesh are a few hundred megabytes).
+  constexpr std::uint64_t exponent = 0x7ff0000000000000ull;
+  for (std::size_t i = 0; i < count;)
   {
-    if (!std::isfinite(values[i]))
+    const std::size_t end = std::min(count, i + 4096);
+    std::uint64_t bad = 0;
+    for (; i < end; ++i)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, values + i, sizeof(bits));
+      bad |= (bits & exponent) == exponent ? 1 : 0;
+    }
+    if (bad)
     {
       return false;
     }
@@ -331,6 +343,24 @@ vtkSmartPointer<vtkPoints> OutputPointsFor(
   last = vtkSmartPointer<vtkPoints>::New();
   last->SetData(coordinates);
   return last;
+}
+
+/**
+ * A point array `name` of `n` doubles for a new r or f: `cached` itself when only the cache holds
+ * it (prepared by UpdateMapping, or no longer in any output), otherwise a new array (an output or
+ * user code keeps the old values). Returns the array, now also in `cached`.
+ */
+vtkDoubleArray* FreshArray(vtkSmartPointer<vtkDoubleArray>& cached, const char* name, std::size_t n)
+{
+  if (!cached || cached->GetReferenceCount() != 1 || cached->GetNumberOfComponents() != 1 ||
+    cached->GetNumberOfTuples() != static_cast<vtkIdType>(n))
+  {
+    cached = vtkSmartPointer<vtkDoubleArray>::New();
+    cached->SetName(name);
+    cached->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  }
+  cached->Modified();
+  return cached;
 }
 } // namespace
 
@@ -562,9 +592,7 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
     }
   }
   // f is min(1, sum of the bodies' damping factors); r has no single meaning with several bodies.
-  cache.F = vtkSmartPointer<vtkDoubleArray>::New();
-  cache.F->SetName("f");
-  cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  FreshArray(cache.F, "f", n);
   cache.Damping = 0; // not the single-body f: recomputed next time
   dgmf::DeformMultiBody(mapping, ids.data(), motions, this->StaticBoundaryR0,
     static_cast<dgmf::DampingFunction>(this->DampingFunction),
@@ -852,7 +880,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   this->UpdateProgress(0.1);
   if (this->Method == DGMF || this->Method == DGM || this->Method == DGRBF)
   {
-    if (!this->UpdateMapping(input, inputs))
+    if (!this->UpdateMapping(input, inputs, output))
     {
       return 0;
     }
@@ -1325,7 +1353,8 @@ std::size_t HintStrideOf(vtkUnstructuredGrid* mesh)
 }
 } // namespace
 
-bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs)
+bool vtkDGMFDeformFilter::UpdateMapping(
+  vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
 {
   Cache& cache = *this->GraphCache;
   vtkDataArray* pointsArray = input->GetPoints()->GetData();
@@ -1339,11 +1368,32 @@ bool vtkDGMFDeformFilter::UpdateMapping(vtkUnstructuredGrid* input, Inputs& inpu
     return true;
   }
   cache.Mapping.reset();
-  cache.R = nullptr;
-  cache.F = nullptr;
+  // The output's points, r and f are allocated now and first touched while the graph is built
+  // (on another thread): the page faults of a few hundred megabytes are then off the critical
+  // path. They are computed later (StaticR0 and Damping mark them as not computed).
+  const std::size_t n = inputs.NumberOfNodes;
+  cache.StaticR0 = std::numeric_limits<double>::quiet_NaN();
+  cache.Damping = 0;
+  std::vector<vtkDoubleArray*> prepared;
+  prepared.push_back(vtkDoubleArray::SafeDownCast(OutputPointsFor(cache.OutputPoints, input, output, n)->GetData()));
+  if (this->Method == DGMF)
+  {
+    prepared.push_back(FreshArray(cache.R, "r", n));
+    prepared.push_back(FreshArray(cache.F, "f", n));
+  }
+  // The cache key's hash of the points is computed there too.
+  std::uint64_t pointsHash = 0;
+  auto touch = [&prepared, &pointsHash, &hashPoints]()
+  {
+    for (vtkDoubleArray* array : prepared)
+    {
+      std::memset(array->GetPointer(0), 0, static_cast<std::size_t>(array->GetDataSize()) * sizeof(double));
+    }
+    pointsHash = hashPoints();
+  };
   cache.Mapping = std::make_unique<dgmf::DelaunayMapping>(inputs.Dimension, inputs.Points,
-    inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel, HintStrideOf(input));
-  cache.Points.Set(pointsArray, hashPoints);
+    inputs.NumberOfNodes, inputs.Kinds.data(), inputs.Parallel, HintStrideOf(input), touch);
+  cache.Points.Set(pointsArray, [pointsHash]() { return pointsHash; });
   cache.Dimension = inputs.Dimension;
   const dgmf::DelaunayMapping& mapping = *cache.Mapping;
   this->LastGraphSeconds = mapping.GetGraphSeconds();
@@ -1371,6 +1421,27 @@ const char* MethodName(int method)
   return names[method];
 }
 } // namespace
+
+void vtkDGMFDeformFilter::UpdateDampingField(Inputs& inputs)
+{
+  // r depends on r0s, f on r and the damping function: both are kept, and shared with the
+  // output (written anew only when nothing else holds them, see FreshArray).
+  Cache& cache = *this->GraphCache;
+  const std::size_t n = inputs.NumberOfNodes;
+  if (!cache.R || cache.StaticR0 != this->StaticBoundaryR0)
+  {
+    dgmf::ComputeBoundaryDistanceField(*cache.Mapping, this->StaticBoundaryR0,
+      FreshArray(cache.R, "r", n)->GetPointer(0), inputs.Parallel);
+    cache.StaticR0 = this->StaticBoundaryR0;
+    cache.Damping = 0; // f follows r
+  }
+  if (!cache.F || cache.Damping != this->DampingFunction)
+  {
+    dgmf::ComputeDampingFactor(*cache.Mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
+      cache.R->GetPointer(0), FreshArray(cache.F, "f", n)->GetPointer(0), inputs.Parallel);
+    cache.Damping = this->DampingFunction;
+  }
+}
 
 bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
 {
@@ -1404,25 +1475,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
       return false;
     }
     // r and f describe the input mesh's graph (the first step).
-    if (!cache.R || cache.StaticR0 != this->StaticBoundaryR0)
-    {
-      cache.R = vtkSmartPointer<vtkDoubleArray>::New();
-      cache.R->SetName("r");
-      cache.R->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      dgmf::ComputeBoundaryDistanceField(
-        *cache.Mapping, this->StaticBoundaryR0, cache.R->GetPointer(0), inputs.Parallel);
-      cache.StaticR0 = this->StaticBoundaryR0;
-      cache.F = nullptr;
-    }
-    if (!cache.F || cache.Damping != this->DampingFunction)
-    {
-      cache.F = vtkSmartPointer<vtkDoubleArray>::New();
-      cache.F->SetName("f");
-      cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      dgmf::ComputeDampingFactor(*cache.Mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
-        cache.R->GetPointer(0), cache.F->GetPointer(0), inputs.Parallel);
-      cache.Damping = this->DampingFunction;
-    }
+    this->UpdateDampingField(inputs);
     output->GetPointData()->AddArray(cache.R);
     output->GetPointData()->AddArray(cache.F);
     AddFieldCount(fieldData, "OutsideNodeCount", cache.Mapping->GetNumberOfOutsideNodes());
@@ -1440,27 +1493,7 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
   {
     Cache& cache = *this->GraphCache;
     const dgmf::DelaunayMapping& mapping = *cache.Mapping;
-    // r depends on r0s, f on r and the damping function: both are kept, and shared with the
-    // output (a new array is made whenever either changes).
-    if (!cache.R || cache.StaticR0 != this->StaticBoundaryR0)
-    {
-      cache.R = vtkSmartPointer<vtkDoubleArray>::New();
-      cache.R->SetName("r");
-      cache.R->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      dgmf::ComputeBoundaryDistanceField(
-        mapping, this->StaticBoundaryR0, cache.R->GetPointer(0), inputs.Parallel);
-      cache.StaticR0 = this->StaticBoundaryR0;
-      cache.F = nullptr;
-    }
-    if (!cache.F || cache.Damping != this->DampingFunction)
-    {
-      cache.F = vtkSmartPointer<vtkDoubleArray>::New();
-      cache.F->SetName("f");
-      cache.F->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      dgmf::ComputeDampingFactor(mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
-        cache.R->GetPointer(0), cache.F->GetPointer(0), inputs.Parallel);
-      cache.Damping = this->DampingFunction;
-    }
+    this->UpdateDampingField(inputs);
     dgmf::DeformDGMF(mapping, cache.F->GetPointer(0), inputs.Motion, displacement,
       static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out, inputs.Parallel);
     output->GetPointData()->AddArray(cache.R);

@@ -404,7 +404,8 @@ private:
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
   bool CheckMemory(vtkUnstructuredGrid* input);
   bool GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs);
-  bool UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs);
+  bool UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output);
+  void UpdateDampingField(Inputs& inputs);
   const dgmf_vtk::BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* input, int dimension);
   bool Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output);
 

@@ -6,13 +6,16 @@
 #include <array>
 #include <limits>
 #include <chrono>
+#include <cstring>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
 namespace dgmf
 {
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
-  const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride)
+  const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride,
+  const std::function<void()>& alongside)
 {
   if (numberOfNodes > static_cast<std::size_t>(INT32_MAX))
   {
@@ -40,7 +43,42 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     const double* p = points + 3 * static_cast<std::size_t>(node);
     boundaryXYZ.insert(boundaryXYZ.end(), p, p + 3);
   }
-  this->Graph = std::make_unique<DelaunayGraph>(dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
+  // The graph is built on one thread (CGAL's insertion is sequential); meanwhile another prepares
+  // the node arrays, whose first touch costs as much as a pass of the location (page faults),
+  // and runs the caller's `alongside` work. With one thread, one after the other.
+  const int n = dimension + 1;
+  std::exception_ptr failure[2];
+  ForEachBlock(parallelFor, 2,
+    [&](std::size_t task)
+    {
+      try
+      {
+        if (task == 0)
+        {
+          this->Graph =
+            std::make_unique<DelaunayGraph>(dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
+          return;
+        }
+        this->NodeElement.assign(numberOfNodes, NotLocated);
+        this->Weights.reset(new double[numberOfNodes * static_cast<std::size_t>(n)]);
+        std::memset(this->Weights.get(), 0, numberOfNodes * static_cast<std::size_t>(n) * sizeof(double));
+        if (alongside)
+        {
+          alongside();
+        }
+      }
+      catch (...)
+      {
+        failure[task] = std::current_exception();
+      }
+    });
+  for (const std::exception_ptr& thrown : failure)
+  {
+    if (thrown)
+    {
+      std::rethrow_exception(thrown);
+    }
+  }
   boundaryXYZ = std::vector<double>();
 
   // Vertex kinds: a vertex shared by coincident nodes is moving if any of them moves.
@@ -77,17 +115,10 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   this->GraphSeconds = std::chrono::duration<double>(graphBuilt - start).count();
 
   // Steps 2-3: the element and barycentric coordinates of every interior node.
-  const int n = dimension + 1;
-  this->NodeElement.assign(numberOfNodes, NotLocated);
-  // Not zero-filled: every node's weights are written below (boundary nodes here, interior nodes
-  // by their block), which saves a pass over the largest array and spreads its first touch over
-  // the threads.
-  this->Weights.reset(new double[numberOfNodes * static_cast<std::size_t>(n)]);
   for (std::size_t b = 0; b < this->BoundaryNodes.size(); ++b)
   {
     const auto node = static_cast<std::size_t>(this->BoundaryNodes[b]);
     this->NodeElement[node] = -vertexOfPoint[b] - 1;
-    std::fill(this->Weights.get() + node * n, this->Weights.get() + node * n + n, 0.0);
     this->Weights[node * n] = 1.0;
   }
 
