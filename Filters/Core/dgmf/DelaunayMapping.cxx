@@ -122,37 +122,33 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     this->Weights[node * n] = 1.0;
   }
 
-  const std::size_t blocks = (numberOfNodes + BlockSize - 1) / BlockSize;
-  std::vector<std::size_t> outsidePerBlock(blocks, 0);
-  std::vector<std::size_t> walksPerBlock(blocks, 0);
-  std::vector<std::size_t> strideHitsPerBlock(blocks, 0);
-  // With a hint stride of at least a block, blocks go in waves of whole blocks no longer than
-  // the stride: every node's stride neighbour is then in an earlier wave, located whatever the
-  // number of threads. A shorter stride stays within a block's runs: one wave.
-  const std::size_t blocksPerWave =
-    hintStride >= BlockSize ? hintStride / BlockSize : std::max<std::size_t>(blocks, 1);
-  for (std::size_t first = 0; first < blocks; first += blocksPerWave)
+  // The pieces located in parallel. With a hint stride of at least a block, the nodes go in
+  // waves of `hintStride` nodes, each cut into WavePieces pieces: every node's stride neighbour
+  // is then in an earlier wave, located whatever the number of threads. Otherwise one wave of
+  // BlockSize pieces. The layout depends on the mesh only.
+  const bool waves = hintStride >= BlockSize;
+  const std::size_t waveLength = waves ? hintStride : std::max<std::size_t>(numberOfNodes, 1);
+  const std::size_t piecesPerWave =
+    waves ? WavePieces : (numberOfNodes + BlockSize - 1) / BlockSize;
+  const std::size_t pieceLength = (waveLength + piecesPerWave - 1) / piecesPerWave;
+  for (std::size_t waveBegin = 0; waveBegin < numberOfNodes; waveBegin += waveLength)
   {
-    const std::size_t waveBlocks = std::min(blocksPerWave, blocks - first);
-    const std::size_t waveBegin = first * BlockSize;
-    ForEachBlock(parallelFor, waveBlocks,
-      [&](std::size_t w)
+    const std::size_t waveEnd = std::min(numberOfNodes, waveBegin + waveLength);
+    const std::size_t pieces = (waveEnd - waveBegin + pieceLength - 1) / pieceLength;
+    std::vector<BlockLocationCounts> counts(pieces);
+    ForEachBlock(parallelFor, pieces,
+      [&](std::size_t piece)
       {
-        const std::size_t block = first + w;
-        const std::size_t begin = block * BlockSize;
-        const BlockLocationCounts counts = LocateBlock(*this->Graph, points, kinds, begin,
-          std::min(begin + BlockSize, numberOfNodes), this->NodeElement.data(), this->Weights.get(),
-          hintStride, waveBegin);
-        outsidePerBlock[block] = counts.Outside;
-        walksPerBlock[block] = counts.Restarts;
-        strideHitsPerBlock[block] = counts.StrideHits;
+        const std::size_t begin = waveBegin + piece * pieceLength;
+        counts[piece] = LocateBlock(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
+          this->NodeElement.data(), this->Weights.get(), hintStride, waveBegin);
       });
-  }
-  for (std::size_t block = 0; block < blocks; ++block)
-  {
-    this->OutsideNodes += outsidePerBlock[block];
-    this->Walks += walksPerBlock[block];
-    this->StrideHits += strideHitsPerBlock[block];
+    for (const BlockLocationCounts& count : counts)
+    {
+      this->OutsideNodes += count.Outside;
+      this->Walks += count.Restarts;
+      this->StrideHits += count.StrideHits;
+    }
   }
   this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
 }

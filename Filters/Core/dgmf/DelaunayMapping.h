@@ -32,9 +32,9 @@ namespace dgmf
  * i - hintStride, for structured and layered meshes), else from the element of the run's
  * previous node (mesh generators number nodes with spatial coherence), else from the graph's
  * seed element, with CGAL as the exact fallback. The runs of a block walk in turn so that their
- * cache misses overlap. With a hint stride of at least a block, blocks go in waves no longer than
- * the stride. Because blocks, runs and waves are fixed, the result does not depend on the number
- * of threads.
+ * cache misses overlap. With a hint stride of at least a block, the nodes go in waves of one
+ * stride, each cut into WavePieces blocks. Because blocks, runs and waves are fixed, the result
+ * does not depend on the number of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
@@ -45,6 +45,9 @@ class DelaunayMapping
 public:
   /// Number of nodes per location block.
   static constexpr std::size_t BlockSize = 4096;
+
+  /// Pieces located in parallel per wave, when the nodes are located in waves (see hintStride).
+  static constexpr std::size_t WavePieces = 16;
 
   /// The element of an interior node not located yet (while the mapping is being built).
   static constexpr std::int32_t NotLocated = INT32_MIN;
