@@ -1378,7 +1378,10 @@ bool vtkDGMFDeformFilter::UpdateMapping(
   prepared.push_back(vtkDoubleArray::SafeDownCast(OutputPointsFor(cache.OutputPoints, input, output, n)->GetData()));
   if (this->Method == DGMF)
   {
-    prepared.push_back(FreshArray(cache.R, "r", n));
+    if (inputs.NumberOfBodies == 0 && this->RigidMotionMode != EXTRACTED)
+    {
+      prepared.push_back(FreshArray(cache.R, "r", n)); // r has no meaning with several bodies
+    }
     prepared.push_back(FreshArray(cache.F, "f", n));
   }
   // The cache key's hash of the points is computed there too.
