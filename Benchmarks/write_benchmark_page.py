@@ -53,6 +53,8 @@ def main():
         "surfaces, 40, 80, 40 and 400 layers: exactly the paper's node and boundary-node counts. The",
         "sphere's nodes are cospherical, the box's coplanar grids, and every node lies on a segment",
         "between a sphere node and a box node: the degenerate input of real structured O-grids.",
+        "Nodes are numbered layer by layer, so the filter's hint stride (the index difference of",
+        "neighbours across layers, found from the cells: see ../speed.md) is the layer size.",
         "Motion: rotation of (5, 10, 15) degrees about x, y, z (three angles, the most expensive case)",
         "and a translation. Times exclude mesh generation, file I/O and (except the quality column) the",
         "quality metric. Medians of 3 runs (IDW: 1 run).",
