@@ -1,5 +1,7 @@
 #include "DGMFCellQuality.h"
 
+#include "vtkPoints.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataSetAttributes.h"
@@ -58,6 +60,22 @@ bool GetShape(int vtkType, dgmf::CellShape& shape, const int*& order)
 }
 } // namespace
 
+const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
+{
+  auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData());
+  if (doubles && doubles->GetNumberOfComponents() == 3)
+  {
+    return doubles->GetPointer(0);
+  }
+  const vtkIdType n = points->GetNumberOfPoints();
+  copy.resize(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, copy.data() + 3 * i);
+  }
+  return copy.data();
+}
+
 dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
   const dgmf::ParallelFor& parallelFor)
@@ -70,13 +88,17 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
   vtkCellArray* cells = mesh->GetCells();
+  const unsigned char* types = mesh->GetCellTypesArray()->GetPointer(0);
 
   parallelFor(0, static_cast<std::size_t>(numberOfCells), 4096,
     [&](std::size_t begin, std::size_t end)
     {
       vtkNew<vtkIdList> scratch;
-      double original[8 * 3];
-      double deformed[8 * 3];
+      // Hexahedra go by two (ComputeHexSizeSkewPair, the same bits): `pending` is one waiting
+      // for its partner, its corners in the second half of the buffers.
+      double original[2][8 * 3];
+      double deformed[2][8 * 3];
+      std::size_t pending = end;
       for (std::size_t c = begin; c < end; ++c)
       {
         const auto cellId = static_cast<vtkIdType>(c);
@@ -84,7 +106,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         const int* order;
         vtkIdType npts;
         const vtkIdType* pts;
-        if (!GetShape(mesh->GetCellType(cellId), shape, order))
+        if (!GetShape(types[c], shape, order))
         {
           values[c] = std::numeric_limits<double>::quiet_NaN();
           flags[c] = 0;
@@ -98,18 +120,44 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           flags[c] = 0;
           continue;
         }
+        const bool hexahedron = shape == dgmf::CellShape::Hexahedron;
+        const int slot = hexahedron && pending == end ? 1 : 0;
         for (int k = 0; k < corners; ++k)
         {
           const auto p = static_cast<std::size_t>(pts[order[k]]);
-          for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d)
           {
-            original[3 * k + c] = originalPoints[3 * p + c];
-            deformed[3 * k + c] = deformedPoints[3 * p + c];
+            original[slot][3 * k + d] = originalPoints[3 * p + d];
+            deformed[slot][3 * k + d] = deformedPoints[3 * p + d];
           }
         }
-        const dgmf::CellQuality quality = dgmf::ComputeSizeSkew(shape, original, deformed);
+        dgmf::CellQuality quality;
+        if (!hexahedron)
+        {
+          quality = dgmf::ComputeSizeSkew(shape, original[0], deformed[0]);
+        }
+        else if (slot == 1)
+        {
+          pending = c;
+          continue;
+        }
+        else
+        {
+          dgmf::CellQuality first;
+          dgmf::ComputeHexSizeSkewPair(original[1], deformed[1], original[0], deformed[0], first, quality);
+          values[pending] = first.SizeSkew;
+          flags[pending] = first.Inverted ? 1 : 0;
+          pending = end;
+        }
         values[c] = quality.SizeSkew;
         flags[c] = quality.Inverted ? 1 : 0;
+      }
+      if (pending < end)
+      {
+        const dgmf::CellQuality last =
+          dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, original[1], deformed[1]);
+        values[pending] = last.SizeSkew;
+        flags[pending] = last.Inverted ? 1 : 0;
       }
     });
   // Ghost cells are evaluated (their arrays must be complete) but counted by their owner.

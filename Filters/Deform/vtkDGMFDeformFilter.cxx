@@ -94,24 +94,6 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
   return 2;
 }
 
-/// The points as a contiguous double array (no copy when they already are).
-const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
-{
-  vtkDataArray* data = points->GetData();
-  auto* doubles = vtkDoubleArray::SafeDownCast(data);
-  if (doubles && doubles->GetNumberOfComponents() == 3)
-  {
-    return doubles->GetPointer(0);
-  }
-  const vtkIdType n = points->GetNumberOfPoints();
-  copy.resize(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->GetPoint(i, copy.data() + 3 * i);
-  }
-  return copy.data();
-}
-
 void AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
 {
   vtkNew<vtkDoubleArray> array;
@@ -939,7 +921,7 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
   inputs.NumberOfNodes = n;
   inputs.LocalNodes = n;
   inputs.Parallel = dgmf_vtk::MakeSMPParallelFor();
-  inputs.Points = PointsAsDouble(input->GetPoints(), inputs.PointCopy);
+  inputs.Points = dgmf_vtk::PointsAsDouble(input->GetPoints(), inputs.PointCopy);
   Cache& cache = *this->GraphCache;
   vtkDataArray* pointsArray = input->GetPoints()->GetData();
   if (cache.CheckedPoints != pointsArray || cache.CheckedPointsMTime != pointsArray->GetMTime())

@@ -24,16 +24,6 @@ vtkStandardNewMacro(vtkSizeSkewQualityFilter);
 
 namespace
 {
-std::vector<double> PointsOf(vtkUnstructuredGrid* mesh)
-{
-  std::vector<double> xyz(3 * static_cast<std::size_t>(mesh->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, xyz.data() + 3 * i);
-  }
-  return xyz;
-}
-
 /// True when both meshes have the same cells (types and point ids).
 bool SameCells(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
 {
@@ -94,8 +84,9 @@ int vtkSizeSkewQualityFilter::RequestData(
     output->Initialize();
     return 0;
   }
-  const std::vector<double> deformed = PointsOf(mesh);
-  const std::vector<double> original = PointsOf(reference);
+  std::vector<double> deformedCopy, originalCopy; // only for points that are not doubles
+  const double* deformed = dgmf_vtk::PointsAsDouble(mesh->GetPoints(), deformedCopy);
+  const double* original = dgmf_vtk::PointsAsDouble(reference->GetPoints(), originalCopy);
 
   output->ShallowCopy(mesh);
   vtkNew<vtkDoubleArray> sizeSkew;
@@ -106,7 +97,7 @@ int vtkSizeSkewQualityFilter::RequestData(
   dgmf_vtk::RunWithThreads(this->NumberOfThreads,
     [&]()
     {
-      summary = dgmf_vtk::ComputeCellQuality(reference, original.data(), deformed.data(), sizeSkew,
+      summary = dgmf_vtk::ComputeCellQuality(reference, original, deformed, sizeSkew,
         inverted, dgmf_vtk::MakeSMPParallelFor());
     });
   output->GetCellData()->AddArray(sizeSkew);

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
@@ -725,4 +726,54 @@ TEST(SizeSkewQuality, SummaryIsReproducible)
   const QualitySummary b = SummarizeQuality(values.data(), nullptr, values.size());
   EXPECT_EQ(a.Mean, b.Mean);
   EXPECT_EQ(a.Mean, sum / static_cast<double>(values.size()));
+}
+
+TEST(SizeSkewQuality, TwoHexahedraAtOnceGiveTheSameBitsAsOneAtATime)
+{
+  // Randomly perturbed unit cubes, some strongly enough to invert a corner, a few degenerate
+  // (collapsed) ones, and both orientations: the pair must equal two single evaluations.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> jitter(-1.0, 1.0);
+  std::size_t inverted = 0, degenerate = 0;
+  for (int t = 0; t < 4000; ++t)
+  {
+    double cells[2][2][24]; // [cell][original, deformed][corner coordinates]
+    for (int cell = 0; cell < 2; ++cell)
+    {
+      const double amplitude = (t + cell) % 5 == 0 ? 2.0 : 0.15;
+      const Points cube = UnitCube();
+      for (int k = 0; k < 24; ++k)
+      {
+        cells[cell][0][k] = cube[k] * 3.0 + 0.05 * jitter(random);
+        cells[cell][1][k] = cells[cell][0][k] + amplitude * jitter(random);
+      }
+      if ((t + cell) % 97 == 0)
+      {
+        for (int k = 12; k < 24; ++k)
+          cells[cell][0][k] = cells[cell][0][k - 12]; // top face on the bottom one
+      }
+      if ((t + cell) % 7 == 0)
+      {
+        for (int k = 0; k < 24; k += 3)
+          for (int part = 0; part < 2; ++part)
+            cells[cell][part][k] = -cells[cell][part][k]; // mirrored: negative orientation
+      }
+    }
+    const CellQuality single0 = ComputeSizeSkew(CellShape::Hexahedron, cells[0][0], cells[0][1]);
+    const CellQuality single1 = ComputeSizeSkew(CellShape::Hexahedron, cells[1][0], cells[1][1]);
+    CellQuality pair0, pair1;
+    dgmf::ComputeHexSizeSkewPair(cells[0][0], cells[0][1], cells[1][0], cells[1][1], pair0, pair1);
+    for (const auto& [single, pair] : { std::make_pair(single0, pair0), std::make_pair(single1, pair1) })
+    {
+      ASSERT_EQ(single.Inverted, pair.Inverted) << "case " << t;
+      if (std::isnan(single.SizeSkew))
+        ASSERT_TRUE(std::isnan(pair.SizeSkew)) << "case " << t;
+      else
+        ASSERT_EQ(std::memcmp(&single.SizeSkew, &pair.SizeSkew, sizeof(double)), 0) << "case " << t;
+    }
+    inverted += single0.Inverted ? 1 : 0;
+    degenerate += std::isnan(single0.SizeSkew) || (!single0.Inverted && single0.SizeSkew == 0.0) ? 1 : 0;
+  }
+  EXPECT_GT(inverted, 10u);
+  EXPECT_GT(degenerate, 10u);
 }

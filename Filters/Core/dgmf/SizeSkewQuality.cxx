@@ -313,6 +313,138 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
   return Valid(SizeFactor(tau) * 8.0 / inverseSum);
 }
 
+/// Two doubles processed together (GCC and Clang vector extension: SSE2 on x86-64).
+typedef double Pair __attribute__((vector_size(16)));
+
+/// Vec3 of two hexahedra at once.
+struct PairVec3
+{
+  Pair X, Y, Z;
+};
+
+inline PairVec3 operator-(const PairVec3& a, const PairVec3& b)
+{
+  return { a.X - b.X, a.Y - b.Y, a.Z - b.Z };
+}
+
+inline Pair Dot(const PairVec3& a, const PairVec3& b)
+{
+  return a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+}
+
+inline PairVec3 Cross(const PairVec3& a, const PairVec3& b)
+{
+  return { a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X };
+}
+
+struct PairHexEdges
+{
+  PairVec3 Vector[12];
+  Pair Length2[12];
+};
+
+inline void ComputeHexEdges(const double* a, const double* b, PairHexEdges& edges)
+{
+  auto load = [a, b](int i) -> PairVec3 {
+    return { Pair{ a[3 * i], b[3 * i] }, Pair{ a[3 * i + 1], b[3 * i + 1] },
+      Pair{ a[3 * i + 2], b[3 * i + 2] } };
+  };
+  for (int e = 0; e < 12; ++e)
+  {
+    edges.Vector[e] = load(kHexEdges[e][1]) - load(kHexEdges[e][0]);
+    edges.Length2[e] = Dot(edges.Vector[e], edges.Vector[e]);
+  }
+}
+
+inline Pair HexCornerDeterminant(const PairHexEdges& edges, int corner)
+{
+  const int* e = kHexCornerEdges[corner];
+  return kHexCornerSign[corner] * Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
+}
+
+/// InverseCubeRootInRange of two values (the bit-level guess lane by lane, the Newton steps together).
+inline Pair InverseCubeRootInRange(Pair x)
+{
+  Pair y;
+  for (int l = 0; l < 2; ++l)
+  {
+    const double lane = x[l];
+    std::uint64_t bits;
+    std::memcpy(&bits, &lane, sizeof bits);
+    bits = 0x553EF0FF289DD796ull - bits / 3;
+    double guess;
+    std::memcpy(&guess, &bits, sizeof guess);
+    y[l] = guess;
+  }
+  const Pair third = x * (1.0 / 3.0);
+  for (int step = 0; step < 4; ++step)
+  {
+    y = y * (4.0 / 3.0 - third * (y * y * y));
+  }
+  return y;
+}
+
+/**
+ * HexSizeSkew of two hexahedra at once: the same operations in the same order, in two-lane
+ * vectors, so the same bits. False (nothing written) when either cell is degenerate, inverted or
+ * has a cube-root argument out of range: the caller then evaluates them one at a time.
+ */
+bool HexSizeSkewPair(const double* original0, const double* deformed0, const double* original1,
+  const double* deformed1, CellQuality& quality0, CellQuality& quality1)
+{
+  PairHexEdges edges;
+  ComputeHexEdges(original0, original1, edges);
+  Pair originalSum = { 0.0, 0.0 };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    originalSum += HexCornerDeterminant(edges, corner);
+  }
+  Pair orientation;
+  for (int l = 0; l < 2; ++l)
+  {
+    double longestEdge2 = 0.0;
+    for (int e = 0; e < 12; ++e)
+    {
+      longestEdge2 = std::max(longestEdge2, edges.Length2[e][l]);
+    }
+    const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
+    if (!(std::abs(originalSum[l]) > kDegenerateTolerance * scale))
+    {
+      return false;
+    }
+    orientation[l] = originalSum[l] > 0.0 ? 1.0 : -1.0;
+  }
+  ComputeHexEdges(deformed0, deformed1, edges);
+  Pair deformedSum = { 0.0, 0.0 };
+  Pair numerator[8], argument[8];
+  bool usable = true;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const Pair alpha = orientation * HexCornerDeterminant(edges, corner);
+    deformedSum += alpha;
+    const int* e = kHexCornerEdges[corner];
+    numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
+    argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
+    for (int l = 0; l < 2; ++l)
+    {
+      usable &= alpha[l] > 0.0 && argument[corner][l] >= kCubeRootLow && argument[corner][l] <= kCubeRootHigh;
+    }
+  }
+  if (!usable)
+  {
+    return false;
+  }
+  Pair inverseSum = { 0.0, 0.0 };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
+  }
+  const Pair tau = deformedSum / (orientation * originalSum);
+  quality0 = Valid(SizeFactor(tau[0]) * 8.0 / inverseSum[0]);
+  quality1 = Valid(SizeFactor(tau[1]) * 8.0 / inverseSum[1]);
+  return true;
+}
+
 /// Longest squared edge of a polygon with n corners.
 inline double LongestEdge2(const Vec3* p, int n)
 {
@@ -437,6 +569,16 @@ CellQuality ComputeSizeSkew(CellShape shape, const double* original, const doubl
   }
   // Not a listed shape (an out-of-range cast): not computed.
   return CellQuality{ std::numeric_limits<double>::quiet_NaN(), false };
+}
+
+void ComputeHexSizeSkewPair(const double* original0, const double* deformed0, const double* original1,
+  const double* deformed1, CellQuality& quality0, CellQuality& quality1)
+{
+  if (!HexSizeSkewPair(original0, deformed0, original1, deformed1, quality0, quality1))
+  {
+    quality0 = HexSizeSkew(original0, deformed0);
+    quality1 = HexSizeSkew(original1, deformed1);
+  }
 }
 
 QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
