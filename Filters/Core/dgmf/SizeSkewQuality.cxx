@@ -17,27 +17,33 @@ namespace
 constexpr double kDegenerateTolerance = 1e-12;
 constexpr double kSqrt3 = 1.7320508075688772935;
 
-struct Vec3
+/// A 3-vector of doubles, or of two-lane vectors (two cells at once, HexSizeSkewPair).
+template <typename T>
+struct Vec3Of
 {
-  double X, Y, Z;
+  T X, Y, Z;
 };
+using Vec3 = Vec3Of<double>;
 
 inline Vec3 Load(const double* points, int i)
 {
   return { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
 }
 
-inline Vec3 operator-(const Vec3& a, const Vec3& b)
+template <typename T>
+inline Vec3Of<T> operator-(const Vec3Of<T>& a, const Vec3Of<T>& b)
 {
   return { a.X - b.X, a.Y - b.Y, a.Z - b.Z };
 }
 
-inline double Dot(const Vec3& a, const Vec3& b)
+template <typename T>
+inline T Dot(const Vec3Of<T>& a, const Vec3Of<T>& b)
 {
   return a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 }
 
-inline Vec3 Cross(const Vec3& a, const Vec3& b)
+template <typename T>
+inline Vec3Of<T> Cross(const Vec3Of<T>& a, const Vec3Of<T>& b)
 {
   return { a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X };
 }
@@ -317,25 +323,7 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
 typedef double Pair __attribute__((vector_size(16)));
 
 /// Vec3 of two hexahedra at once.
-struct PairVec3
-{
-  Pair X, Y, Z;
-};
-
-inline PairVec3 operator-(const PairVec3& a, const PairVec3& b)
-{
-  return { a.X - b.X, a.Y - b.Y, a.Z - b.Z };
-}
-
-inline Pair Dot(const PairVec3& a, const PairVec3& b)
-{
-  return a.X * b.X + a.Y * b.Y + a.Z * b.Z;
-}
-
-inline PairVec3 Cross(const PairVec3& a, const PairVec3& b)
-{
-  return { a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X };
-}
+using PairVec3 = Vec3Of<Pair>;
 
 struct PairHexEdges
 {
