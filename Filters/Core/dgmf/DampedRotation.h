@@ -41,29 +41,7 @@ public:
   {
     double y[3] = { x[0] - this->Motion.Center[0], x[1] - this->Motion.Center[1],
       x[2] - this->Motion.Center[2] };
-    if (this->HasAxisRotation)
-    {
-      double s, c;
-      this->AxisRotation.SinCos(f, s, c);
-      const double* k = this->UnitAxis;
-      const double kv = (1.0 - c) * (k[0] * y[0] + k[1] * y[1] + k[2] * y[2]);
-      const double w[3] = { k[1] * y[2] - k[2] * y[1], k[2] * y[0] - k[0] * y[2],
-        k[0] * y[1] - k[1] * y[0] };
-      for (int i = 0; i < 3; ++i)
-      {
-        y[i] = c * y[i] + s * w[i] + kv * k[i];
-      }
-    }
-    for (int k = 0; k < this->NumberOfAxes; ++k)
-    {
-      const Axis& axis = this->Axes[k];
-      double s, c;
-      axis.SinCos(f, s, c);
-      const double u = y[axis.I];
-      const double v = y[axis.J];
-      y[axis.I] = c * u - s * v;
-      y[axis.J] = s * u + c * v;
-    }
+    this->Rotate(y, [f](const Axis& axis, double& s, double& c) { axis.SinCos(f, s, c); });
     for (int c = 0; c < 3; ++c)
     {
       out[c] = this->Motion.Center[c] + y[c] + f * this->Motion.Translation[c] + (d ? f * d[c] : 0.0);
@@ -86,29 +64,7 @@ public:
     {
       y[c] = Pair{ x0[c], x1[c] } - this->Motion.Center[c];
     }
-    if (this->HasAxisRotation)
-    {
-      Pair s, c;
-      this->AxisRotation.SinCos(k, frac, s, c);
-      const double* a = this->UnitAxis;
-      const Pair kv = (1.0 - c) * (a[0] * y[0] + a[1] * y[1] + a[2] * y[2]);
-      const Pair w[3] = { a[1] * y[2] - a[2] * y[1], a[2] * y[0] - a[0] * y[2],
-        a[0] * y[1] - a[1] * y[0] };
-      for (int i = 0; i < 3; ++i)
-      {
-        y[i] = c * y[i] + s * w[i] + kv * a[i];
-      }
-    }
-    for (int j = 0; j < this->NumberOfAxes; ++j)
-    {
-      const Axis& axis = this->Axes[j];
-      Pair s, c;
-      axis.SinCos(k, frac, s, c);
-      const Pair u = y[axis.I];
-      const Pair v = y[axis.J];
-      y[axis.I] = c * u - s * v;
-      y[axis.J] = s * u + c * v;
-    }
+    this->Rotate(y, [&k, frac](const Axis& axis, Pair& s, Pair& c) { axis.SinCos(k, frac, s, c); });
     for (int c = 0; c < 3; ++c)
     {
       const Pair d = { d0 ? d0[c] : 0.0, d1 ? d1[c] : 0.0 };
@@ -193,6 +149,38 @@ private:
       c = ck * cr - sk * sr;
     }
   };
+
+  /**
+   * y <- R(f angles) y for one node (T = double) or two (T = Pair): Rodrigues' formula for an
+   * axis rotation, else the rotations about x, y and z in turn. `sinCos(axis, s, c)` gives the
+   * sine and cosine of the damped angle of `axis`.
+   */
+  template <typename T, typename SinCos>
+  void Rotate(T y[3], const SinCos& sinCos) const
+  {
+    if (this->HasAxisRotation)
+    {
+      T s, c;
+      sinCos(this->AxisRotation, s, c);
+      const double* a = this->UnitAxis;
+      const T kv = (1.0 - c) * (a[0] * y[0] + a[1] * y[1] + a[2] * y[2]);
+      const T w[3] = { a[1] * y[2] - a[2] * y[1], a[2] * y[0] - a[0] * y[2], a[0] * y[1] - a[1] * y[0] };
+      for (int i = 0; i < 3; ++i)
+      {
+        y[i] = c * y[i] + s * w[i] + kv * a[i];
+      }
+    }
+    for (int j = 0; j < this->NumberOfAxes; ++j)
+    {
+      const Axis& axis = this->Axes[j];
+      T s, c;
+      sinCos(axis, s, c);
+      const T u = y[axis.I];
+      const T v = y[axis.J];
+      y[axis.I] = c * u - s * v;
+      y[axis.J] = s * u + c * v;
+    }
+  }
 
   RigidMotion Motion;
   Axis Axes[3];
