@@ -101,12 +101,12 @@ TEST(DelaunayGraph, LocationDoesNotDependOnTheHint)
   const std::vector<double> xyz = BoundaryPoints(set);
   dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
   const double p[3] = { 2.1234, -1.5678, 3.3141 };
-  const dgmf::DelaunayGraph::Location fromScratch = graph.Locate(p, -1);
+  const dgmf::DelaunayGraph::Location fromScratch = graph.LocateExactly(p, -1);
   ASSERT_GE(fromScratch.Element, 0);
   EXPECT_FALSE(fromScratch.Outside);
   for (std::int32_t hint = 0; hint < static_cast<std::int32_t>(graph.GetNumberOfElements()); hint += 37)
   {
-    const dgmf::DelaunayGraph::Location fromHint = graph.Locate(p, hint);
+    const dgmf::DelaunayGraph::Location fromHint = graph.LocateExactly(p, hint);
     EXPECT_EQ(fromHint.Element, fromScratch.Element) << "hint " << hint;
   }
 }
@@ -117,7 +117,7 @@ TEST(DelaunayGraph, PointOutsideTheHullGetsTheNearestHullElement)
   dgmf::DelaunayGraph graph(2, square, 4);
   ASSERT_EQ(graph.GetNumberOfElements(), 2u);
   const double p[3] = { 2.0, 0.5, 0.0 };
-  const dgmf::DelaunayGraph::Location location = graph.Locate(p, -1);
+  const dgmf::DelaunayGraph::Location location = graph.LocateExactly(p, -1);
   EXPECT_TRUE(location.Outside);
   ASSERT_GE(location.Element, 0);
   double sum = 0.0;

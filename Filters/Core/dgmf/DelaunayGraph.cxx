@@ -434,40 +434,6 @@ std::int32_t DelaunayGraph::GetSeedElement(const double p[3]) const
   return this->SeedGrid[this->SeedCell(p)];
 }
 
-bool DelaunayGraph::Walk(const double p[3], std::int32_t start, int maximumSteps, Location& result) const
-{
-  // Visibility walk: cross the face opposite the most negative barycentric coordinate.
-  const int n = this->Dimension + 1;
-  std::int32_t e = start;
-  for (int step = 0; step <= maximumSteps; ++step)
-  {
-    if (this->ComputeWeights(e, p, result.Weights))
-    {
-      result.Element = e;
-      result.Outside = false;
-      ClampWeights(result.Weights, n);
-      return true;
-    }
-    const std::int32_t next = this->Records[static_cast<std::size_t>(e)].Neighbors[MostNegativeWeight(result.Weights, this->Dimension)];
-    if (next < 0)
-    {
-      return false; // leaving the hull: CGAL decides exactly
-    }
-    e = next;
-  }
-  return false;
-}
-
-DelaunayGraph::Location DelaunayGraph::Locate(const double p[3], std::int32_t hint) const
-{
-  Location result;
-  if (hint >= 0 && this->Walk(p, hint, MaximumWalkSteps, result))
-  {
-    return result;
-  }
-  return this->LocateExactly(p, hint);
-}
-
 DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int32_t hint) const
 {
   Location result;

@@ -18,7 +18,8 @@ namespace dgmf
 /**
  * @class DelaunayGraph
  * @brief Delaunay graph of a set of points, built with CGAL (exact predicates, inexact
- * constructions), with point location by a walk that starts from a hint element.
+ * constructions), with the element records the point location walks on (LocateBlock) and CGAL's
+ * exact location as its fallback.
  *
  * Vertices are the distinct input points; coincident input points share one vertex (see
  * GetVertexOfPoint). Elements are the finite triangles (2D) or tetrahedra (3D), numbered
@@ -34,7 +35,7 @@ namespace dgmf
  * the dimension (fewer than 3 (2D) or 4 (3D) points, or all collinear (2D) or coplanar (3D)), and
  * when a coordinate is not finite.
  *
- * Locate() and ComputeWeights() are const and may be called from several threads at once.
+ * LocateExactly() and ComputeWeights() are const and may be called from several threads at once.
  */
 class DelaunayGraph
 {
@@ -89,23 +90,6 @@ public:
   bool ComputeWeights(std::int32_t e, const double p[3], double weights[4]) const;
 
   /**
-   * Locates `p`: tests element `hint` first (if >= 0); when `p` is not in it, walks from it across
-   * the face opposite the most negative barycentric coordinate (a visibility walk on the graph's
-   * element adjacency, a few steps for a nearby hint), and only if that walk leaves the hull or
-   * does not converge in MaximumWalkSteps, locates with CGAL's exact walk from the hint.
-   * A point outside the convex hull gets the hull element across the hull face it lies beyond,
-   * with its barycentric coordinates clamped to >= 0 and normalised, and Outside = true.
-   */
-  Location Locate(const double p[3], std::int32_t hint) const;
-
-  /**
-   * The visibility walk alone: from element `start`, at most `maximumSteps` steps. Returns true
-   * and fills `result` when `p` was found; false when the walk would leave the hull or needs more
-   * steps.
-   */
-  bool Walk(const double p[3], std::int32_t start, int maximumSteps, Location& result) const;
-
-  /**
    * Number of elements, positively oriented in the original coordinates, whose orientation is not
    * positive when every vertex is displaced by `vertexDisplacements` (3 doubles per vertex): the
    * graph inversions that make DGM fail. Exact predicates.
@@ -114,12 +98,6 @@ public:
 
   /// Number of elements that are flat in the original (unperturbed) coordinates.
   std::size_t GetNumberOfFlatElements() const { return this->FlatElements; }
-
-  /// Elements across the faces of element `e`: neighbour k is opposite vertex k (-1 on the hull).
-  const std::int32_t* GetNeighbors(std::int32_t e) const
-  {
-    return this->Records[static_cast<std::size_t>(e)].Neighbors;
-  }
 
   /// Corners and neighbours of element `e`, as the walk reads them.
   const WalkRecord& GetWalkRecord(std::int32_t e) const
@@ -143,7 +121,10 @@ public:
 
   /**
    * Locates `p` with CGAL's exact walk, starting from element `hint` (or CGAL's default start
-   * when `hint` < 0). Points outside the hull are handled as in Locate().
+   * when `hint` < 0). A point outside the convex hull gets the hull element across the hull face
+   * it lies beyond, with its barycentric coordinates clamped to >= 0 and normalised, and
+   * Outside = true. The fast location of many points is LocateBlock's walks; this is their exact
+   * fallback.
    */
   Location LocateExactly(const double p[3], std::int32_t hint) const;
 
