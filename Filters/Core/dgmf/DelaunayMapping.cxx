@@ -3,13 +3,9 @@
 #include "dgmf/BlockLocation.h"
 
 #include <algorithm>
-#include <array>
-#include <limits>
 #include <chrono>
-#include <cstring>
 #include <exception>
 #include <stdexcept>
-#include <string>
 
 namespace dgmf
 {
@@ -60,8 +56,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           return;
         }
         this->NodeElement.assign(numberOfNodes, NotLocated);
-        this->Weights.reset(new double[numberOfNodes * static_cast<std::size_t>(n)]);
-        std::memset(this->Weights.get(), 0, numberOfNodes * static_cast<std::size_t>(n) * sizeof(double));
+        this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
         if (alongside)
         {
           alongside();
@@ -141,7 +136,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
       {
         const std::size_t begin = waveBegin + piece * pieceLength;
         counts[piece] = LocateBlock(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
-          this->NodeElement.data(), this->Weights.get(), hintStride, waveBegin);
+          this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
       });
     for (const BlockLocationCounts& count : counts)
     {
@@ -156,7 +151,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
 std::size_t DelaunayMapping::GetMemorySize() const
 {
   return this->Graph->GetMemorySize() + this->BoundaryNodes.capacity() * sizeof(std::int32_t) +
-    this->NodeElement.capacity() * sizeof(std::int32_t) + this->NodeElement.size() * static_cast<std::size_t>(this->GetDimension() + 1) * sizeof(double) +
+    this->NodeElement.capacity() * sizeof(std::int32_t) + this->Weights.capacity() * sizeof(double) +
     this->Kinds.capacity() * sizeof(NodeKind) + this->VertexKind.capacity() * sizeof(NodeKind) + this->VertexNode.capacity() * sizeof(std::int32_t);
 }
 

@@ -107,7 +107,7 @@ public:
   /// Barycentric coordinates of interior node `i` in its element (dim+1 values).
   const double* GetWeights(std::size_t i) const
   {
-    return this->Weights.get() + i * static_cast<std::size_t>(this->GetDimension() + 1);
+    return this->Weights.data() + i * static_cast<std::size_t>(this->GetDimension() + 1);
   }
 
   /// Kind of graph vertex `v`: StaticBoundary or MovingBoundary.
@@ -140,7 +140,7 @@ private:
   std::vector<NodeKind> Kinds;
   /// >= 0: element of an interior node; < 0: -(vertex + 1) for a boundary node.
   std::vector<std::int32_t> NodeElement;
-  std::unique_ptr<double[]> Weights; ///< dim+1 per node
+  std::vector<double> Weights; ///< dim+1 per node
   std::vector<NodeKind> VertexKind;
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
