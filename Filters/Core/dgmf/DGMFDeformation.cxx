@@ -61,16 +61,13 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
   const std::vector<double> vertexDeformation =
     interpolate ? GatherVertexDeformation(mapping, displacement) : std::vector<double>();
   const DampedRigidMotion damped(motion);
-  const std::size_t nodes = mapping.GetNumberOfNodes();
-  const std::size_t blockSize = DelaunayMapping::BlockSize;
-  ForEachBlock(parallelFor, (nodes + blockSize - 1) / blockSize,
-    [&](std::size_t block)
+  mapping.ForEachNodeBlock(parallelFor,
+    [&](std::size_t begin, std::size_t end)
     {
-      const std::size_t end = std::min(block * blockSize + blockSize, nodes);
       // Interior nodes damped by the motion alone go by two (ApplyPair, the same bits as Apply):
       // `pending` is one waiting for its partner.
       std::size_t pending = end;
-      for (std::size_t i = block * blockSize; i < end; ++i)
+      for (std::size_t i = begin; i < end; ++i)
       {
         const double* x = points + 3 * i;
         double* out = deformed + 3 * i;

@@ -59,16 +59,24 @@ public:
   template <typename Body>
   void ForEachNode(const ParallelFor& parallelFor, Body&& body) const
   {
-    const std::size_t nodes = this->GetNumberOfNodes();
-    ForEachBlock(parallelFor, (nodes + BlockSize - 1) / BlockSize,
-      [&](std::size_t block)
+    this->ForEachNodeBlock(parallelFor,
+      [&](std::size_t begin, std::size_t end)
       {
-        const std::size_t end = std::min(block * BlockSize + BlockSize, nodes);
-        for (std::size_t i = block * BlockSize; i < end; ++i)
+        for (std::size_t i = begin; i < end; ++i)
         {
           body(i);
         }
       });
+  }
+
+  /// Calls body(begin, end) for each of the fixed blocks of ForEachNode (for loops that carry
+  /// state from node to node within a block).
+  template <typename Body>
+  void ForEachNodeBlock(const ParallelFor& parallelFor, Body&& body) const
+  {
+    const std::size_t nodes = this->GetNumberOfNodes();
+    ForEachBlock(parallelFor, (nodes + BlockSize - 1) / BlockSize,
+      [&](std::size_t block) { body(block * BlockSize, std::min(block * BlockSize + BlockSize, nodes)); });
   }
 
   /**
