@@ -57,19 +57,31 @@ constexpr double kCubeRootHigh = 1e300;
  * (quadratic convergence). Plain arithmetic: it does not depend on the platform's math library,
  * and the eight corners of a hexahedron pipeline through it (divisions would dominate the metric).
  */
-inline double InverseCubeRootInRange(double x)
+inline double InverseCubeRootGuess(double x)
 {
   std::uint64_t bits;
   std::memcpy(&bits, &x, sizeof bits);
   bits = 0x553EF0FF289DD796ull - bits / 3;
   double y;
   std::memcpy(&y, &bits, sizeof y);
-  const double third = x * (1.0 / 3.0);
+  return y;
+}
+
+/// The Newton steps from the guess `y`, for one value (T = double) or two (a two-lane vector).
+template <typename T>
+inline T InverseCubeRootNewton(T x, T y)
+{
+  const T third = x * (1.0 / 3.0);
   for (int step = 0; step < 4; ++step)
   {
     y = y * (4.0 / 3.0 - third * (y * y * y));
   }
   return y;
+}
+
+inline double InverseCubeRootInRange(double x)
+{
+  return InverseCubeRootNewton(x, InverseCubeRootGuess(x));
 }
 
 /// factor * cbrt(numerator / denominator), as factor * n * (n^2 d)^(-1/3).
@@ -259,22 +271,33 @@ constexpr int kHexCornerEdges[8][3] = { { 0, 3, 8 }, { 1, 0, 9 }, { 2, 1, 10 }, 
   { 7, 4, 8 }, { 4, 5, 9 }, { 5, 6, 10 }, { 6, 7, 11 } };
 constexpr double kHexCornerSign[8] = { -1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0 };
 
-struct HexEdges
+/// The 12 edge vectors of a hexahedron and their squared lengths (of one, or two at once).
+template <typename T>
+struct HexEdgesOf
 {
-  Vec3 Vector[12];
-  double Length2[12];
+  Vec3Of<T> Vector[12];
+  T Length2[12];
 };
+using HexEdges = HexEdgesOf<double>;
 
-inline void ComputeHexEdges(const double* points, HexEdges& edges)
+/// `load(i)` gives corner i.
+template <typename T, typename Loader>
+inline void ComputeHexEdges(const Loader& load, HexEdgesOf<T>& edges)
 {
   for (int e = 0; e < 12; ++e)
   {
-    edges.Vector[e] = Load(points, kHexEdges[e][1]) - Load(points, kHexEdges[e][0]);
+    edges.Vector[e] = load(kHexEdges[e][1]) - load(kHexEdges[e][0]);
     edges.Length2[e] = Dot(edges.Vector[e], edges.Vector[e]);
   }
 }
 
-inline double HexCornerDeterminant(const HexEdges& edges, int corner)
+inline void ComputeHexEdges(const double* points, HexEdges& edges)
+{
+  ComputeHexEdges([points](int i) { return Load(points, i); }, edges);
+}
+
+template <typename T>
+inline T HexCornerDeterminant(const HexEdgesOf<T>& edges, int corner)
 {
   const int* e = kHexCornerEdges[corner];
   return kHexCornerSign[corner] * Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
@@ -325,51 +348,22 @@ typedef double Pair __attribute__((vector_size(16)));
 /// Vec3 of two hexahedra at once.
 using PairVec3 = Vec3Of<Pair>;
 
-struct PairHexEdges
-{
-  PairVec3 Vector[12];
-  Pair Length2[12];
-};
+using PairHexEdges = HexEdgesOf<Pair>;
 
 inline void ComputeHexEdges(const double* a, const double* b, PairHexEdges& edges)
 {
-  auto load = [a, b](int i) -> PairVec3 {
-    return { Pair{ a[3 * i], b[3 * i] }, Pair{ a[3 * i + 1], b[3 * i + 1] },
-      Pair{ a[3 * i + 2], b[3 * i + 2] } };
-  };
-  for (int e = 0; e < 12; ++e)
-  {
-    edges.Vector[e] = load(kHexEdges[e][1]) - load(kHexEdges[e][0]);
-    edges.Length2[e] = Dot(edges.Vector[e], edges.Vector[e]);
-  }
-}
-
-inline Pair HexCornerDeterminant(const PairHexEdges& edges, int corner)
-{
-  const int* e = kHexCornerEdges[corner];
-  return kHexCornerSign[corner] * Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
+  ComputeHexEdges(
+    [a, b](int i) -> PairVec3 {
+      return { Pair{ a[3 * i], b[3 * i] }, Pair{ a[3 * i + 1], b[3 * i + 1] },
+        Pair{ a[3 * i + 2], b[3 * i + 2] } };
+    },
+    edges);
 }
 
 /// InverseCubeRootInRange of two values (the bit-level guess lane by lane, the Newton steps together).
 inline Pair InverseCubeRootInRange(Pair x)
 {
-  Pair y;
-  for (int l = 0; l < 2; ++l)
-  {
-    const double lane = x[l];
-    std::uint64_t bits;
-    std::memcpy(&bits, &lane, sizeof bits);
-    bits = 0x553EF0FF289DD796ull - bits / 3;
-    double guess;
-    std::memcpy(&guess, &bits, sizeof guess);
-    y[l] = guess;
-  }
-  const Pair third = x * (1.0 / 3.0);
-  for (int step = 0; step < 4; ++step)
-  {
-    y = y * (4.0 / 3.0 - third * (y * y * y));
-  }
-  return y;
+  return InverseCubeRootNewton(x, Pair{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]) });
 }
 
 /**
