@@ -114,37 +114,34 @@ private:
       const double scaled = f * Steps;
       int k = static_cast<int>(scaled);
       k = k < 0 ? 0 : (k > Steps ? Steps : k);
-      const double rho = this->AnglePerStep * (scaled - k);
-      const double r2 = rho * rho;
-      // Taylor series of sin and cos to rho^9 and rho^8 (multiplications by reciprocals of the
-      // factorial ratios: divisions here would dominate the cost of a node).
-      constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
-      constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
-      // Angles up to ShortSeriesLimit per step need the series only to rho^5 and rho^4.
-      const double sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
-                                          : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
-      const double cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
-                                          : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
-      const double sk = this->Sin[static_cast<std::size_t>(k)];
-      const double ck = this->Cos[static_cast<std::size_t>(k)];
-      s = sk * cr + ck * sr;
-      c = ck * cr - sk * sr;
+      this->Combine(this->AnglePerStep * (scaled - k), this->Sin[static_cast<std::size_t>(k)],
+        this->Cos[static_cast<std::size_t>(k)], s, c);
     }
 
     /// SinCos for two factors at once (the same operations, lane by lane), given their table
     /// entries `k` and remainders `frac` (TableSplit: the same for every angle).
     void SinCos(const int k[2], Pair frac, Pair& s, Pair& c) const
     {
-      const Pair rho = this->AnglePerStep * frac;
-      const Pair r2 = rho * rho;
-      constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
-      constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
-      const Pair sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
-                                        : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
-      const Pair cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
-                                        : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])], this->Sin[static_cast<std::size_t>(k[1])] };
       const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])], this->Cos[static_cast<std::size_t>(k[1])] };
+      this->Combine(this->AnglePerStep * frac, sk, ck, s, c);
+    }
+
+    /// sin and cos of (table angle + rho) from the table's sk, ck and the Taylor series of rho,
+    /// for one node (T = double) or two (T = Pair).
+    template <typename T>
+    void Combine(T rho, T sk, T ck, T& s, T& c) const
+    {
+      const T r2 = rho * rho;
+      // Taylor series of sin and cos to rho^9 and rho^8 (multiplications by reciprocals of the
+      // factorial ratios: divisions here would dominate the cost of a node).
+      constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
+      constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
+      // Angles up to ShortSeriesLimit per step need the series only to rho^5 and rho^4.
+      const T sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
+                                     : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
+      const T cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
+                                     : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       s = sk * cr + ck * sr;
       c = ck * cr - sk * sr;
     }
