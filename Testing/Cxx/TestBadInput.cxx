@@ -15,7 +15,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -28,17 +28,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkUnstructuredGrid> ReadCopy(const std::string& name, vtkIdType points)
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/" + name).c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), points) << name;
-  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  copy->DeepCopy(reader->GetOutput());
-  return copy;
-}
-
 /// Runs the filter and collects its error and warning messages.
 struct FilterRun
 {
@@ -85,7 +74,7 @@ double Field(vtkUnstructuredGrid* mesh, const char* name)
 
 TEST(BadInput, NonFiniteCoordinatesOrDisplacements)
 {
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   double p[3];
   mesh->GetPoint(100, p);
   p[1] = std::numeric_limits<double>::quiet_NaN();
@@ -94,7 +83,7 @@ TEST(BadInput, NonFiniteCoordinatesOrDisplacements)
   EXPECT_EQ(nanPoint.Execute(mesh)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(FilterRun::Has(nanPoint.Errors, "NaN or infinite point coordinates"));
 
-  auto clean = ReadCopy("rotating_circle.vtu", 822);
+  auto clean = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* d = clean->GetPointData()->GetArray("Displacement");
   d->SetComponent(5, 0, std::numeric_limits<double>::infinity());
   FilterRun infDisplacement;
@@ -105,7 +94,7 @@ TEST(BadInput, NonFiniteCoordinatesOrDisplacements)
 
 TEST(BadInput, NoBoundaryNodeAndNoMovingNode)
 {
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   std::vector<double> saved(mesh->GetNumberOfPoints());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -138,7 +127,7 @@ TEST(BadInput, NoBoundaryNodeAndNoMovingNode)
 TEST(BadInput, CoplanarBoundaryOf3DMeshIsRejected)
 {
   // A 3D mesh whose marked boundary nodes all lie in the plane z = -5.
-  auto mesh = ReadCopy("sphere_in_box.vtu", 3200);
+  auto mesh = dgmf_test::ReadShippedMesh("sphere_in_box.vtu", 3200);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
@@ -154,7 +143,7 @@ TEST(BadInput, CoplanarBoundaryOf3DMeshIsRejected)
 TEST(BadInput, PlanarMeshOffZeroAndTiltedMesh)
 {
   // z = 3.5 everywhere: still 2D, and z is kept.
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     double p[3];
@@ -186,7 +175,7 @@ TEST(BadInput, PlanarMeshOffZeroAndTiltedMesh)
 TEST(BadInput, CoincidentBoundaryNodes)
 {
   // Two extra nodes on top of a circle node: one moving (a duplicate), one static (a conflict).
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   vtkIdType circleNode = 0;
   while (marker->GetTuple1(circleNode) != 2)
@@ -220,7 +209,7 @@ TEST(BadInput, NodesOutsideTheGraphUseTheNearestElementAndAreCounted)
 {
   // The boundary nodes above y = 4 (the top side and the top of the other two) are not marked:
   // the graph's hull ends below y = 4, and the mesh nodes above it fall outside the graph.
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
@@ -246,7 +235,7 @@ TEST(BadInput, NodesOutsideTheGraphUseTheNearestElementAndAreCounted)
 
 TEST(BadInput, MixedHigherOrderAndPolygonCellsAreDeformed)
 {
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   // A quadratic triangle on the corners of cell 0 with three new mid-edge nodes, and a polygon.
   vtkIdType npts;
@@ -292,7 +281,7 @@ TEST(BadInput, MixedHigherOrderAndPolygonCellsAreDeformed)
 
 TEST(BadInput, InvertingMotionIsFlaggedOrRefused)
 {
-  auto mesh = ReadCopy("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   FilterRun produce;
   produce.Filter->SetMethodToDGM();
   produce.Filter->SetRotationAngles(0, 0, 90);
@@ -322,7 +311,7 @@ TEST(BadInput, InvertingMotionIsFlaggedOrRefused)
 
 TEST(DataSafety, PropertyChangesInAnyOrderGiveTheFreshResult)
 {
-  auto mesh = ReadCopy("rotating_rectangle.vtu", 768);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_rectangle.vtu", 768);
   std::mt19937 random(7);
   vtkNew<vtkDGMFDeformFilter> reused;
   reused->SetInputData(mesh);

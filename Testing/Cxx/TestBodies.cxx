@@ -10,7 +10,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -20,18 +20,6 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-vtkSmartPointer<vtkUnstructuredGrid> ReadCopy(const std::string& name, vtkIdType points, vtkIdType cells)
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/" + name).c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), points);
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), cells);
-  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  copy->DeepCopy(reader->GetOutput());
-  return copy;
-}
 
 /// Displacement of a rotation by `degrees` about (cx, cy) at the nodes where `select` holds.
 template <typename Select>
@@ -62,7 +50,7 @@ double Field(vtkUnstructuredGrid* mesh, const char* name, int component = 0)
 
 TEST(Bodies, RotationGivenOnlyAsDisplacementMatchesTheExplicitRotation)
 {
-  auto mesh = ReadCopy("rotating_circle.vtu", 822, 1529);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822, 1529);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   SetRotationDisplacement(mesh, 90.0, 0.0, 0.0, [&](vtkIdType i) { return marker->GetTuple1(i) == 2; });
 
@@ -78,7 +66,7 @@ TEST(Bodies, RotationGivenOnlyAsDisplacementMatchesTheExplicitRotation)
   EXPECT_NEAR(Field(a, "FittedRotationAxis", 2), 1.0, 1e-12);
   EXPECT_LT(Field(a, "FittedResidualRMS"), 1e-12);
 
-  auto still = ReadCopy("rotating_circle.vtu", 822, 1529);
+  auto still = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822, 1529);
   vtkNew<vtkDGMFDeformFilter> explicitRotation;
   explicitRotation->SetInputData(still);
   explicitRotation->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -97,7 +85,7 @@ TEST(Bodies, RotationGivenOnlyAsDisplacementMatchesTheExplicitRotation)
 
 TEST(Bodies, TwoCirclesTurningInOppositeDirections)
 {
-  auto mesh = ReadCopy("two_circles.vtu", 1118, 2054);
+  auto mesh = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -158,7 +146,7 @@ TEST(Bodies, TwoCirclesTurningInOppositeDirections)
   EXPECT_LT(largestChange, 0.2);
 
   // The same motions extracted from displacements give the same mesh.
-  auto displaced = ReadCopy("two_circles.vtu", 1118, 2054);
+  auto displaced = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
   vtkDataArray* ids = displaced->GetPointData()->GetArray("BodyId");
   SetRotationDisplacement(displaced, 45.0, -2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 1; });
   SetRotationDisplacement(displaced, -45.0, 2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 2; });
@@ -185,7 +173,7 @@ TEST(Bodies, TwoCirclesTurningInOppositeDirections)
 
 TEST(Bodies, BadBodyIdsGetAClearError)
 {
-  auto mesh = ReadCopy("two_circles.vtu", 1118, 2054);
+  auto mesh = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
   vtkDataArray* ids = mesh->GetPointData()->GetArray("BodyId");
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
   vtkIdType interior = 0;

@@ -16,7 +16,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -27,15 +27,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkUnstructuredGrid> ReadCircle()
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/rotating_circle.vtu").c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 822);
-  return reader->GetOutput();
-}
-
 /// The cells of `mesh` for which `keep(cell centre x)` holds, as a block with its own numbering
 /// (nodes on the cut appear in both blocks) and the point arrays of `mesh`.
 vtkSmartPointer<vtkUnstructuredGrid> Part(vtkUnstructuredGrid* mesh, bool upper)
@@ -113,7 +104,7 @@ void CheckBlock(vtkUnstructuredGrid* before, vtkUnstructuredGrid* after, const s
 
 TEST(Composite, MultiBlockIsDeformedAsOneMeshAndKeepsItsStructure)
 {
-  auto mesh = ReadCircle();
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   const auto reference = Reference(mesh);
   auto lower = Part(mesh, false);
   auto upper = Part(mesh, true);
@@ -146,7 +137,7 @@ TEST(Composite, MultiBlockIsDeformedAsOneMeshAndKeepsItsStructure)
 
 TEST(Composite, PartitionedDataSetCollection)
 {
-  auto mesh = ReadCircle();
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   const auto reference = Reference(mesh);
   auto lower = Part(mesh, false);
   auto upper = Part(mesh, true);
@@ -173,7 +164,7 @@ TEST(Composite, PartitionedDataSetCollection)
 TEST(TimeSeries, ANewInputObjectWithTheSameMeshReusesTheGraph)
 {
   // A temporal reader hands over a new grid at each time step: same points, new displacement.
-  auto mesh = ReadCircle();
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
   filter->SetDisplacementArrayName("Displacement");

@@ -16,7 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -29,18 +29,6 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-/// Reads a shipped mesh and checks it is not empty (Debian 12's expat can make reads come back empty).
-vtkSmartPointer<vtkUnstructuredGrid> ReadData(const std::string& name, vtkIdType points, vtkIdType cells)
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/" + name).c_str());
-  reader->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> mesh = reader->GetOutput();
-  EXPECT_EQ(mesh->GetNumberOfPoints(), points) << name;
-  EXPECT_EQ(mesh->GetNumberOfCells(), cells) << name;
-  return mesh;
-}
 
 /// Collects the error messages a VTK object emits.
 struct ErrorCatcher
@@ -148,7 +136,7 @@ constexpr vtkIdType SphereCells = 15892;
 
 TEST(DeformFilter, RotatingCircle90DegreesHasNoInvertedCell)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -170,7 +158,7 @@ TEST(DeformFilter, RotatingCircle90DegreesHasNoInvertedCell)
 
 TEST(DeformFilter, RAndFOnTheBoundary)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -202,7 +190,7 @@ TEST(DeformFilter, RAndFOnTheBoundary)
 
 TEST(DeformFilter, SphereInBoxTranslationAndRotation)
 {
-  auto mesh = ReadData("sphere_in_box.vtu", SpherePoints, SphereCells);
+  auto mesh = dgmf_test::ReadShippedMesh("sphere_in_box.vtu", SpherePoints, SphereCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -239,7 +227,7 @@ TEST(DeformFilter, SphereInBoxTranslationAndRotation)
 
 TEST(DeformFilter, EveryInputArrayReachesTheOutputAndTheInputIsUntouched)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   // Extra arrays of several kinds.
   vtkNew<vtkFloatArray> pointFloat;
   pointFloat->SetName("Temperature");
@@ -293,7 +281,7 @@ TEST(DeformFilter, EveryInputArrayReachesTheOutputAndTheInputIsUntouched)
 
 TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -345,7 +333,7 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
 
 TEST(DeformFilter, RepeatedDeformationReusesOutputPointsOnlyWhenNobodyElseHoldsThem)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   auto deformed = [&mesh](double angle)
   {
     vtkNew<vtkDGMFDeformFilter> fresh;
@@ -391,7 +379,7 @@ TEST(DeformFilter, RepeatedDeformationReusesOutputPointsOnlyWhenNobodyElseHoldsT
 
 TEST(DeformFilter, SameBitsWithOneAndTwoThreads)
 {
-  auto mesh = ReadData("sphere_in_box.vtu", SpherePoints, SphereCells);
+  auto mesh = dgmf_test::ReadShippedMesh("sphere_in_box.vtu", SpherePoints, SphereCells);
   std::string results[2];
   for (int threads = 1; threads <= 2; ++threads)
   {
@@ -410,7 +398,7 @@ TEST(DeformFilter, BoundaryFoundFromTheMeshWhenThereIsNoMarker)
 {
   // The rotation given as a displacement of the circle nodes, without the marker array: the
   // circle (non-zero displacement) moves, the square (zero displacement) is static.
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   vtkNew<vtkUnstructuredGrid> input;
   input->DeepCopy(mesh);
   vtkDataArray* marker = input->GetPointData()->GetArray("BoundaryMarker");
@@ -457,7 +445,7 @@ TEST(DeformFilter, BoundaryFoundFromTheMeshWhenThereIsNoMarker)
 
 TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
 {
-  auto mesh = ReadData("rotating_circle.vtu", CirclePoints, CircleCells);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
   struct Case
   {
     std::string Name;

@@ -11,7 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -23,18 +23,6 @@ namespace
 constexpr double Pi = 3.14159265358979323846;
 constexpr vtkIdType SlabPoints = 2810;
 constexpr vtkIdType SlabCells = 13781;
-
-vtkSmartPointer<vtkUnstructuredGrid> ReadSlab()
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/thin_slab.vtu").c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), SlabPoints);
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), SlabCells);
-  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  copy->DeepCopy(reader->GetOutput());
-  return copy;
-}
 
 /// The slab rotated by `degrees` about the z axis through the origin, with the given options.
 vtkSmartPointer<vtkUnstructuredGrid> Rotate(
@@ -95,7 +83,7 @@ void ExpectBoundaryExact(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output
 // degrees and leaves very bad cells at 60.
 TEST(LargeMotion, OneStepInvertsCellsAtNinetyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> out90 = Rotate(slab, 90.0, 1, 0.0);
   EXPECT_GT(Field(out90, "InvertedCellCount"), 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> out60 = Rotate(slab, 60.0, 1, 0.0);
@@ -106,7 +94,7 @@ TEST(LargeMotion, OneStepInvertsCellsAtNinetyDegrees)
 
 TEST(LargeMotion, GuardGivesNoInvertedCellAndMinimumAboveThresholdAtNinetyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   for (const double threshold : { 0.2, 0.3 })
   {
     vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 90.0, 0, threshold);
@@ -125,7 +113,7 @@ TEST(LargeMotion, GuardGivesNoInvertedCellAndMinimumAboveThresholdAtNinetyDegree
 
 TEST(LargeMotion, GuardReachesThresholdAtSixtyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 60.0, 0, 0.3);
   EXPECT_EQ(Field(out, "InvertedCellCount"), 0.0);
   EXPECT_GE(Field(out, "SizeSkewMinimum"), 0.3);
@@ -136,7 +124,7 @@ TEST(LargeMotion, GuardReachesThresholdAtSixtyDegrees)
 // single-step result.
 TEST(LargeMotion, GuardIsLocal)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> single = Rotate(slab, 90.0, 1, 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> guarded = Rotate(slab, 90.0, 1, 0.2);
   EXPECT_EQ(Field(guarded, "SubStepsUsed"), 1.0);
@@ -160,7 +148,7 @@ TEST(LargeMotion, GuardIsLocal)
 // Fixed sub-steps: the number asked for, the boundary on its path, the input unchanged.
 TEST(LargeMotion, FixedSubStepsFollowThePath)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkUnstructuredGrid> before;
   before->DeepCopy(slab);
   vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 90.0, 4, 0.2);
@@ -183,7 +171,7 @@ TEST(LargeMotion, FixedSubStepsFollowThePath)
 // defaults, and a one-step run with a zero threshold takes the single-step path.
 TEST(LargeMotion, OptionOffIsExactlyTheSingleStep)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkDGMFDeformFilter> defaults;
   defaults->SetInputData(slab);
   defaults->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -209,7 +197,7 @@ TEST(LargeMotion, OptionOffIsExactlyTheSingleStep)
 // at interior nodes (same graph, same f, same motion): automatic mode with nothing to reject.
 TEST(LargeMotion, AutomaticModeWithoutBadCellsIsOneStep)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> single = Rotate(slab, 10.0, 1, 0.0);
   ASSERT_EQ(Field(single, "InvertedCellCount"), 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> automatic = Rotate(slab, 10.0, 0, 0.0);
@@ -229,7 +217,7 @@ TEST(LargeMotion, AutomaticModeWithoutBadCellsIsOneStep)
 
 TEST(LargeMotion, RefusedWithBodiesOrExtractedMotion)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = ReadSlab();
+  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(slab);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");

@@ -16,7 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -30,16 +30,6 @@ constexpr double Pi = 3.14159265358979323846;
 const int AllMethods[] = { vtkDGMFDeformFilter::DGMF, vtkDGMFDeformFilter::DGM,
   vtkDGMFDeformFilter::DGRBF, vtkDGMFDeformFilter::RBF, vtkDGMFDeformFilter::IDW };
 const char* const MethodNames[] = { "DGMF", "DGM", "DGRBF", "RBF", "IDW" };
-
-vtkSmartPointer<vtkUnstructuredGrid> ReadData(const std::string& name, vtkIdType points)
-{
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((std::string(DGMF_DATA_DIR) + "/" + name).c_str());
-  reader->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> mesh = reader->GetOutput();
-  EXPECT_EQ(mesh->GetNumberOfPoints(), points) << name;
-  return mesh;
-}
 
 double Field(vtkUnstructuredGrid* mesh, const char* name)
 {
@@ -64,7 +54,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Deform(vtkUnstructuredGrid* mesh, int metho
 
 TEST(Methods, EveryMethodReproducesTheBoundaryMotion)
 {
-  auto mesh = ReadData("rotating_rectangle.vtu", 768);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_rectangle.vtu", 768);
   const double angles[3] = { 0, 0, 30 };
   const double translation[3] = { 0.2, -0.1, 0 };
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
@@ -100,7 +90,7 @@ TEST(Methods, EveryMethodReproducesTheBoundaryMotion)
 
 TEST(Methods, PureTranslationIsExactEverywhere)
 {
-  auto mesh = ReadData("sphere_in_box.vtu", 3200);
+  auto mesh = dgmf_test::ReadShippedMesh("sphere_in_box.vtu", 3200);
   // Every boundary node moves: mark the box as moving too.
   vtkNew<vtkUnstructuredGrid> allMoving;
   allMoving->DeepCopy(mesh);
@@ -135,7 +125,7 @@ TEST(Methods, PureTranslationIsExactEverywhere)
 TEST(Methods, DGMFKeepsTheRotatingRectangleBetterThanDGMAt60Degrees)
 {
   // The paper's Fig. 4: DGM degrades quickly with the rotation angle, DGMF does not.
-  auto mesh = ReadData("rotating_rectangle.vtu", 768);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_rectangle.vtu", 768);
   const double angles[3] = { 0, 0, 60 };
   const double none[3] = { 0, 0, 0 };
   auto dgmf = Deform(mesh, vtkDGMFDeformFilter::DGMF, angles, none);
@@ -150,7 +140,7 @@ TEST(Methods, DGMFKeepsTheRotatingRectangleBetterThanDGMAt60Degrees)
 
 TEST(Methods, DGMCountsInvertedGraphElements)
 {
-  auto mesh = ReadData("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   const double angles[3] = { 0, 0, 90 };
   const double none[3] = { 0, 0, 0 };
   auto out = Deform(mesh, vtkDGMFDeformFilter::DGM, angles, none);
@@ -160,7 +150,7 @@ TEST(Methods, DGMCountsInvertedGraphElements)
 
 TEST(Methods, GreedyRBFMeetsItsToleranceQuickly)
 {
-  auto mesh = ReadData("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -245,7 +235,7 @@ TEST(Methods, TenThousandBoundaryNodesNeitherCrashNorHang)
 
 TEST(Methods, QualityFilterMeasuresAnyPairOfMeshes)
 {
-  auto mesh = ReadData("rotating_circle.vtu", 822);
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   const double angles[3] = { 0, 0, 45 };
   const double none[3] = { 0, 0, 0 };
   auto deformed = Deform(mesh, vtkDGMFDeformFilter::RBF, angles, none);
@@ -270,7 +260,7 @@ TEST(Methods, QualityFilterMeasuresAnyPairOfMeshes)
   EXPECT_EQ(Field(identity->GetOutput(), "InvertedCellCount"), 0.0);
 
   // Different meshes: a clear error and no output.
-  auto other = ReadData("rotating_rectangle.vtu", 768);
+  auto other = dgmf_test::ReadShippedMesh("rotating_rectangle.vtu", 768);
   vtkNew<vtkSizeSkewQualityFilter> mismatch;
   mismatch->SetInputData(mesh);
   mismatch->SetReferenceData(other);
