@@ -19,8 +19,8 @@ namespace dgmf_bench
  * grid of A x B x C nodes per edge, mapped onto the sphere (layer 0, moving) and onto the box
  * [-Scale, Scale]^3 (last layer, static), with Layers layers of nodes in between (linear spacing).
  * Nodes per layer: ABC - (A-2)(B-2)(C-2); boundary nodes: twice that; nodes: Layers times that.
- * Node numbering is layer by layer, face by face and row by row within a layer. The point array BoundaryMarker
- * marks the sphere 2 and the box 1.
+ * Node numbering is layer by layer, face by face and row by row within a layer. The point array
+ * BoundaryMarker marks the sphere 2 and the box 1.
  */
 struct LayeredMeshSize
 {

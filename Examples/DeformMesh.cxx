@@ -36,5 +36,6 @@ int main(int argc, char* argv[])
   writer->SetInputConnection(deform->GetOutputPort());
   writer->SetFileName(argv[2]);
   writer->SetDataModeToBinary(); // inline binary: appended mode breaks with Debian 12's expat
-  return writer->Write() && deform->GetOutput()->GetNumberOfPoints() > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return writer->Write() && deform->GetOutput()->GetNumberOfPoints() > 0 ? EXIT_SUCCESS
+                                                                         : EXIT_FAILURE;
 }

@@ -50,7 +50,8 @@ const char* const Usage =
 
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+    s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)

@@ -51,8 +51,8 @@ XML_Parser XML_ParserCreateNS(const XML_Char* encoding, XML_Char separator)
   return parser;
 }
 
-XML_Parser XML_ParserCreate_MM(const XML_Char* encoding, const XML_Memory_Handling_Suite* memory,
-  const XML_Char* separator)
+XML_Parser XML_ParserCreate_MM(
+  const XML_Char* encoding, const XML_Memory_Handling_Suite* memory, const XML_Char* separator)
 {
   CreateMMFunction create = (CreateMMFunction)dlsym(RTLD_NEXT, "XML_ParserCreate_MM");
   XML_Parser parser = create ? create(encoding, memory, separator) : NULL;

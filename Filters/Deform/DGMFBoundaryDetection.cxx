@@ -5,7 +5,6 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkGenericCell.h"
 #include "vtkGeometryFilter.h"
 #include "vtkIdList.h"
@@ -13,12 +12,13 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 #include <utility>
 
@@ -263,7 +263,8 @@ std::vector<double> ComputeBoundaryNodeWeights(
         normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
         normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
       }
-      measure = 0.5 * std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      measure =
+        0.5 * std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     }
     for (vtkIdType k = 0; k < count; ++k)
     {

@@ -44,7 +44,8 @@ std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdT
 
 /**
  * One value per point: the boundary area (3D) or length (2D) a node represents, each facet's
- * measure shared equally among its nodes; 0 for nodes on no facet. `points` holds 3 doubles per point.
+ * measure shared equally among its nodes; 0 for nodes on no facet. `points` holds 3 doubles per
+ * point.
  */
 std::vector<double> ComputeBoundaryNodeWeights(
   const BoundaryFacets& facets, const double* points, vtkIdType numberOfPoints, int dimension);

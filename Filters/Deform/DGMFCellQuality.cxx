@@ -144,7 +144,8 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         else
         {
           dgmf::CellQuality first;
-          dgmf::ComputeHexSizeSkewPair(original[1], deformed[1], original[0], deformed[0], first, quality);
+          dgmf::ComputeHexSizeSkewPair(
+            original[1], deformed[1], original[0], deformed[0], first, quality);
           values[pending] = first.SizeSkew;
           flags[pending] = first.Inverted ? 1 : 0;
           pending = end;
@@ -171,8 +172,8 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0 ? 1 : 0;
     }
   }
-  return dgmf::SummarizeQuality(values, flags, static_cast<std::size_t>(numberOfCells),
-    ghost.empty() ? nullptr : ghost.data());
+  return dgmf::SummarizeQuality(
+    values, flags, static_cast<std::size_t>(numberOfCells), ghost.empty() ? nullptr : ghost.data());
 }
 
 } // namespace dgmf_vtk

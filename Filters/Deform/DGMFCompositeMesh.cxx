@@ -55,8 +55,8 @@ CoordinateKey KeyOf(const double p[3])
 }
 } // namespace
 
-CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::string>& arrays,
-  const std::string& markerName)
+CompositeMesh::CompositeMesh(
+  vtkCompositeDataSet* input, const std::vector<std::string>& arrays, const std::string& markerName)
   : Input(input)
   , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
 {
@@ -123,7 +123,8 @@ CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::
         }
         if (arrays[a] == markerName)
         {
-          target->SetComponent(node, 0, std::max(target->GetComponent(node, 0), source->GetComponent(i, 0)));
+          target->SetComponent(
+            node, 0, std::max(target->GetComponent(node, 0), source->GetComponent(i, 0)));
         }
         else
         {
@@ -155,7 +156,8 @@ CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::
         // Polyhedra need their faces, renumbered like their points.
         vtkNew<vtkIdList> faces;
         grid->GetFaceStream(c, faces);
-        std::vector<vtkIdType> stream(faces->GetPointer(0), faces->GetPointer(0) + faces->GetNumberOfIds());
+        std::vector<vtkIdType> stream(
+          faces->GetPointer(0), faces->GetPointer(0) + faces->GetNumberOfIds());
         vtkIdType nfaces = stream.empty() ? 0 : stream[0];
         for (std::size_t k = 1; k < stream.size();)
         {
@@ -166,8 +168,8 @@ CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::
           }
         }
         std::vector<vtkIdType> faceList(stream.begin() + (stream.empty() ? 0 : 1), stream.end());
-        this->Merged->InsertNextCell(type, cellPoints->GetNumberOfIds(), cellPoints->GetPointer(0),
-          nfaces, faceList.data());
+        this->Merged->InsertNextCell(
+          type, cellPoints->GetNumberOfIds(), cellPoints->GetPointer(0), nfaces, faceList.data());
       }
       else
       {
@@ -193,8 +195,9 @@ CompositeMesh::CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::
   }
 }
 
-void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
-  const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const
+void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
+  const std::vector<std::string>& pointArrays, const std::vector<std::string>& cellArrays,
+  vtkCompositeDataSet* output) const
 {
   output->CopyStructure(this->Input);
   auto iterator = vtk::TakeSmartPointer(this->Input->NewIterator());
@@ -203,7 +206,8 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed, const std::vector<std
   for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
   {
     vtkDataObject* block = iterator->GetCurrentDataObject();
-    if (next >= this->Leaves.size() || this->Leaves[next].FlatIndex != iterator->GetCurrentFlatIndex())
+    if (next >= this->Leaves.size() ||
+      this->Leaves[next].FlatIndex != iterator->GetCurrentFlatIndex())
     {
       output->SetDataSet(iterator, block); // not merged: passed as it is
       continue;

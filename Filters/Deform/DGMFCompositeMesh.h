@@ -52,9 +52,9 @@ private:
   vtkSmartPointer<vtkUnstructuredGrid> Merged;
   struct Leaf
   {
-    unsigned int FlatIndex;          ///< the leaf's flat index in the input
-    std::vector<vtkIdType> NodeOf;   ///< merged node of each of the leaf's points
-    vtkIdType FirstCell, Cells;      ///< the leaf's cells in the merged grid
+    unsigned int FlatIndex;        ///< the leaf's flat index in the input
+    std::vector<vtkIdType> NodeOf; ///< merged node of each of the leaf's points
+    vtkIdType FirstCell, Cells;    ///< the leaf's cells in the merged grid
   };
   std::vector<Leaf> Leaves;
   int Skipped = 0;

@@ -80,8 +80,8 @@ std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
     total += lengths[static_cast<std::size_t>(p)];
   }
   std::vector<double> received(static_cast<std::size_t>(std::max<vtkIdType>(total, 1)));
-  controller->AllGatherV(send.empty() ? nullptr : send.data(), received.data(), length,
-    lengths.data(), offsets.data());
+  controller->AllGatherV(
+    send.empty() ? nullptr : send.data(), received.data(), length, lengths.data(), offsets.data());
   std::vector<RemoteBoundaryNode> remote;
   for (int p = 0; p < processes; ++p)
   {
@@ -114,7 +114,8 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
     static_cast<double>(outsideNodes) };
   double total[6];
   controller->AllReduce(sums, total, 6, vtkCommunicator::SUM_OP);
-  double minimum = summary.Evaluated > 0 ? summary.Minimum : std::numeric_limits<double>::infinity();
+  double minimum =
+    summary.Evaluated > 0 ? summary.Minimum : std::numeric_limits<double>::infinity();
   double globalMinimum = 0.0;
   controller->AllReduce(&minimum, &globalMinimum, 1, vtkCommunicator::MIN_OP);
   ok = total[0] == 0.0;

@@ -6,59 +6,59 @@
 #include "DGMFDistributed.h"
 #include "DGMFSMPTools.h"
 
-#include "dgmf/DGMFDeformation.h"
-#include "dgmf/DampingField.h"
 #include "dgmf/BoundaryMotion.h"
 #include "dgmf/DGMDeformation.h"
+#include "dgmf/DGMFDeformation.h"
 #include "dgmf/DGRBFDeformation.h"
+#include "dgmf/DampingField.h"
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/HintStride.h"
 #include "dgmf/IDWDeformation.h"
 #include "dgmf/MultiBodyDeformation.h"
+#include "dgmf/RBFDeformation.h"
 #include "dgmf/RigidMotionFit.h"
 #include "dgmf/SubStepDeformation.h"
-#include "dgmf/RBFDeformation.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkDemandDrivenPipeline.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDataObject.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkArrayDispatch.h"
-#include "vtkDataArrayRange.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <limits>
-#include <array>
 #include <map>
 #include <new>
-#include <unistd.h>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 vtkStandardNewMacro(vtkDGMFDeformFilter);
@@ -192,7 +192,8 @@ struct MarkerToKinds
 
 /// A fast 64-bit hash of raw memory (not cryptographic: it tells equal content from changed).
 /// Four independent lanes of 8-byte words, so the multiplications overlap (200 MB in ~20 ms).
-std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed = 0x9e3779b97f4a7c15ull)
+std::uint64_t HashBytes(
+  const void* data, std::size_t bytes, std::uint64_t seed = 0x9e3779b97f4a7c15ull)
 {
   const auto* p = static_cast<const unsigned char*>(data);
   std::uint64_t lane[4] = { seed ^ (bytes * 0xff51afd7ed558ccdull), seed + 1, seed + 2, seed + 3 };
@@ -223,7 +224,8 @@ std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed 
 std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0)
 {
   return HashBytes(array->GetVoidPointer(0),
-    static_cast<std::size_t>(array->GetNumberOfValues()) * static_cast<std::size_t>(array->GetDataTypeSize()),
+    static_cast<std::size_t>(array->GetNumberOfValues()) *
+      static_cast<std::size_t>(array->GetDataTypeSize()),
     seed + static_cast<std::uint64_t>(array->GetDataType()));
 }
 
@@ -305,8 +307,8 @@ namespace
  * writes into memory that is already mapped: first touches of new pages cost about as much as
  * the mapping itself here.
  */
-vtkSmartPointer<vtkPoints> OutputPointsFor(
-  vtkSmartPointer<vtkPoints>& last, vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, std::size_t n)
+vtkSmartPointer<vtkPoints> OutputPointsFor(vtkSmartPointer<vtkPoints>& last,
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, std::size_t n)
 {
   if (last && input->GetPoints() != last.GetPointer())
   {
@@ -353,7 +355,7 @@ struct vtkDGMFDeformFilter::Inputs
   std::size_t LocalNodes = 0;    ///< this piece's nodes, the first ones
   int Dimension = 3;
   const double* Points = nullptr;
-  std::vector<double> PointCopy;    ///< the points as doubles, when they are not already
+  std::vector<double> PointCopy;        ///< the points as doubles, when they are not already
   const double* Displacement = nullptr; ///< 3 per node, null when no array is selected
   std::vector<double> DisplacementCopy; ///< the displacement as doubles, when it is not already
   std::string DisplacementName;
@@ -508,12 +510,13 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
   {
     if (!inputs.Displacement)
     {
-      vtkErrorMacro("RigidMotionMode EXTRACTED fits the motion to the displacement array: select one.");
+      vtkErrorMacro(
+        "RigidMotionMode EXTRACTED fits the motion to the displacement array: select one.");
       return false;
     }
     residual.resize(3 * n);
-    std::vector<dgmf::FittedMotion> fits = dgmf::ExtractBodyMotions(inputs.Dimension,
-      inputs.Points, inputs.Displacement, n, ids.data(), bodies, residual.data());
+    std::vector<dgmf::FittedMotion> fits = dgmf::ExtractBodyMotions(
+      inputs.Dimension, inputs.Points, inputs.Displacement, n, ids.data(), bodies, residual.data());
     // Each body turns about its rotation axis (not its centroid): a rotation given as
     // displacements about some centre is recovered about that centre. Near-translations (an axis
     // farther than 100 body sizes) keep the centroid.
@@ -527,7 +530,8 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
         const double d = std::sqrt((x[0] - fit.Center[0]) * (x[0] - fit.Center[0]) +
           (x[1] - fit.Center[1]) * (x[1] - fit.Center[1]) +
           (x[2] - fit.Center[2]) * (x[2] - fit.Center[2]));
-        size[static_cast<std::size_t>(ids[i] - 1)] = std::max(size[static_cast<std::size_t>(ids[i] - 1)], d);
+        size[static_cast<std::size_t>(ids[i] - 1)] =
+          std::max(size[static_cast<std::size_t>(ids[i] - 1)], d);
       }
     }
     for (std::size_t k = 0; k < fits.size(); ++k)
@@ -554,7 +558,8 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
       angle->InsertNextValue(fits[k].AngleDegrees);
       rms->InsertNextValue(fits[k].ResidualRMS);
     }
-    for (vtkDoubleArray* a : { translation.Get(), center.Get(), axis.Get(), angle.Get(), rms.Get() })
+    for (vtkDoubleArray* a :
+      { translation.Get(), center.Get(), axis.Get(), angle.Get(), rms.Get() })
     {
       fieldData->AddArray(a);
     }
@@ -568,7 +573,8 @@ bool vtkDGMFDeformFilter::DeformBodies(Inputs& inputs, vtkFieldData* fieldData, 
       motions[k].Displacement = inputs.Displacement;
       if (inputs.Dimension == 2 && !StaysInPlane(properties[k]))
       {
-        vtkErrorMacro("Body " << k + 1 << " of this 2D mesh must rotate about z and move in its plane.");
+        vtkErrorMacro(
+          "Body " << k + 1 << " of this 2D mesh must rotate about z and move in its plane.");
         return false;
       }
     }
@@ -603,15 +609,28 @@ dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)
     bool covered = true;
     switch (type)
     {
-      case VTK_TRIANGLE: shape = dgmf::CellShape::Triangle; break;
+      case VTK_TRIANGLE:
+        shape = dgmf::CellShape::Triangle;
+        break;
       case VTK_QUAD:
-      case VTK_PIXEL: shape = dgmf::CellShape::Quad; break;
-      case VTK_TETRA: shape = dgmf::CellShape::Tetra; break;
+      case VTK_PIXEL:
+        shape = dgmf::CellShape::Quad;
+        break;
+      case VTK_TETRA:
+        shape = dgmf::CellShape::Tetra;
+        break;
       case VTK_HEXAHEDRON:
-      case VTK_VOXEL: shape = dgmf::CellShape::Hexahedron; break;
-      case VTK_WEDGE: shape = dgmf::CellShape::Wedge; break;
-      case VTK_PYRAMID: shape = dgmf::CellShape::Pyramid; break;
-      default: covered = false;
+      case VTK_VOXEL:
+        shape = dgmf::CellShape::Hexahedron;
+        break;
+      case VTK_WEDGE:
+        shape = dgmf::CellShape::Wedge;
+        break;
+      case VTK_PYRAMID:
+        shape = dgmf::CellShape::Pyramid;
+        break;
+      default:
+        covered = false;
     }
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
@@ -695,7 +714,8 @@ int vtkDGMFDeformFilter::RequestUpdateExtent(
 {
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   // A distributed mesh without a marker array needs one layer of ghost cells, so that the faces
-  // between pieces are not taken for the boundary: ask upstream (e.g. Ghost Cells Generator) for it.
+  // between pieces are not taken for the boundary: ask upstream (e.g. Ghost Cells Generator) for
+  // it.
   if (dgmf_vtk::IsDistributed(this->Controller) && SelectedArrayName(this, MarkerArray).empty())
   {
     vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -703,7 +723,8 @@ int vtkDGMFDeformFilter::RequestUpdateExtent(
       inInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
       ? inInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
       : 0;
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(requested, 1));
+    inInfo->Set(
+      vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(requested, 1));
   }
   return 1;
 }
@@ -934,8 +955,9 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     cache.CheckedPoints = pointsArray;
     cache.CheckedPointsMTime = pointsArray->GetMTime();
   }
-  inputs.Dimension = dgmf_vtk::IsDistributed(this->Controller) ? this->DistributedDimension
-                                                              : DetectDimension(input, inputs.Points, n);
+  inputs.Dimension = dgmf_vtk::IsDistributed(this->Controller)
+    ? this->DistributedDimension
+    : DetectDimension(input, inputs.Points, n);
   if (inputs.Dimension < 0)
   {
     vtkErrorMacro("The mesh has no 3D cell but its points do not all have the same z: 2D meshes "
@@ -970,8 +992,8 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     markerArray = input->GetPointData()->GetArray(markerName.c_str());
     if (!markerArray)
     {
-      vtkErrorMacro("The boundary-marker array '" << markerName
-                                                  << "' is not a point array of the input.");
+      vtkErrorMacro(
+        "The boundary-marker array '" << markerName << "' is not a point array of the input.");
       return false;
     }
     if (markerArray->GetNumberOfComponents() != 1)
@@ -1006,8 +1028,8 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     }
     if (!AllFinite(inputs.Displacement, 3 * n))
     {
-      vtkErrorMacro("The displacement array '" << inputs.DisplacementName
-                                               << "' has NaN or infinite values.");
+      vtkErrorMacro(
+        "The displacement array '" << inputs.DisplacementName << "' has NaN or infinite values.");
       return false;
     }
   }
@@ -1068,9 +1090,11 @@ bool vtkDGMFDeformFilter::GatherInputs(vtkUnstructuredGrid* input, Inputs& input
     vtkIdType bad = -1;
     double badValue = 0.0;
     MarkerToKinds worker;
-    if (!vtkArrayDispatch::Dispatch::Execute(markerArray, worker, inputs.Kinds.data(), bad, badValue))
+    if (!vtkArrayDispatch::Dispatch::Execute(
+          markerArray, worker, inputs.Kinds.data(), bad, badValue))
     {
-      worker(markerArray, inputs.Kinds.data(), bad, badValue); // an array type outside the dispatch list
+      worker(
+        markerArray, inputs.Kinds.data(), bad, badValue); // an array type outside the dispatch list
     }
     if (bad >= 0)
     {
@@ -1307,8 +1331,8 @@ const dgmf_vtk::BoundaryFacets& vtkDGMFDeformFilter::GetBoundaryFacets(
   };
   if (!cache.Facets || !cache.Cells.Matches(cells, hashCells))
   {
-    cache.Facets = std::make_unique<dgmf_vtk::BoundaryFacets>(
-      dgmf_vtk::FindBoundaryFacets(input, dimension));
+    cache.Facets =
+      std::make_unique<dgmf_vtk::BoundaryFacets>(dgmf_vtk::FindBoundaryFacets(input, dimension));
     cache.Cells.Set(cells, hashCells);
   }
   return *cache.Facets;
@@ -1357,7 +1381,8 @@ bool vtkDGMFDeformFilter::UpdateMapping(
   cache.StaticR0 = std::numeric_limits<double>::quiet_NaN();
   cache.Damping = 0;
   std::vector<vtkDoubleArray*> prepared;
-  prepared.push_back(vtkDoubleArray::SafeDownCast(OutputPointsFor(cache.OutputPoints, input, output, n)->GetData()));
+  prepared.push_back(
+    vtkDoubleArray::SafeDownCast(OutputPointsFor(cache.OutputPoints, input, output, n)->GetData()));
   if (this->Method == DGMF)
   {
     if (inputs.NumberOfBodies == 0 && this->RigidMotionMode != EXTRACTED)
@@ -1372,7 +1397,8 @@ bool vtkDGMFDeformFilter::UpdateMapping(
   {
     for (vtkDoubleArray* array : prepared)
     {
-      std::memset(array->GetPointer(0), 0, static_cast<std::size_t>(array->GetDataSize()) * sizeof(double));
+      std::memset(
+        array->GetPointer(0), 0, static_cast<std::size_t>(array->GetDataSize()) * sizeof(double));
     }
     pointsHash = hashPoints();
   };
@@ -1422,19 +1448,22 @@ void vtkDGMFDeformFilter::UpdateDampingField(Inputs& inputs)
   }
   if (!cache.F || cache.Damping != this->DampingFunction)
   {
-    dgmf::ComputeDampingFactor(*cache.Mapping, static_cast<dgmf::DampingFunction>(this->DampingFunction),
-      cache.R->GetPointer(0), FreshArray(cache.F, "f", n)->GetPointer(0), inputs.Parallel);
+    dgmf::ComputeDampingFactor(*cache.Mapping,
+      static_cast<dgmf::DampingFunction>(this->DampingFunction), cache.R->GetPointer(0),
+      FreshArray(cache.F, "f", n)->GetPointer(0), inputs.Parallel);
     cache.Damping = this->DampingFunction;
   }
 }
 
-bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
+bool vtkDGMFDeformFilter::Deform(
+  vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output)
 {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   const std::size_t n = inputs.NumberOfNodes;
   const double* displacement = inputs.Displacement;
-  const vtkSmartPointer<vtkPoints> newPoints = OutputPointsFor(this->GraphCache->OutputPoints, input, output, n);
+  const vtkSmartPointer<vtkPoints> newPoints =
+    OutputPointsFor(this->GraphCache->OutputPoints, input, output, n);
   vtkDoubleArray* newCoordinates = vtkDoubleArray::SafeDownCast(newPoints->GetData());
   double* out = newCoordinates->GetPointer(0);
 
@@ -1465,14 +1494,16 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     output->GetPointData()->AddArray(cache.F);
     AddFieldCount(fieldData, "OutsideNodeCount", cache.Mapping->GetNumberOfOutsideNodes());
   }
-  else if (this->Method == DGMF && (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED))
+  else if (this->Method == DGMF &&
+    (inputs.NumberOfBodies > 0 || this->RigidMotionMode == EXTRACTED))
   {
     if (!this->DeformBodies(inputs, fieldData, out))
     {
       return false;
     }
     output->GetPointData()->AddArray(this->GraphCache->F);
-    AddFieldCount(fieldData, "OutsideNodeCount", this->GraphCache->Mapping->GetNumberOfOutsideNodes());
+    AddFieldCount(
+      fieldData, "OutsideNodeCount", this->GraphCache->Mapping->GetNumberOfOutsideNodes());
   }
   else if (this->Method == DGMF)
   {
@@ -1480,7 +1511,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     const dgmf::DelaunayMapping& mapping = *cache.Mapping;
     this->UpdateDampingField(inputs);
     dgmf::DeformDGMF(mapping, cache.F->GetPointer(0), inputs.Motion, displacement,
-      static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out, inputs.Parallel);
+      static_cast<dgmf::DeformationMode>(this->DeformationMode), inputs.Points, out,
+      inputs.Parallel);
     output->GetPointData()->AddArray(cache.R);
     output->GetPointData()->AddArray(cache.F);
     AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
@@ -1509,14 +1541,16 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
       AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
       if (inverted > 0)
       {
-        vtkWarningMacro(<< inverted << " Delaunay graph elements are inverted by the motion: "
-                                      "DGM's mesh may be invalid (see InvertedCellCount).");
+        vtkWarningMacro(<< inverted
+                        << " Delaunay graph elements are inverted by the motion: "
+                           "DGM's mesh may be invalid (see InvertedCellCount).");
       }
     }
     else if (this->Method == DGRBF)
     {
       const dgmf::DelaunayMapping& mapping = *this->GraphCache->Mapping;
-      dgmf::DeformDGRBF(mapping, boundary, this->SupportRadius, inputs.Points, out, inputs.Parallel);
+      dgmf::DeformDGRBF(
+        mapping, boundary, this->SupportRadius, inputs.Points, out, inputs.Parallel);
       AddFieldCount(fieldData, "OutsideNodeCount", mapping.GetNumberOfOutsideNodes());
     }
     else if (this->Method == RBF)
@@ -1533,9 +1567,9 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     }
     else
     {
-      const std::vector<double> weights = dgmf_vtk::ComputeBoundaryNodeWeights(
-        this->GetBoundaryFacets(input, inputs.Dimension), inputs.Points,
-        static_cast<vtkIdType>(n), inputs.Dimension);
+      const std::vector<double> weights =
+        dgmf_vtk::ComputeBoundaryNodeWeights(this->GetBoundaryFacets(input, inputs.Dimension),
+          inputs.Points, static_cast<vtkIdType>(n), inputs.Dimension);
       boundary.Weights.resize(boundary.Size());
       for (std::size_t b = 0; b < boundary.Size(); ++b)
       {
@@ -1594,8 +1628,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     sizeSkew->SetName("SizeSkew");
     vtkNew<vtkUnsignedCharArray> inverted;
     inverted->SetName("Inverted");
-    const dgmf::QualitySummary summary = dgmf_vtk::ComputeCellQuality(
-      input, inputs.Points, out, sizeSkew, inverted, inputs.Parallel);
+    const dgmf::QualitySummary summary =
+      dgmf_vtk::ComputeCellQuality(input, inputs.Points, out, sizeSkew, inverted, inputs.Parallel);
     output->GetCellData()->AddArray(sizeSkew);
     output->GetCellData()->AddArray(inverted);
     AddFieldValue(fieldData, "SizeSkewMean", summary.Mean);
@@ -1605,8 +1639,8 @@ bool vtkDGMFDeformFilter::Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtk
     this->LastQualitySeconds = std::chrono::duration<double>(Clock::now() - deformed).count();
     if (this->FailOnInvertedCells && summary.Inverted > 0)
     {
-      vtkErrorMacro("The deformation inverts " << summary.Inverted
-                                               << " cells (FailOnInvertedCells is on).");
+      vtkErrorMacro(
+        "The deformation inverts " << summary.Inverted << " cells (FailOnInvertedCells is on).");
       return false;
     }
   }
@@ -1627,7 +1661,8 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RotationAngles: (" << this->RotationAngles[0] << ", " << this->RotationAngles[1]
      << ", " << this->RotationAngles[2] << ")\n";
   os << indent << "DeformationMode: DGMF" << this->DeformationMode << "\n";
-  os << indent << "RigidMotionMode: " << (this->RigidMotionMode == EXTRACTED ? "Extracted" : "Properties")
+  os << indent
+     << "RigidMotionMode: " << (this->RigidMotionMode == EXTRACTED ? "Extracted" : "Properties")
      << " (" << this->PerBodyMotions->Motions.size() << " body motions set)\n";
   os << indent << "SupportRadius: " << this->SupportRadius << "\n";
   os << indent << "RBFGreedy: " << (this->RBFGreedy ? "on" : "off") << "\n";

@@ -20,9 +20,10 @@
  * graph element (paper Eq. 7); in DGMF1 mode every node's own value is used.
  *
  * Which nodes are boundary nodes, and which of them move, comes from the optional boundary-marker
- * point array (input array 1, 1 component, values 0, 1, 2; integer or floating-point): 0 = interior, 1 = static boundary,
- * 2 = moving boundary. Without it, the boundary nodes are the nodes of the mesh's boundary faces
- * (3D) or edges (2D), and a boundary node is moving where its displacement is non-zero.
+ * point array (input array 1, 1 component, values 0, 1, 2; integer or floating-point): 0 =
+ * interior, 1 = static boundary, 2 = moving boundary. Without it, the boundary nodes are the nodes
+ * of the mesh's boundary faces (3D) or edges (2D), and a boundary node is moving where its
+ * displacement is non-zero.
  *
  * Composite input (vtkMultiBlockDataSet, vtkPartitionedDataSetCollection, as the CGNS, Exodus and
  * OpenFOAM readers produce) is deformed as one mesh with one graph: the blocks with explicit
@@ -37,7 +38,8 @@
  * Output: the deformed grid, with every input point, cell and field array passed through, plus
  * - point arrays `r` and `f`;
  * - cell arrays `SizeSkew` (Knupp's size-skew metric relative to the same input cell; NaN for
- *   cell types it does not cover) and `Inverted` (1 for an inverted cell), when ComputeQuality is on;
+ *   cell types it does not cover) and `Inverted` (1 for an inverted cell), when ComputeQuality is
+ * on;
  * - field data `SizeSkewMean`, `SizeSkewMinimum`, `InvertedCellCount`, `OutsideNodeCount`.
  * Output points are always double precision. The input is never modified.
  *
@@ -180,7 +182,8 @@ public:
   enum RigidMotionModes
   {
     PROPERTIES = 0, ///< Translation, RotationCenter, RotationAngles (or SetBodyMotion per body)
-    EXTRACTED = 1   ///< fitted to each body's displacements (Kabsch); the residual is the shape deformation
+    EXTRACTED =
+      1 ///< fitted to each body's displacements (Kabsch); the residual is the shape deformation
   };
 
   ///@{
@@ -366,7 +369,8 @@ protected:
   vtkDGMFDeformFilter();
   ~vtkDGMFDeformFilter() override;
 
-  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  vtkTypeBool ProcessRequest(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
@@ -414,7 +418,8 @@ private:
   struct BodyMotions;
   std::unique_ptr<BodyMotions> PerBodyMotions;
   bool DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out);
-  bool DeformInSubSteps(vtkUnstructuredGrid* input, Inputs& inputs, vtkFieldData* fieldData, double* out);
+  bool DeformInSubSteps(
+    vtkUnstructuredGrid* input, Inputs& inputs, vtkFieldData* fieldData, double* out);
   bool GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs);
   void AppendRemoteBoundaryNodes(Inputs& inputs);
   void ReduceAcrossProcesses(int& status, vtkUnstructuredGrid* output);

@@ -77,9 +77,10 @@ int vtkSizeSkewQualityFilter::RequestData(
   }
   if (mesh->GetNumberOfPoints() != reference->GetNumberOfPoints() || !SameCells(mesh, reference))
   {
-    vtkErrorMacro("The mesh (" << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfCells()
-                               << " cells) and the reference (" << reference->GetNumberOfPoints()
-                               << " points, " << reference->GetNumberOfCells()
+    vtkErrorMacro("The mesh (" << mesh->GetNumberOfPoints() << " points, "
+                               << mesh->GetNumberOfCells() << " cells) and the reference ("
+                               << reference->GetNumberOfPoints() << " points, "
+                               << reference->GetNumberOfCells()
                                << " cells) must have the same points and cells.");
     output->Initialize();
     return 0;
@@ -97,8 +98,8 @@ int vtkSizeSkewQualityFilter::RequestData(
   dgmf_vtk::RunWithThreads(this->NumberOfThreads,
     [&]()
     {
-      summary = dgmf_vtk::ComputeCellQuality(reference, original, deformed, sizeSkew,
-        inverted, dgmf_vtk::MakeSMPParallelFor());
+      summary = dgmf_vtk::ComputeCellQuality(
+        reference, original, deformed, sizeSkew, inverted, dgmf_vtk::MakeSMPParallelFor());
     });
   output->GetCellData()->AddArray(sizeSkew);
   output->GetCellData()->AddArray(inverted);

@@ -1,6 +1,7 @@
 /**
  * @class   vtkSizeSkewQualityFilter
- * @brief   Knupp's size-skew quality of a deformed mesh relative to the same mesh before deformation.
+ * @brief   Knupp's size-skew quality of a deformed mesh relative to the same mesh before
+ * deformation.
  *
  * Input 0 is the mesh to measure; input 1 (the reference, SetReferenceData or
  * SetReferenceConnection) is the same mesh before deformation: the same number of points and the

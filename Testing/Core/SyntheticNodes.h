@@ -33,8 +33,10 @@ struct NodeSet
   }
 };
 
-/// Circle of radius 1 (moving, `circle` nodes) in the square [-5, 5]^2 (static), interior nodes between.
-inline NodeSet CircleInSquare(int circle = 64, int side = 20, int interior = 2000, unsigned seed = 1)
+/// Circle of radius 1 (moving, `circle` nodes) in the square [-5, 5]^2 (static), interior nodes
+/// between.
+inline NodeSet CircleInSquare(
+  int circle = 64, int side = 20, int interior = 2000, unsigned seed = 1)
 {
   NodeSet set;
   set.Dimension = 2;

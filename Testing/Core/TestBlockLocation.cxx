@@ -42,8 +42,8 @@ Located LocateAll(const dgmf::DelaunayGraph& graph, const std::vector<double>& p
   result.Weights.assign(4 * nodes, -1.0);
   for (std::size_t begin = 0; begin < nodes; begin += blockSize)
   {
-    const dgmf::BlockLocationCounts counts = dgmf::LocateBlock(graph, points.data(), kinds.data(), begin,
-      std::min(nodes, begin + blockSize), result.Element.data(), result.Weights.data());
+    const dgmf::BlockLocationCounts counts = dgmf::LocateBlock(graph, points.data(), kinds.data(),
+      begin, std::min(nodes, begin + blockSize), result.Element.data(), result.Weights.data());
     result.Counts.Outside += counts.Outside;
     result.Counts.Restarts += counts.Restarts;
   }
@@ -51,7 +51,8 @@ Located LocateAll(const dgmf::DelaunayGraph& graph, const std::vector<double>& p
 }
 
 /// Every interior node: an element whose weights are >= 0, sum to 1 and reproduce the node, the
-/// element CGAL's exact location finds when the node is clearly inside one; boundary nodes untouched.
+/// element CGAL's exact location finds when the node is clearly inside one; boundary nodes
+/// untouched.
 void ExpectCorrect(const dgmf::DelaunayGraph& graph, const std::vector<double>& points,
   const std::vector<dgmf::NodeKind>& kinds, const Located& located, int dimension)
 {
@@ -126,7 +127,8 @@ TEST(BlockLocation, ShuffledNumberingRestartsFromTheSeedGridAndStaysCorrect)
   std::vector<dgmf::NodeKind> kinds(order.size());
   for (std::size_t j = 0; j < order.size(); ++j)
   {
-    std::copy(set.Points.begin() + 3 * order[j], set.Points.begin() + 3 * order[j] + 3, points.begin() + 3 * j);
+    std::copy(set.Points.begin() + 3 * order[j], set.Points.begin() + 3 * order[j] + 3,
+      points.begin() + 3 * j);
     kinds[j] = set.Kinds[order[j]];
   }
   std::vector<double> boundary;

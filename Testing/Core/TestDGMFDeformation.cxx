@@ -24,23 +24,27 @@ struct Result
   std::vector<double> R, F, Points;
 };
 
-Result Deform(const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion, const double* displacement,
-  dgmf::DeformationMode mode, double r0s, const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
+Result Deform(const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion,
+  const double* displacement, dgmf::DeformationMode mode, double r0s,
+  const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
 {
-  dgmf::DelaunayMapping mapping(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
+  dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
   Result result;
   result.R.resize(set.Size());
   result.F.resize(set.Size());
   result.Points.resize(3 * set.Size());
   dgmf::ComputeBoundaryDistanceField(mapping, r0s, result.R.data(), parallelFor);
-  dgmf::ComputeDampingFactor(mapping, dgmf::DampingFunction::U1, result.R.data(), result.F.data(), parallelFor);
+  dgmf::ComputeDampingFactor(
+    mapping, dgmf::DampingFunction::U1, result.R.data(), result.F.data(), parallelFor);
   dgmf::DeformDGMF(mapping, result.F.data(), motion, displacement, mode, set.Points.data(),
     result.Points.data(), parallelFor);
   return result;
 }
 
 /// Independent computation of the prescribed position: rotation about z then the rest.
-void Prescribed2D(const double* x, double angleDegrees, const double* c, const double* t, const double* d, double* out)
+void Prescribed2D(const double* x, double angleDegrees, const double* c, const double* t,
+  const double* d, double* out)
 {
   const double a = angleDegrees * Pi / 180.0;
   const double dx = x[0] - c[0], dy = x[1] - c[1];
@@ -53,7 +57,12 @@ void Prescribed2D(const double* x, double angleDegrees, const double* c, const d
 void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
 {
   const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other([&]() { if (begin < middle) body(begin, middle); });
+  std::thread other(
+    [&]()
+    {
+      if (begin < middle)
+        body(begin, middle);
+    });
   if (middle < end)
   {
     body(middle, end);
@@ -88,7 +97,8 @@ TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion2D)
     if (set.Kinds[i] == dgmf::NodeKind::MovingBoundary)
     {
       double expected[3];
-      Prescribed2D(x, 90.0, motion.Center, motion.Translation, displacement.data() + 3 * i, expected);
+      Prescribed2D(
+        x, 90.0, motion.Center, motion.Translation, displacement.data() + 3 * i, expected);
       const double scale = std::max(1.0, std::hypot(expected[0], expected[1]));
       for (int c = 0; c < 3; ++c)
       {
@@ -137,7 +147,8 @@ TEST(DGMFDeformation, RIsInterpolatedBetweenZeroAndStaticR0)
   EXPECT_LE(largest, 2.5);
   EXPECT_LT(smallest, 0.5); // nodes near the circle
   EXPECT_GT(largest, 2.0);  // nodes near the square
-  EXPECT_THROW(Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 0.5), std::invalid_argument);
+  EXPECT_THROW(
+    Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 0.5), std::invalid_argument);
 }
 
 TEST(DGMFDeformation, NodeOnASharedFaceGetsTheSameDeformationFromBothElements)
@@ -146,7 +157,8 @@ TEST(DGMFDeformation, NodeOnASharedFaceGetsTheSameDeformationFromBothElements)
   // vertex. The weight of each triangle's opposite vertex is 0 there, so Eq. 7 gives the same d
   // from either triangle. (On an edge between two static vertices d may differ, but f = 0 there.)
   const dgmf_test::NodeSet set = dgmf_test::CircleInSquare(16, 8, 0);
-  dgmf::DelaunayMapping mapping(2, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  dgmf::DelaunayMapping mapping(
+    2, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
   const dgmf::DelaunayGraph& graph = mapping.GetGraph();
   std::vector<double> displacement(3 * set.Size(), 0.0);
   for (std::size_t i = 0; i < set.Size(); ++i)
@@ -154,7 +166,8 @@ TEST(DGMFDeformation, NodeOnASharedFaceGetsTheSameDeformationFromBothElements)
     displacement[3 * i] = set.Points[3 * i] * 0.3 + 0.1;
     displacement[3 * i + 1] = -set.Points[3 * i + 1] * 0.7;
   }
-  const std::vector<double> vertexDeformation = dgmf::GatherVertexDeformation(mapping, displacement.data());
+  const std::vector<double> vertexDeformation =
+    dgmf::GatherVertexDeformation(mapping, displacement.data());
   int sharedEdgesTested = 0;
   const auto elements = static_cast<std::int32_t>(graph.GetNumberOfElements());
   for (std::int32_t a = 0; a < elements; ++a)
@@ -220,9 +233,12 @@ TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion3D)
   const Result result = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0);
   // Independent rotation: Rz(c) Ry(b) Rx(a), right-handed.
   const double a = 20.0 * Pi / 180, b = -35.0 * Pi / 180, c = 50.0 * Pi / 180;
-  const double Rx[3][3] = { { 1, 0, 0 }, { 0, std::cos(a), -std::sin(a) }, { 0, std::sin(a), std::cos(a) } };
-  const double Ry[3][3] = { { std::cos(b), 0, std::sin(b) }, { 0, 1, 0 }, { -std::sin(b), 0, std::cos(b) } };
-  const double Rz[3][3] = { { std::cos(c), -std::sin(c), 0 }, { std::sin(c), std::cos(c), 0 }, { 0, 0, 1 } };
+  const double Rx[3][3] = { { 1, 0, 0 }, { 0, std::cos(a), -std::sin(a) },
+    { 0, std::sin(a), std::cos(a) } };
+  const double Ry[3][3] = { { std::cos(b), 0, std::sin(b) }, { 0, 1, 0 },
+    { -std::sin(b), 0, std::cos(b) } };
+  const double Rz[3][3] = { { std::cos(c), -std::sin(c), 0 }, { std::sin(c), std::cos(c), 0 },
+    { 0, 0, 1 } };
   double RyRx[3][3] = {}, R[3][3] = {};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -240,7 +256,8 @@ TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion3D)
     {
       for (int r = 0; r < 3; ++r)
       {
-        const double expected = R[r][0] * x[0] + R[r][1] * x[1] + R[r][2] * x[2] + motion.Translation[r];
+        const double expected =
+          R[r][0] * x[0] + R[r][1] * x[1] + R[r][2] * x[2] + motion.Translation[r];
         EXPECT_NEAR(y[r], expected, 1e-12) << "moving node " << i;
       }
     }
@@ -288,7 +305,8 @@ TEST(DGMFDeformation, DGMF1UsesEachNodesOwnDisplacement)
     const double f = set.Kinds[i] == dgmf::NodeKind::StaticBoundary ? 0.0 : result.F[i];
     for (int c = 0; c < 2; ++c)
     {
-      EXPECT_NEAR(result.Points[3 * i + c], set.Points[3 * i + c] + f * displacement[3 * i + c], 1e-15);
+      EXPECT_NEAR(
+        result.Points[3 * i + c], set.Points[3 * i + c] + f * displacement[3 * i + c], 1e-15);
     }
   }
 }
@@ -299,9 +317,13 @@ TEST(DGMFDeformation, SameBitsWithOneAndTwoThreads)
   dgmf::RigidMotion motion;
   motion.AnglesDegrees[1] = 30.0;
   motion.Translation[2] = 0.2;
-  const Result serial = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, dgmf::SerialFor);
-  const Result threaded = Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, TwoThreadFor);
-  EXPECT_EQ(std::memcmp(serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)), 0);
+  const Result serial =
+    Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, dgmf::SerialFor);
+  const Result threaded =
+    Deform(set, motion, nullptr, dgmf::DeformationMode::DGMF2, 1.0, TwoThreadFor);
+  EXPECT_EQ(std::memcmp(
+              serial.Points.data(), threaded.Points.data(), serial.Points.size() * sizeof(double)),
+    0);
   EXPECT_EQ(std::memcmp(serial.F.data(), threaded.F.data(), serial.F.size() * sizeof(double)), 0);
 }
 
@@ -342,7 +364,8 @@ TEST(DGMFDeformation, TwoNodesAtOnceGiveTheSameBitsAsOneAtATime)
       {
         damped.Apply(f[l], x[l], withD ? d[l] : nullptr, single[l]);
       }
-      damped.ApplyPair(f, x[0], x[1], withD ? d[0] : nullptr, withD ? d[1] : nullptr, pair[0], pair[1]);
+      damped.ApplyPair(
+        f, x[0], x[1], withD ? d[0] : nullptr, withD ? d[1] : nullptr, pair[0], pair[1]);
       ASSERT_EQ(std::memcmp(single, pair, sizeof(single)), 0) << "f = " << f[0] << ", " << f[1];
     }
   }
@@ -367,7 +390,8 @@ TEST(DGMFDeformation, DampedRotationMatchesSinAndCosForSmallAndLargeAngles)
       double out[3];
       damped.Apply(f, x, nullptr, out);
       // Reference in long double: its own round-off is far below the tolerance.
-      const long double a = static_cast<long double>(f) * degrees * 3.14159265358979323846264338327950288L / 180.0L;
+      const long double a =
+        static_cast<long double>(f) * degrees * 3.14159265358979323846264338327950288L / 180.0L;
       const long double ca = std::cos(a), sa = std::sin(a);
       const long double expected[3] = { ca * x[0] - sa * x[1], sa * x[0] + ca * x[1], x[2] };
       for (int c = 0; c < 3; ++c)

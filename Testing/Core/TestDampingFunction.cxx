@@ -9,9 +9,10 @@ using dgmf::EvaluateDamping;
 TEST(DampingFunction, HandComputedValuesAtHalf)
 {
   // At r = 1/2, 1 - r = 1/2:
-  EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U1, 0.5), 0.25 * 1.5);          // (1/2)^2 (3/2)
-  EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U2, 0.5), 0.0625 * 3.0);        // (1/2)^4 (3)
-  EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U3, 0.5), (8.75 + 9 + 3) / 192.0); // (1/64)(35/4+9+3)/3
+  EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U1, 0.5), 0.25 * 1.5);   // (1/2)^2 (3/2)
+  EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U2, 0.5), 0.0625 * 3.0); // (1/2)^4 (3)
+  EXPECT_DOUBLE_EQ(
+    EvaluateDamping(DampingFunction::U3, 0.5), (8.75 + 9 + 3) / 192.0); // (1/64)(35/4+9+3)/3
   EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U4, 0.5), (4 + 6.25 + 4 + 1) / 256.0);
   EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U5, 0.5), 0.125 * 1.5);
   EXPECT_DOUBLE_EQ(EvaluateDamping(DampingFunction::U6, 0.5), 0.25);

@@ -28,7 +28,8 @@ std::vector<double> BoundaryPoints(const dgmf_test::NodeSet& set)
 /// Checks e_i >= 0, sum e_i = 1 and sum e_i x_i = p for every interior node.
 void CheckWeights(const dgmf_test::NodeSet& set)
 {
-  dgmf::DelaunayMapping mapping(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
   const dgmf::DelaunayGraph& graph = mapping.GetGraph();
   const int n = graph.GetVerticesPerElement();
   std::size_t checked = 0;
@@ -80,7 +81,9 @@ TEST(DelaunayGraph, ElementsArePositivelyOriented)
   const std::vector<double> xyz = BoundaryPoints(set);
   dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
   EXPECT_GT(graph.GetNumberOfElements(), 100u);
-  EXPECT_EQ(graph.CountInvertedElements(std::vector<double>(3 * graph.GetNumberOfVertices(), 0.0).data()), 0u);
+  EXPECT_EQ(
+    graph.CountInvertedElements(std::vector<double>(3 * graph.GetNumberOfVertices(), 0.0).data()),
+    0u);
   // Mirroring every vertex (x -> -x) inverts every element that is not flat.
   std::vector<double> mirror(3 * graph.GetNumberOfVertices(), 0.0);
   for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
@@ -104,7 +107,8 @@ TEST(DelaunayGraph, LocationDoesNotDependOnTheHint)
   const dgmf::DelaunayGraph::Location fromScratch = graph.LocateExactly(p, -1);
   ASSERT_GE(fromScratch.Element, 0);
   EXPECT_FALSE(fromScratch.Outside);
-  for (std::int32_t hint = 0; hint < static_cast<std::int32_t>(graph.GetNumberOfElements()); hint += 37)
+  for (std::int32_t hint = 0; hint < static_cast<std::int32_t>(graph.GetNumberOfElements());
+       hint += 37)
   {
     const dgmf::DelaunayGraph::Location fromHint = graph.LocateExactly(p, hint);
     EXPECT_EQ(fromHint.Element, fromScratch.Element) << "hint " << hint;

@@ -21,14 +21,17 @@ enum class GraphMethod
   DGRBF
 };
 
-std::vector<double> RunMethod(GraphMethod method, const dgmf_test::NodeSet& set, const dgmf::BoundaryMotion& boundary,
-  std::size_t* inverted = nullptr, const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
+std::vector<double> RunMethod(GraphMethod method, const dgmf_test::NodeSet& set,
+  const dgmf::BoundaryMotion& boundary, std::size_t* inverted = nullptr,
+  const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
 {
-  dgmf::DelaunayMapping mapping(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
+  dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
   std::vector<double> deformed(set.Points.size());
   if (method == GraphMethod::DGM)
   {
-    const std::size_t count = dgmf::DeformDGM(mapping, boundary, set.Points.data(), deformed.data(), parallelFor);
+    const std::size_t count =
+      dgmf::DeformDGM(mapping, boundary, set.Points.data(), deformed.data(), parallelFor);
     if (inverted)
       *inverted = count;
   }
@@ -44,8 +47,8 @@ template <typename Field>
 dgmf::BoundaryMotion MotionFromField(const dgmf_test::NodeSet& set, Field field)
 {
   dgmf::RigidMotion none;
-  dgmf::BoundaryMotion boundary =
-    dgmf::GatherBoundaryMotion(set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), none, nullptr);
+  dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), none, nullptr);
   for (std::size_t b = 0; b < boundary.Size(); ++b)
   {
     field(boundary.Positions.data() + 3 * b, boundary.Displacements.data() + 3 * b);
@@ -56,7 +59,12 @@ dgmf::BoundaryMotion MotionFromField(const dgmf_test::NodeSet& set, Field field)
 void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
 {
   const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other([&]() { if (begin < middle) body(begin, middle); });
+  std::thread other(
+    [&]()
+    {
+      if (begin < middle)
+        body(begin, middle);
+    });
   if (middle < end)
     body(middle, end);
   other.join();
@@ -70,7 +78,12 @@ TEST(GraphMethods, BoundaryReproducedAndTranslationExact)
     for (GraphMethod method : { GraphMethod::DGM, GraphMethod::DGRBF })
     {
       const dgmf::BoundaryMotion translation = MotionFromField(set,
-        [&](const double*, double* d) { d[0] = 0.7; d[1] = -0.3; d[2] = set.Dimension == 3 ? 0.2 : 0.0; });
+        [&](const double*, double* d)
+        {
+          d[0] = 0.7;
+          d[1] = -0.3;
+          d[2] = set.Dimension == 3 ? 0.2 : 0.0;
+        });
       const std::vector<double> moved = RunMethod(method, set, translation);
       for (std::size_t i = 0; i < set.Size(); ++i)
       {
@@ -79,7 +92,11 @@ TEST(GraphMethods, BoundaryReproducedAndTranslationExact)
       }
       // A boundary field that is not linear: boundary nodes still get exactly their value.
       const dgmf::BoundaryMotion wavy = MotionFromField(set,
-        [](const double* x, double* d) { d[0] = 0.1 * std::sin(x[1]); d[1] = 0.05 * x[0] * x[0]; });
+        [](const double* x, double* d)
+        {
+          d[0] = 0.1 * std::sin(x[1]);
+          d[1] = 0.05 * x[0] * x[0];
+        });
       const std::vector<double> result = RunMethod(method, set, wavy);
       for (std::size_t b = 0; b < wavy.Size(); ++b)
       {
@@ -121,14 +138,14 @@ TEST(GraphMethods, DGMReportsInvertedGraphElementsForALargeRotation)
   const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
   dgmf::RigidMotion rotation;
   rotation.AnglesDegrees[2] = 90.0;
-  const dgmf::BoundaryMotion boundary =
-    dgmf::GatherBoundaryMotion(2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
+  const dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
+    2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
   std::size_t inverted = 0;
   RunMethod(GraphMethod::DGM, set, boundary, &inverted);
   EXPECT_GT(inverted, 0u);
   rotation.AnglesDegrees[2] = 1.0;
-  const dgmf::BoundaryMotion small =
-    dgmf::GatherBoundaryMotion(2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
+  const dgmf::BoundaryMotion small = dgmf::GatherBoundaryMotion(
+    2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
   RunMethod(GraphMethod::DGM, set, small, &inverted);
   EXPECT_EQ(inverted, 0u);
 }
@@ -139,8 +156,8 @@ TEST(GraphMethods, DGRBFIsSmoothInsideAnElementAndCloseToDGMForSmallMotions)
   const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
   dgmf::RigidMotion rotation;
   rotation.AnglesDegrees[2] = 2.0;
-  const dgmf::BoundaryMotion boundary =
-    dgmf::GatherBoundaryMotion(2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
+  const dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
+    2, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
   const std::vector<double> dgm = RunMethod(GraphMethod::DGM, set, boundary);
   const std::vector<double> dgrbf = RunMethod(GraphMethod::DGRBF, set, boundary);
   double largest = 0.0;
@@ -158,8 +175,8 @@ TEST(GraphMethods, SameBitsWithOneAndTwoThreads)
   const dgmf_test::NodeSet set = dgmf_test::SphereInBox(20000);
   dgmf::RigidMotion rotation;
   rotation.AnglesDegrees[0] = 25.0;
-  const dgmf::BoundaryMotion boundary =
-    dgmf::GatherBoundaryMotion(3, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
+  const dgmf::BoundaryMotion boundary = dgmf::GatherBoundaryMotion(
+    3, set.Points.data(), set.Size(), set.Kinds.data(), rotation, nullptr);
   for (GraphMethod method : { GraphMethod::DGM, GraphMethod::DGRBF })
   {
     const std::vector<double> serial = RunMethod(method, set, boundary, nullptr, dgmf::SerialFor);

@@ -45,7 +45,8 @@ LayeredMesh MakeLayeredMesh(int a, int layers)
           if (id < 0)
           {
             id = static_cast<int>(unit.size());
-            unit.push_back({ 2.0 * ijk[0] / (a - 1) - 1, 2.0 * ijk[1] / (a - 1) - 1, 2.0 * ijk[2] / (a - 1) - 1 });
+            unit.push_back({ 2.0 * ijk[0] / (a - 1) - 1, 2.0 * ijk[1] / (a - 1) - 1,
+              2.0 * ijk[2] / (a - 1) - 1 });
           }
         }
   const std::size_t ns = unit.size();
@@ -61,8 +62,8 @@ LayeredMesh MakeLayeredMesh(int a, int layers)
         mesh.Points.push_back(p[c] / norm + t * (10.0 * p[c] - p[c] / norm));
       }
       mesh.Kinds.push_back(l == 0 ? dgmf::NodeKind::MovingBoundary
-          : l == layers - 1      ? dgmf::NodeKind::StaticBoundary
-                                 : dgmf::NodeKind::Interior);
+          : l == layers - 1       ? dgmf::NodeKind::StaticBoundary
+                                  : dgmf::NodeKind::Interior);
     }
   }
   // Hexahedra on the faces z = -1 (side 0 of axis 2), between consecutive layers.
@@ -135,8 +136,10 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
     const std::size_t stride = dgmf::FindHintStride(mesh.Cells);
     ASSERT_EQ(stride, mesh.NodesPerLayer);
     const dgmf::DelaunayMapping plain(3, mesh.Points.data(), n, mesh.Kinds.data(), dgmf::SerialFor);
-    const dgmf::DelaunayMapping one(3, mesh.Points.data(), n, mesh.Kinds.data(), dgmf::SerialFor, stride);
-    const dgmf::DelaunayMapping two(3, mesh.Points.data(), n, mesh.Kinds.data(), TwoThreads(), stride);
+    const dgmf::DelaunayMapping one(
+      3, mesh.Points.data(), n, mesh.Kinds.data(), dgmf::SerialFor, stride);
+    const dgmf::DelaunayMapping two(
+      3, mesh.Points.data(), n, mesh.Kinds.data(), TwoThreads(), stride);
     const std::size_t interior = static_cast<std::size_t>(
       std::count(mesh.Kinds.begin(), mesh.Kinds.end(), dgmf::NodeKind::Interior));
     EXPECT_EQ(plain.GetNumberOfStrideHits(), 0u);
@@ -145,7 +148,8 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
     for (std::size_t i = 0; i < n; ++i)
     {
       ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-      ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0) << "node " << i;
+      ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
+        << "node " << i;
       if (one.IsBoundaryNode(i))
         continue;
       // The weights reproduce the node: the element found is right.
@@ -158,7 +162,8 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
           ASSERT_GE(one.GetWeights(i)[k], 0.0);
           x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
         }
-        ASSERT_NEAR(x, mesh.Points[3 * i + c], 1e-10) << "node " << i; // weights within 1e-12 of 0 are clamped, elements are ~10 long
+        ASSERT_NEAR(x, mesh.Points[3 * i + c], 1e-10)
+          << "node " << i; // weights within 1e-12 of 0 are clamped, elements are ~10 long
       }
     }
   }

@@ -221,8 +221,8 @@ TEST(IDWDeformation, AreaWeightsPullTowardTheirNode)
   EXPECT_NEAR(weighted[0], s0, 1e-15);
   EXPECT_NEAR(weighted[1], s1, 1e-15);
   // Closer to node 1's displacement (0.1, 0.2) than with equal weights.
-  EXPECT_LT(std::hypot(weighted[0] - 0.1, weighted[1] - 0.2),
-    std::hypot(equal[0] - 0.1, equal[1] - 0.2));
+  EXPECT_LT(
+    std::hypot(weighted[0] - 0.1, weighted[1] - 0.2), std::hypot(equal[0] - 0.1, equal[1] - 0.2));
 
   // Scaling all A_i together changes nothing.
   boundary.Weights = { 2e-3, 1e-3 };

@@ -380,7 +380,7 @@ void PrintReport(const char* name, const RepairReport& report, double seconds)
             << report.MinimumAfter << ", free " << report.FreeNodes << ", moved "
             << report.MovedNodes << ", passes " << report.Passes << ", "
             << 1e6 * seconds /
-                 static_cast<double>(std::max<std::size_t>(1, report.FreeNodes * report.Passes))
+      static_cast<double>(std::max<std::size_t>(1, report.FreeNodes * report.Passes))
             << " us per node and pass\n";
 }
 

@@ -891,9 +891,11 @@ TEST(RigidMotionFit, CentreOnTheRotationAxisRecoversTheRotationCentre)
     points.insert(points.end(), { x, y, 0.0 });
     const double dx = x - 1.0, dy = y - 2.0;
     displacements.insert(displacements.end(),
-      { 1.0 + std::cos(a) * dx - std::sin(a) * dy - x, 2.0 + std::sin(a) * dx + std::cos(a) * dy - y, 0.0 });
+      { 1.0 + std::cos(a) * dx - std::sin(a) * dy - x,
+        2.0 + std::sin(a) * dx + std::cos(a) * dy - y, 0.0 });
   }
-  dgmf::FittedMotion fit = dgmf::FitRigidMotion(2, points.data(), displacements.data(), nullptr, 12);
+  dgmf::FittedMotion fit =
+    dgmf::FitRigidMotion(2, points.data(), displacements.data(), nullptr, 12);
   ASSERT_TRUE(dgmf::CentreOnRotationAxis(fit, 100.0));
   EXPECT_NEAR(fit.Center[0], 1.0, 1e-12);
   EXPECT_NEAR(fit.Center[1], 2.0, 1e-12);

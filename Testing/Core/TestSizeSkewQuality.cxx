@@ -100,11 +100,12 @@ Points RotatedTranslated(const Points& p, const double axis[3], double angle, co
   const double u[3] = { axis[0] / n, axis[1] / n, axis[2] / n };
   const double c = std::cos(angle);
   const double s = std::sin(angle);
-  const double r[3][3] = {
-    { c + u[0] * u[0] * (1 - c), u[0] * u[1] * (1 - c) - u[2] * s, u[0] * u[2] * (1 - c) + u[1] * s },
-    { u[1] * u[0] * (1 - c) + u[2] * s, c + u[1] * u[1] * (1 - c), u[1] * u[2] * (1 - c) - u[0] * s },
-    { u[2] * u[0] * (1 - c) - u[1] * s, u[2] * u[1] * (1 - c) + u[0] * s, c + u[2] * u[2] * (1 - c) }
-  };
+  const double r[3][3] = { { c + u[0] * u[0] * (1 - c), u[0] * u[1] * (1 - c) - u[2] * s,
+                             u[0] * u[2] * (1 - c) + u[1] * s },
+    { u[1] * u[0] * (1 - c) + u[2] * s, c + u[1] * u[1] * (1 - c),
+      u[1] * u[2] * (1 - c) - u[0] * s },
+    { u[2] * u[0] * (1 - c) - u[1] * s, u[2] * u[1] * (1 - c) + u[0] * s,
+      c + u[2] * u[2] * (1 - c) } };
   Points out(p.size());
   for (std::size_t i = 0; i < p.size(); i += 3)
   {
@@ -387,7 +388,8 @@ TEST(SizeSkewQuality, ParallelogramAndParallelepipedSkewIsMeanOfInverseSines)
   {
     hex[3 * i] += 0.5;
   }
-  EXPECT_NEAR(Quality(CellShape::Hexahedron, UnitCube(), hex).SizeSkew, 1.0 / std::cbrt(1.25), kTol);
+  EXPECT_NEAR(
+    Quality(CellShape::Hexahedron, UnitCube(), hex).SizeSkew, 1.0 / std::cbrt(1.25), kTol);
   // Shear x += y / 2 of the unit square: area kept, f_skew = 4 / (4 * sqrt(1.25)).
   const Points quad = { 0, 0, 0, 1, 0, 0, 1.5, 1, 0, 0.5, 1, 0 };
   EXPECT_NEAR(Quality(CellShape::Quad, UnitSquare(), quad).SizeSkew, 1.0 / std::sqrt(1.25), kTol);
@@ -417,15 +419,15 @@ TEST(SizeSkewQuality, ShapeOfSimplicesAndPyramidsPenalisesAspectRatio)
   // Triangle (0,0), (4,0), (2,1): alpha = 4, edges^2 16, 5, 5, l11 + l22 - l12 = (16+5+5)/2 = 13,
   // f_shape = 4 sqrt(3) / 13.
   const Points flatTriangle = { 0, 0, 0, 4, 0, 0, 2, 1, 0 };
-  EXPECT_NEAR(Quality(CellShape::Triangle, flatTriangle, flatTriangle).SizeSkew,
-    4.0 * kS3 / 13.0, kTol);
+  EXPECT_NEAR(
+    Quality(CellShape::Triangle, flatTriangle, flatTriangle).SizeSkew, 4.0 * kS3 / 13.0, kTol);
   // Pyramid with the apex at height 1/2 (a cube's sixth): every base corner has
   // a=(1,0,0), b=(0,1,0), c=(.5,.5,.5) up to symmetry: alpha 1/2, l33 = 0.75, l13 = l23 = 0.5,
   // 1/q = (1.5*2 + 2*0.75 + 0 - 2*1) / (3 (sqrt(2)/2)^(2/3)) = 2.5 / (3 * 0.5^(1/3)).
   Points pyramid = IdealPyramid();
   pyramid[14] = 0.5;
-  EXPECT_NEAR(Quality(CellShape::Pyramid, pyramid, pyramid).SizeSkew,
-    3.0 * std::cbrt(0.5) / 2.5, kTol);
+  EXPECT_NEAR(
+    Quality(CellShape::Pyramid, pyramid, pyramid).SizeSkew, 3.0 * std::cbrt(0.5) / 2.5, kTol);
 }
 
 TEST(SizeSkewQuality, ValidCellsScoreBetweenZeroAndOne)
@@ -527,7 +529,8 @@ TEST(SizeSkewQuality, MirroredOrBowTieQuadIsInverted)
   const Points original = UnitSquare();
   EXPECT_TRUE(Quality(CellShape::Quad, original, MirroredX(original)).Inverted);
   // Corners 2 and 3 swapped: a self-intersecting "bow tie".
-  const CellQuality bowTie = Quality(CellShape::Quad, original, Reordered(original, { 0, 1, 3, 2 }));
+  const CellQuality bowTie =
+    Quality(CellShape::Quad, original, Reordered(original, { 0, 1, 3, 2 }));
   EXPECT_EQ(bowTie.SizeSkew, 0.0);
   EXPECT_TRUE(bowTie.Inverted);
 }
@@ -763,7 +766,8 @@ TEST(SizeSkewQuality, TwoHexahedraAtOnceGiveTheSameBitsAsOneAtATime)
     const CellQuality single1 = ComputeSizeSkew(CellShape::Hexahedron, cells[1][0], cells[1][1]);
     CellQuality pair0, pair1;
     dgmf::ComputeHexSizeSkewPair(cells[0][0], cells[0][1], cells[1][0], cells[1][1], pair0, pair1);
-    for (const auto& [single, pair] : { std::make_pair(single0, pair0), std::make_pair(single1, pair1) })
+    for (const auto& [single, pair] :
+      { std::make_pair(single0, pair0), std::make_pair(single1, pair1) })
     {
       ASSERT_EQ(single.Inverted, pair.Inverted) << "case " << t;
       if (std::isnan(single.SizeSkew))
@@ -772,7 +776,8 @@ TEST(SizeSkewQuality, TwoHexahedraAtOnceGiveTheSameBitsAsOneAtATime)
         ASSERT_EQ(std::memcmp(&single.SizeSkew, &pair.SizeSkew, sizeof(double)), 0) << "case " << t;
     }
     inverted += single0.Inverted ? 1 : 0;
-    degenerate += std::isnan(single0.SizeSkew) || (!single0.Inverted && single0.SizeSkew == 0.0) ? 1 : 0;
+    degenerate +=
+      std::isnan(single0.SizeSkew) || (!single0.Inverted && single0.SizeSkew == 0.0) ? 1 : 0;
   }
   EXPECT_GT(inverted, 10u);
   EXPECT_GT(degenerate, 10u);

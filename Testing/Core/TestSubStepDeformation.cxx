@@ -37,8 +37,9 @@ Annulus MakeAnnulus(int rings, int sectors)
     {
       const double a = 2.0 * Pi * (i + 0.5 * (j % 2)) / sectors;
       mesh.Points.insert(mesh.Points.end(), { radius * std::cos(a), radius * std::sin(a), 0.0 });
-      mesh.Kinds.push_back(j == 0 ? NodeKind::MovingBoundary
-                                  : (j == rings - 1 ? NodeKind::StaticBoundary : NodeKind::Interior));
+      mesh.Kinds.push_back(j == 0
+          ? NodeKind::MovingBoundary
+          : (j == rings - 1 ? NodeKind::StaticBoundary : NodeKind::Interior));
     }
   }
   mesh.Cells.NumberOfPoints = mesh.Kinds.size();
@@ -84,9 +85,9 @@ std::vector<double> Deform(const Annulus& mesh, const dgmf::RigidMotion& motion,
   const dgmf::DelaunayMapping* initial = nullptr)
 {
   std::vector<double> out(mesh.Points.size());
-  const dgmf::SubStepReport r = dgmf::DeformInSubSteps(2, mesh.Points.data(), mesh.Kinds.size(),
-    mesh.Kinds.data(), mesh.Cells, motion, nullptr, parameters, out.data(), dgmf::SerialFor,
-    initial);
+  const dgmf::SubStepReport r =
+    dgmf::DeformInSubSteps(2, mesh.Points.data(), mesh.Kinds.size(), mesh.Kinds.data(), mesh.Cells,
+      motion, nullptr, parameters, out.data(), dgmf::SerialFor, initial);
   if (report)
   {
     *report = r;

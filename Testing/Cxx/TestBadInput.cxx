@@ -2,6 +2,7 @@
 // crash or a silent loss.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -15,7 +16,6 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -47,8 +47,8 @@ struct FilterRun
   }
   static void Collect(vtkObject*, unsigned long, void* clientData, void* callData)
   {
-    static_cast<std::vector<std::string>*>(clientData)->emplace_back(
-      callData ? static_cast<const char*>(callData) : "");
+    static_cast<std::vector<std::string>*>(clientData)
+      ->emplace_back(callData ? static_cast<const char*>(callData) : "");
   }
   vtkUnstructuredGrid* Execute(vtkUnstructuredGrid* mesh)
   {
@@ -325,10 +325,18 @@ TEST(DataSafety, PropertyChangesInAnyOrderGiveTheFreshResult)
     const double r0s = 1.0 + (random() % 3) * 0.5;
     switch (random() % 4)
     {
-      case 0: reused->SetMethod(method); break;
-      case 1: reused->SetDampingFunction(damping); break;
-      case 2: reused->SetRotationAngles(0, 0, angle); break;
-      default: reused->SetStaticBoundaryR0(r0s); break;
+      case 0:
+        reused->SetMethod(method);
+        break;
+      case 1:
+        reused->SetDampingFunction(damping);
+        break;
+      case 2:
+        reused->SetRotationAngles(0, 0, angle);
+        break;
+      default:
+        reused->SetStaticBoundaryR0(r0s);
+        break;
     }
     reused->Update();
     vtkNew<vtkDGMFDeformFilter> fresh;

@@ -1,6 +1,7 @@
 // Rigid motions extracted from displacements, and several moving bodies, through the filter.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -10,7 +11,6 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +23,8 @@ constexpr double Pi = 3.14159265358979323846;
 
 /// Displacement of a rotation by `degrees` about (cx, cy) at the nodes where `select` holds.
 template <typename Select>
-void SetRotationDisplacement(vtkUnstructuredGrid* mesh, double degrees, double cx, double cy, Select select)
+void SetRotationDisplacement(
+  vtkUnstructuredGrid* mesh, double degrees, double cx, double cy, Select select)
 {
   vtkDataArray* d = mesh->GetPointData()->GetArray("Displacement");
   const double a = degrees * Pi / 180.0;
@@ -52,7 +53,8 @@ TEST(Bodies, RotationGivenOnlyAsDisplacementMatchesTheExplicitRotation)
 {
   auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822, 1529);
   vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
-  SetRotationDisplacement(mesh, 90.0, 0.0, 0.0, [&](vtkIdType i) { return marker->GetTuple1(i) == 2; });
+  SetRotationDisplacement(
+    mesh, 90.0, 0.0, 0.0, [&](vtkIdType i) { return marker->GetTuple1(i) == 2; });
 
   vtkNew<vtkDGMFDeformFilter> extracted;
   extracted->SetInputData(mesh);
@@ -148,8 +150,10 @@ TEST(Bodies, TwoCirclesTurningInOppositeDirections)
   // The same motions extracted from displacements give the same mesh.
   auto displaced = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
   vtkDataArray* ids = displaced->GetPointData()->GetArray("BodyId");
-  SetRotationDisplacement(displaced, 45.0, -2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 1; });
-  SetRotationDisplacement(displaced, -45.0, 2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 2; });
+  SetRotationDisplacement(
+    displaced, 45.0, -2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 1; });
+  SetRotationDisplacement(
+    displaced, -45.0, 2.5, 0.0, [&](vtkIdType i) { return ids->GetTuple1(i) == 2; });
   vtkNew<vtkDGMFDeformFilter> extracted;
   extracted->SetInputData(displaced);
   extracted->SetBoundaryMarkerArrayName("BoundaryMarker");

@@ -2,6 +2,7 @@
 // same mesh (a temporal reader reads the mesh again at each time step).
 #include "vtkDGMFDeformFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -16,7 +17,6 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -82,7 +82,8 @@ std::map<Position, Position> Reference(vtkUnstructuredGrid* mesh)
   return moved;
 }
 
-void CheckBlock(vtkUnstructuredGrid* before, vtkUnstructuredGrid* after, const std::map<Position, Position>& reference)
+void CheckBlock(vtkUnstructuredGrid* before, vtkUnstructuredGrid* after,
+  const std::map<Position, Position>& reference)
 {
   ASSERT_NE(after, nullptr);
   ASSERT_EQ(after->GetNumberOfPoints(), before->GetNumberOfPoints());
@@ -98,7 +99,8 @@ void CheckBlock(vtkUnstructuredGrid* before, vtkUnstructuredGrid* after, const s
   EXPECT_NE(after->GetPointData()->GetArray("BoundaryMarker"), nullptr);
   EXPECT_NE(after->GetPointData()->GetArray("f"), nullptr);
   ASSERT_NE(after->GetCellData()->GetArray("SizeSkew"), nullptr);
-  EXPECT_EQ(after->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), before->GetNumberOfCells());
+  EXPECT_EQ(
+    after->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), before->GetNumberOfCells());
 }
 } // namespace
 

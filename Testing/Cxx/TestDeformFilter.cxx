@@ -2,6 +2,7 @@
 // input safety, caching, threads and bad input.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -16,7 +17,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -41,8 +41,8 @@ struct ErrorCatcher
     this->Command->SetCallback(
       [](vtkObject*, unsigned long, void* clientData, void* callData)
       {
-        static_cast<ErrorCatcher*>(clientData)->Messages.emplace_back(
-          callData ? static_cast<const char*>(callData) : "");
+        static_cast<ErrorCatcher*>(clientData)
+          ->Messages.emplace_back(callData ? static_cast<const char*>(callData) : "");
       });
     object->AddObserver(vtkCommand::ErrorEvent, this->Command);
     object->AddObserver(vtkCommand::WarningEvent, this->Command);
@@ -65,7 +65,8 @@ double Field(vtkUnstructuredGrid* mesh, const char* name)
   return a ? a->GetTuple1(0) : NAN;
 }
 
-/// Checks that moving nodes are exactly at x' = R(angle about z)(x - c) + c + t and static ones did not move.
+/// Checks that moving nodes are exactly at x' = R(angle about z)(x - c) + c + t and static ones did
+/// not move.
 void CheckBoundaryExactness2D(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, double angle,
   const double c[3], const double t[3])
 {
@@ -120,7 +121,8 @@ std::string Fingerprint(vtkUnstructuredGrid* mesh)
   {
     for (int k = 0; k < data->GetNumberOfArrays(); ++k)
     {
-      if (data->GetArray(k) && std::string(data->GetArrayName(k) ? data->GetArrayName(k) : "") != "GraphReused")
+      if (data->GetArray(k) &&
+        std::string(data->GetArrayName(k) ? data->GetArrayName(k) : "") != "GraphReused")
         append(data->GetArray(k));
     }
   }
@@ -214,8 +216,8 @@ TEST(DeformFilter, SphereInBoxTranslationAndRotation)
     if (kind == 2)
     {
       const double before = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-      const double after = std::sqrt((y[0] - 0.5) * (y[0] - 0.5) + (y[1] + 0.3) * (y[1] + 0.3) +
-        (y[2] - 0.2) * (y[2] - 0.2));
+      const double after = std::sqrt(
+        (y[0] - 0.5) * (y[0] - 0.5) + (y[1] + 0.3) * (y[1] + 0.3) + (y[2] - 0.2) * (y[2] - 0.2));
       EXPECT_NEAR(after, before, 1e-12);
     }
     else if (kind == 1)
@@ -275,7 +277,8 @@ TEST(DeformFilter, EveryInputArrayReachesTheOutputAndTheInputIsUntouched)
   EXPECT_NE(out->GetPointData()->GetArray("r"), nullptr);
   EXPECT_NE(out->GetPointData()->GetArray("f"), nullptr);
   ASSERT_NE(out->GetCellData()->GetArray("SizeSkew"), nullptr);
-  EXPECT_EQ(out->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), mesh->GetNumberOfCells());
+  EXPECT_EQ(
+    out->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), mesh->GetNumberOfCells());
   EXPECT_NE(out->GetCellData()->GetArray("Inverted"), nullptr);
 }
 
@@ -469,10 +472,12 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
 
   const std::vector<Case> cases = {
     { "missing marker array",
-      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetBoundaryMarkerArrayName("NoSuchArray"); },
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      { f->SetBoundaryMarkerArrayName("NoSuchArray"); },
       "'NoSuchArray' is not a point array" },
     { "missing displacement array",
-      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) {
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      {
         f->SetBoundaryMarkerArrayName("BoundaryMarker");
         f->SetDisplacementArrayName("Nope");
       },
@@ -481,11 +486,14 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetDisplacementArrayName("Flat"); },
       "it must have 3" },
     { "marker with a value that is not 0, 1 or 2",
-      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) { f->SetBoundaryMarkerArrayName("RealMarker"); },
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      { f->SetBoundaryMarkerArrayName("RealMarker"); },
       "has the value 1.5" },
-    { "no array selected", [](vtkDGMFDeformFilter*, vtkUnstructuredGrid*) {}, "Select a boundary-marker array" },
+    { "no array selected", [](vtkDGMFDeformFilter*, vtkUnstructuredGrid*) {},
+      "Select a boundary-marker array" },
     { "rotation about x of a 2D mesh",
-      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*) {
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      {
         f->SetBoundaryMarkerArrayName("BoundaryMarker");
         f->SetRotationAngles(10, 0, 0);
       },
@@ -499,8 +507,8 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
     filter->SetInputData(withBadArrays);
     filter->Update();
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.Name;
-    EXPECT_TRUE(errors.Contains(c.Message)) << c.Name << ": got "
-                                            << (errors.Messages.empty() ? "no message" : errors.Messages[0]);
+    EXPECT_TRUE(errors.Contains(c.Message))
+      << c.Name << ": got " << (errors.Messages.empty() ? "no message" : errors.Messages[0]);
   }
   vtkNew<vtkDGMFDeformFilter> filter;
   ErrorCatcher errors(filter);

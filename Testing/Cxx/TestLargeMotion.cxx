@@ -1,6 +1,7 @@
 // Large motions through the filter: sub-steps and the quality guard on the thin slab (issue 10).
 #include "vtkDGMFDeformFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -11,7 +12,6 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -83,7 +83,8 @@ void ExpectBoundaryExact(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output
 // degrees and leaves very bad cells at 60.
 TEST(LargeMotion, OneStepInvertsCellsAtNinetyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> out90 = Rotate(slab, 90.0, 1, 0.0);
   EXPECT_GT(Field(out90, "InvertedCellCount"), 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> out60 = Rotate(slab, 60.0, 1, 0.0);
@@ -94,7 +95,8 @@ TEST(LargeMotion, OneStepInvertsCellsAtNinetyDegrees)
 
 TEST(LargeMotion, GuardGivesNoInvertedCellAndMinimumAboveThresholdAtNinetyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   for (const double threshold : { 0.2, 0.3 })
   {
     vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 90.0, 0, threshold);
@@ -113,7 +115,8 @@ TEST(LargeMotion, GuardGivesNoInvertedCellAndMinimumAboveThresholdAtNinetyDegree
 
 TEST(LargeMotion, GuardReachesThresholdAtSixtyDegrees)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 60.0, 0, 0.3);
   EXPECT_EQ(Field(out, "InvertedCellCount"), 0.0);
   EXPECT_GE(Field(out, "SizeSkewMinimum"), 0.3);
@@ -124,7 +127,8 @@ TEST(LargeMotion, GuardReachesThresholdAtSixtyDegrees)
 // single-step result.
 TEST(LargeMotion, GuardIsLocal)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> single = Rotate(slab, 90.0, 1, 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> guarded = Rotate(slab, 90.0, 1, 0.2);
   EXPECT_EQ(Field(guarded, "SubStepsUsed"), 1.0);
@@ -148,7 +152,8 @@ TEST(LargeMotion, GuardIsLocal)
 // Fixed sub-steps: the number asked for, the boundary on its path, the input unchanged.
 TEST(LargeMotion, FixedSubStepsFollowThePath)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkUnstructuredGrid> before;
   before->DeepCopy(slab);
   vtkSmartPointer<vtkUnstructuredGrid> out = Rotate(slab, 90.0, 4, 0.2);
@@ -171,7 +176,8 @@ TEST(LargeMotion, FixedSubStepsFollowThePath)
 // defaults, and a one-step run with a zero threshold takes the single-step path.
 TEST(LargeMotion, OptionOffIsExactlyTheSingleStep)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkDGMFDeformFilter> defaults;
   defaults->SetInputData(slab);
   defaults->SetBoundaryMarkerArrayName("BoundaryMarker");
@@ -197,7 +203,8 @@ TEST(LargeMotion, OptionOffIsExactlyTheSingleStep)
 // at interior nodes (same graph, same f, same motion): automatic mode with nothing to reject.
 TEST(LargeMotion, AutomaticModeWithoutBadCellsIsOneStep)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkSmartPointer<vtkUnstructuredGrid> single = Rotate(slab, 10.0, 1, 0.0);
   ASSERT_EQ(Field(single, "InvertedCellCount"), 0.0);
   vtkSmartPointer<vtkUnstructuredGrid> automatic = Rotate(slab, 10.0, 0, 0.0);
@@ -217,7 +224,8 @@ TEST(LargeMotion, AutomaticModeWithoutBadCellsIsOneStep)
 
 TEST(LargeMotion, RefusedWithBodiesOrExtractedMotion)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
+  vtkSmartPointer<vtkUnstructuredGrid> slab =
+    dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints, SlabCells);
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(slab);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");

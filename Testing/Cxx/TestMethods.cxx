@@ -4,6 +4,7 @@
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
 
+#include "ShippedMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -16,7 +17,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "ShippedMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -38,8 +38,8 @@ double Field(vtkUnstructuredGrid* mesh, const char* name)
   return a ? a->GetTuple1(0) : NAN;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> Deform(vtkUnstructuredGrid* mesh, int method,
-  const double angles[3], const double translation[3])
+vtkSmartPointer<vtkUnstructuredGrid> Deform(
+  vtkUnstructuredGrid* mesh, int method, const double angles[3], const double translation[3])
 {
   vtkNew<vtkDGMFDeformFilter> filter;
   filter->SetInputData(mesh);
@@ -194,8 +194,9 @@ vtkSmartPointer<vtkUnstructuredGrid> MarkedBox(int n)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
       {
-        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
         mesh->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
       }
   return mesh;
@@ -225,10 +226,12 @@ TEST(Methods, TenThousandBoundaryNodesNeitherCrashNorHang)
       filter->SetRBFGreedyTolerance(1e-2);
     }
     filter->Update();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << MethodNames[method] << " on " << mesh->GetNumberOfPoints() << " nodes: " << seconds
               << " s" << std::endl;
-    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << MethodNames[method];
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints())
+      << MethodNames[method];
     EXPECT_EQ(Field(filter->GetOutput(), "InvertedCellCount"), 0.0) << MethodNames[method];
   }
 }

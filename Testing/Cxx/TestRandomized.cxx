@@ -3,11 +3,11 @@
 // finite output, no crash.
 #include "vtkDGMFDeformFilter.h"
 
+#include "vtkCell.h"
 #include "vtkDataArray.h"
 #include "vtkDelaunay2D.h"
-#include "vtkCell.h"
-#include "vtkDoubleArray.h"
 #include "vtkDelaunay3D.h"
+#include "vtkDoubleArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -37,14 +37,15 @@ vtkSmartPointer<vtkUnstructuredGrid> RandomMesh(int dimension, int count, std::m
     for (int j = 0; j <= m; ++j)
       for (int k = 0; k <= (dimension == 3 ? m : 0); ++k)
       {
-        const bool onBox = i == 0 || i == m || j == 0 || j == m ||
-          (dimension == 3 && (k == 0 || k == m));
+        const bool onBox =
+          i == 0 || i == m || j == 0 || j == m || (dimension == 3 && (k == 0 || k == m));
         if (onBox)
-          points->InsertNextPoint(-2.0 + 4.0 * i / m, -2.0 + 4.0 * j / m,
-            dimension == 3 ? -2.0 + 4.0 * k / m : 0.0);
+          points->InsertNextPoint(
+            -2.0 + 4.0 * i / m, -2.0 + 4.0 * j / m, dimension == 3 ? -2.0 + 4.0 * k / m : 0.0);
       }
   for (int n = 0; n < count; ++n)
-    points->InsertNextPoint(1.9 * u(random), 1.9 * u(random), dimension == 3 ? 1.9 * u(random) : 0.0);
+    points->InsertNextPoint(
+      1.9 * u(random), 1.9 * u(random), dimension == 3 ? 1.9 * u(random) : 0.0);
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(points);
   auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -80,7 +81,8 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
     auto mesh = RandomMesh(dimension, dimension == 2 ? 300 : 150, random);
     ASSERT_GT(mesh->GetNumberOfCells(), 0);
     // Marking: the box is static; the nodes inside a random ball are the moving "body".
-    const double centre[3] = { 0.5 * u(random), 0.5 * u(random), dimension == 3 ? 0.5 * u(random) : 0.0 };
+    const double centre[3] = { 0.5 * u(random), 0.5 * u(random),
+      dimension == 3 ? 0.5 * u(random) : 0.0 };
     const double radius = 0.3 + 0.3 * std::abs(u(random));
     vtkNew<vtkIntArray> marker;
     marker->SetName("BoundaryMarker");
@@ -90,8 +92,8 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
     {
       double p[3];
       mesh->GetPoint(i, p);
-      const bool onBox = std::abs(p[0]) == 2.0 || std::abs(p[1]) == 2.0 ||
-        (dimension == 3 && std::abs(p[2]) == 2.0);
+      const bool onBox =
+        std::abs(p[0]) == 2.0 || std::abs(p[1]) == 2.0 || (dimension == 3 && std::abs(p[2]) == 2.0);
       const double d = std::sqrt((p[0] - centre[0]) * (p[0] - centre[0]) +
         (p[1] - centre[1]) * (p[1] - centre[1]) + (p[2] - centre[2]) * (p[2] - centre[2]));
       const int kind = onBox ? 1 : d < radius ? 2 : 0;
@@ -106,7 +108,8 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
     displacement->SetNumberOfTuples(mesh->GetNumberOfPoints());
     for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
     {
-      const double d[3] = { 0.05 * u(random), 0.05 * u(random), dimension == 3 ? 0.05 * u(random) : 0.0 };
+      const double d[3] = { 0.05 * u(random), 0.05 * u(random),
+        dimension == 3 ? 0.05 * u(random) : 0.0 };
       displacement->SetTuple(i, d);
     }
     mesh->GetPointData()->AddArray(displacement);
@@ -123,7 +126,8 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
       filter->SetRotationAngles(0, 0, angle);
     else
       filter->SetRotationAngles(angle * u(random), angle * u(random), angle);
-    filter->SetTranslation(0.2 * u(random), 0.2 * u(random), dimension == 3 ? 0.2 * u(random) : 0.0);
+    filter->SetTranslation(
+      0.2 * u(random), 0.2 * u(random), dimension == 3 ? 0.2 * u(random) : 0.0);
     filter->Update();
     vtkUnstructuredGrid* out = filter->GetOutput();
     if (moving == 0)
@@ -139,9 +143,12 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
       // The prescribed rigid motion, computed independently: Rz Ry Rx.
       const double* a = filter->GetRotationAngles();
       const double ax = a[0] * Pi / 180, ay = a[1] * Pi / 180, az = a[2] * Pi / 180;
-      const double Rx[3][3] = { { 1, 0, 0 }, { 0, std::cos(ax), -std::sin(ax) }, { 0, std::sin(ax), std::cos(ax) } };
-      const double Ry[3][3] = { { std::cos(ay), 0, std::sin(ay) }, { 0, 1, 0 }, { -std::sin(ay), 0, std::cos(ay) } };
-      const double Rz[3][3] = { { std::cos(az), -std::sin(az), 0 }, { std::sin(az), std::cos(az), 0 }, { 0, 0, 1 } };
+      const double Rx[3][3] = { { 1, 0, 0 }, { 0, std::cos(ax), -std::sin(ax) },
+        { 0, std::sin(ax), std::cos(ax) } };
+      const double Ry[3][3] = { { std::cos(ay), 0, std::sin(ay) }, { 0, 1, 0 },
+        { -std::sin(ay), 0, std::cos(ay) } };
+      const double Rz[3][3] = { { std::cos(az), -std::sin(az), 0 },
+        { std::sin(az), std::cos(az), 0 }, { 0, 0, 1 } };
       double T[3][3] = {};
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -178,7 +185,8 @@ TEST(Randomized, InvariantsHoldForRandomMeshesMarkingsAndMotions)
         {
           const double expected = centre[r] + R[r][0] * (x[0] - centre[0]) +
             R[r][1] * (x[1] - centre[1]) + R[r][2] * (x[2] - centre[2]) + t[r] + d[r];
-          ASSERT_NEAR(y[r], expected, 1e-12 * std::max(1.0, std::abs(expected))) << "trial " << trial;
+          ASSERT_NEAR(y[r], expected, 1e-12 * std::max(1.0, std::abs(expected)))
+            << "trial " << trial;
         }
       }
     }

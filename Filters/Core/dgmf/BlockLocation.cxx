@@ -45,9 +45,9 @@ struct Lane
 };
 } // namespace
 
-BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
-  std::size_t begin, std::size_t end, std::int32_t* nodeElement, double* weights, std::size_t stride,
-  std::size_t locatedBefore)
+BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points,
+  const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
+  double* weights, std::size_t stride, std::size_t locatedBefore)
 {
   const int dimension = graph.GetDimension();
   const int n = dimension + 1;
@@ -97,7 +97,8 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     }
     graph.PrefetchElement(lane.Element);
   };
-  // Stores the node's location and moves the lane to its next node (Node == End when the run is done).
+  // Stores the node's location and moves the lane to its next node (Node == End when the run is
+  // done).
   auto finish = [&](Lane& lane, std::int32_t element, const double* w, bool outside)
   {
     nodeElement[lane.Node] = element;
@@ -156,8 +157,9 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
       {
         for (; j + 1 < active; j += 2)
         {
-          SubVolumesPair3(graph.GetWalkRecord(lanes[j].Element), graph.GetWalkRecord(lanes[j + 1].Element),
-            lanes[j].P, lanes[j + 1].P, w[j], w[j + 1], total[j], total[j + 1]);
+          SubVolumesPair3(graph.GetWalkRecord(lanes[j].Element),
+            graph.GetWalkRecord(lanes[j + 1].Element), lanes[j].P, lanes[j + 1].P, w[j], w[j + 1],
+            total[j], total[j + 1]);
         }
       }
       for (; j < active; ++j)
@@ -167,7 +169,8 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
       for (j = 0; j < active; ++j)
       {
         inside[j] = IsInside(w[j], total[j], dimension);
-        next[j] = graph.GetWalkRecord(lanes[j].Element).Neighbors[MostNegativeWeight(w[j], dimension)];
+        next[j] =
+          graph.GetWalkRecord(lanes[j].Element).Neighbors[MostNegativeWeight(w[j], dimension)];
       }
       // ... then the decisions.
       for (std::size_t k = 0; k < active; ++k)
@@ -243,7 +246,8 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     }
   };
   const std::size_t length = end - begin;
-  const std::size_t range = stride > (length + Lanes - 1) / Lanes && stride < length ? stride : length;
+  const std::size_t range =
+    stride > (length + Lanes - 1) / Lanes && stride < length ? stride : length;
   for (std::size_t first = begin; first < end;)
   {
     // Once the stride has failed the block, the rest is one range.

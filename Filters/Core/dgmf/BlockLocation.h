@@ -17,8 +17,8 @@ namespace dgmf
 /// What the location of a block counted.
 struct BlockLocationCounts
 {
-  std::size_t Outside = 0;  ///< nodes outside the graph's convex hull
-  std::size_t Restarts = 0; ///< walks started from the graph's seed grid
+  std::size_t Outside = 0;    ///< nodes outside the graph's convex hull
+  std::size_t Restarts = 0;   ///< walks started from the graph's seed grid
   std::size_t StrideHits = 0; ///< nodes found by the walk from their stride neighbour's element
 };
 
@@ -47,9 +47,9 @@ struct BlockLocationCounts
  *   DelaunayMapping::NotLocated for the block's interior nodes; out: their elements
  * @param weights output: dim+1 barycentric coordinates per node (node i at i * (dim + 1))
  */
-BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
-  std::size_t begin, std::size_t end, std::int32_t* nodeElement, double* weights, std::size_t stride = 0,
-  std::size_t locatedBefore = 0);
+BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points,
+  const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
+  double* weights, std::size_t stride = 0, std::size_t locatedBefore = 0);
 
 } // namespace dgmf
 

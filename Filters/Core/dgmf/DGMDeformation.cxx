@@ -6,12 +6,14 @@
 namespace dgmf
 {
 
-std::vector<double> GatherVertexDisplacement(const DelaunayMapping& mapping, const BoundaryMotion& boundary)
+std::vector<double> GatherVertexDisplacement(
+  const DelaunayMapping& mapping, const BoundaryMotion& boundary)
 {
   const std::vector<std::int32_t>& nodes = mapping.GetBoundaryNodes();
   if (boundary.Nodes != nodes)
   {
-    throw std::invalid_argument("the boundary motion and the Delaunay mapping list different boundary nodes");
+    throw std::invalid_argument(
+      "the boundary motion and the Delaunay mapping list different boundary nodes");
   }
   const DelaunayGraph& graph = mapping.GetGraph();
   std::vector<double> displacement(3 * graph.GetNumberOfVertices(), 0.0);
@@ -55,7 +57,8 @@ std::size_t DeformDGM(const DelaunayMapping& mapping, const BoundaryMotion& boun
         deformed[3 * i + c] = points[3 * i + c] + d[c];
       }
     });
-  // Boundary nodes: their own prescribed displacement (coincident nodes may differ from their vertex).
+  // Boundary nodes: their own prescribed displacement (coincident nodes may differ from their
+  // vertex).
   ApplyBoundaryMotion(boundary, points, deformed);
 
   return graph.CountInvertedElements(vertexDisplacement.data());

@@ -19,7 +19,8 @@ namespace dgmf
  * carries (DelaunayMapping::GetVertexNode). `boundary` must list the same boundary nodes as the
  * mapping (both come from the same node kinds).
  */
-std::vector<double> GatherVertexDisplacement(const DelaunayMapping& mapping, const BoundaryMotion& boundary);
+std::vector<double> GatherVertexDisplacement(
+  const DelaunayMapping& mapping, const BoundaryMotion& boundary);
 
 /**
  * DGM: the graph's vertices move with the boundary and every interior node keeps its barycentric

@@ -7,7 +7,8 @@
 namespace dgmf
 {
 
-std::vector<double> GatherVertexDeformation(const DelaunayMapping& mapping, const double* displacement)
+std::vector<double> GatherVertexDeformation(
+  const DelaunayMapping& mapping, const double* displacement)
 {
   const std::size_t vertices = mapping.GetGraph().GetNumberOfVertices();
   std::vector<double> d(3 * vertices, 0.0);
@@ -20,7 +21,8 @@ std::vector<double> GatherVertexDeformation(const DelaunayMapping& mapping, cons
     const auto vertex = static_cast<std::int32_t>(v);
     if (mapping.GetVertexKind(vertex) == NodeKind::MovingBoundary)
     {
-      const double* source = displacement + 3 * static_cast<std::size_t>(mapping.GetVertexNode(vertex));
+      const double* source =
+        displacement + 3 * static_cast<std::size_t>(mapping.GetVertexNode(vertex));
       std::copy(source, source + 3, d.begin() + 3 * v);
     }
   }
@@ -92,15 +94,16 @@ void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMoti
           }
           const double pair[2] = { f[pending], f[i] };
           const bool withOwn = mode == DeformationMode::DGMF1 && displacement;
-          damped.ApplyPair(pair, points + 3 * pending, x, withOwn ? displacement + 3 * pending : nullptr,
-            withOwn ? own : nullptr, deformed + 3 * pending, out);
+          damped.ApplyPair(pair, points + 3 * pending, x,
+            withOwn ? displacement + 3 * pending : nullptr, withOwn ? own : nullptr,
+            deformed + 3 * pending, out);
           pending = end;
         }
         else
         {
           double d[3];
-          InterpolateMovingDeformation(
-            mapping, vertexDeformation.data(), mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
+          InterpolateMovingDeformation(mapping, vertexDeformation.data(),
+            mapping.GetElementOfNode(i), mapping.GetWeights(i), d);
           damped.Apply(f[i], x, d, out);
         }
       }

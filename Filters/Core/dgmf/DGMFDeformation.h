@@ -17,15 +17,17 @@ namespace dgmf
 /// Where the shape deformation d of an interior node comes from.
 enum class DeformationMode : int
 {
-  DGMF1 = 1, ///< d is given at every node (a known function of position, e.g. the twisted bar's bump)
-  DGMF2 = 2  ///< d is given at the moving boundary nodes and interpolated by paper Eq. 7 (default)
+  DGMF1 =
+    1, ///< d is given at every node (a known function of position, e.g. the twisted bar's bump)
+  DGMF2 = 2 ///< d is given at the moving boundary nodes and interpolated by paper Eq. 7 (default)
 };
 
 /**
  * The shape deformation of the graph vertices: the displacement of each moving vertex's node,
  * zero at static vertices (3 doubles per vertex). `displacement` (3 per node) may be null.
  */
-std::vector<double> GatherVertexDeformation(const DelaunayMapping& mapping, const double* displacement);
+std::vector<double> GatherVertexDeformation(
+  const DelaunayMapping& mapping, const double* displacement);
 
 /**
  * Paper Eq. 7: d = sum e_i d_i / sum e_i over the moving vertices i of `element`, or 0 when the

@@ -31,8 +31,8 @@ inline double Distance(const double* a, const double* b)
 
 /// Per element: the support radius, then for each vertex a_k (3 values) and b_k.
 template <int N>
-void FitElement(const DelaunayGraph& graph, std::int32_t e, const std::vector<double>& vertexDisplacement,
-  double supportRadius, double* coefficients)
+void FitElement(const DelaunayGraph& graph, std::int32_t e,
+  const std::vector<double>& vertexDisplacement, double supportRadius, double* coefficients)
 {
   const std::int32_t* v = graph.GetElement(e);
   double longest = 0.0;
@@ -40,7 +40,8 @@ void FitElement(const DelaunayGraph& graph, std::int32_t e, const std::vector<do
   {
     for (int k = j + 1; k < N; ++k)
     {
-      longest = std::max(longest, Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])));
+      longest =
+        std::max(longest, Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])));
     }
   }
   const double R = supportRadius > 0.0 ? std::max(supportRadius, longest) : 2.0 * longest;
@@ -50,7 +51,8 @@ void FitElement(const DelaunayGraph& graph, std::int32_t e, const std::vector<do
   {
     for (int k = 0; k < N; ++k)
     {
-      phi(j, k) = Wendland(Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])) / R);
+      phi(j, k) =
+        Wendland(Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])) / R);
     }
     const double* d = vertexDisplacement.data() + 3 * static_cast<std::size_t>(v[j]);
     rhs(j, 0) = d[0];

@@ -20,8 +20,8 @@ namespace dgmf
  * For each non-zero angle theta, sin and cos of theta * k / Steps (k = 0..Steps) are tabulated
  * once; for a given f, the angle is split as theta * k / Steps + rho with 0 <= rho < theta / Steps,
  * sin and cos of rho come from their Taylor series (|rho| < 0.02 for |theta| <= 4 pi: the series
- * is exact to round-off), and the addition formulas combine the two. f = 0 and f = 1 are exact table
- * entries. The rotations about x, y and z are applied in that order (R = Rz Ry Rx).
+ * is exact to round-off), and the addition formulas combine the two. f = 0 and f = 1 are exact
+ * table entries. The rotations about x, y and z are applied in that order (R = Rz Ry Rx).
  *
  * A motion with an axis rotation (RigidMotion::AxisAngleDegrees != 0) is tabulated the same way
  * for its one angle, and applied with Rodrigues' formula about the fixed unit axis k:
@@ -44,7 +44,8 @@ public:
     this->Rotate(y, [f](const Axis& axis, double& s, double& c) { axis.SinCos(f, s, c); });
     for (int c = 0; c < 3; ++c)
     {
-      out[c] = this->Motion.Center[c] + y[c] + f * this->Motion.Translation[c] + (d ? f * d[c] : 0.0);
+      out[c] =
+        this->Motion.Center[c] + y[c] + f * this->Motion.Translation[c] + (d ? f * d[c] : 0.0);
     }
   }
 
@@ -70,7 +71,8 @@ public:
       const Pair d = { d0 ? d0[c] : 0.0, d1 ? d1[c] : 0.0 };
       const Pair hasD = { d0 ? 1.0 : 0.0, d1 ? 1.0 : 0.0 };
       // As in Apply: c + y + f t + (d ? f d : 0); f d is 0 exactly when there is no d.
-      const Pair r = this->Motion.Center[c] + y[c] + fv * this->Motion.Translation[c] + hasD * (fv * d);
+      const Pair r =
+        this->Motion.Center[c] + y[c] + fv * this->Motion.Translation[c] + hasD * (fv * d);
       out0[c] = r[0];
       out1[c] = r[1];
     }
@@ -101,13 +103,13 @@ private:
 
   struct Axis
   {
-    int I = 0, J = 1;                  ///< the plane of the rotation
-    double Angle = 0.0;                ///< radians
-    double AnglePerStep = 0.0;         ///< Angle / Steps
+    int I = 0, J = 1;          ///< the plane of the rotation
+    double Angle = 0.0;        ///< radians
+    double AnglePerStep = 0.0; ///< Angle / Steps
     /// |AnglePerStep| <= ShortSeriesLimit: the terms beyond rho^5 (sin) and rho^4 (cos) are
     /// below 1e-20 (absolute; the terms are bounded by rho^6 / 720), and are left out.
     bool ShortSeries = false;
-    std::vector<double> Sin, Cos;      ///< at angle * k / Steps
+    std::vector<double> Sin, Cos; ///< at angle * k / Steps
 
     void SinCos(double f, double& s, double& c) const
     {
@@ -122,8 +124,10 @@ private:
     /// entries `k` and remainders `frac` (TableSplit: the same for every angle).
     void SinCos(const int k[2], Pair frac, Pair& s, Pair& c) const
     {
-      const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])], this->Sin[static_cast<std::size_t>(k[1])] };
-      const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])], this->Cos[static_cast<std::size_t>(k[1])] };
+      const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])],
+        this->Sin[static_cast<std::size_t>(k[1])] };
+      const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])],
+        this->Cos[static_cast<std::size_t>(k[1])] };
       this->Combine(this->AnglePerStep * frac, sk, ck, s, c);
     }
 
@@ -138,10 +142,12 @@ private:
       constexpr double i6 = 1.0 / 6.0, i20 = 1.0 / 20.0, i42 = 1.0 / 42.0, i72 = 1.0 / 72.0;
       constexpr double i2 = 0.5, i12 = 1.0 / 12.0, i30 = 1.0 / 30.0, i56 = 1.0 / 56.0;
       // Angles up to ShortSeriesLimit per step need the series only to rho^5 and rho^4.
-      const T sr = this->ShortSeries ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
-                                     : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
-      const T cr = this->ShortSeries ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
-                                     : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
+      const T sr = this->ShortSeries
+        ? rho * (1.0 - r2 * i6 * (1.0 - r2 * i20))
+        : rho * (1.0 - r2 * i6 * (1.0 - r2 * i20 * (1.0 - r2 * i42 * (1.0 - r2 * i72))));
+      const T cr = this->ShortSeries
+        ? 1.0 - r2 * i2 * (1.0 - r2 * i12)
+        : 1.0 - r2 * i2 * (1.0 - r2 * i12 * (1.0 - r2 * i30 * (1.0 - r2 * i56)));
       s = sk * cr + ck * sr;
       c = ck * cr - sk * sr;
     }
@@ -161,7 +167,8 @@ private:
       sinCos(this->AxisRotation, s, c);
       const double* a = this->UnitAxis;
       const T kv = (1.0 - c) * (a[0] * y[0] + a[1] * y[1] + a[2] * y[2]);
-      const T w[3] = { a[1] * y[2] - a[2] * y[1], a[2] * y[0] - a[0] * y[2], a[0] * y[1] - a[1] * y[0] };
+      const T w[3] = { a[1] * y[2] - a[2] * y[1], a[2] * y[0] - a[0] * y[2],
+        a[0] * y[1] - a[1] * y[0] };
       for (int i = 0; i < 3; ++i)
       {
         y[i] = c * y[i] + s * w[i] + kv * a[i];

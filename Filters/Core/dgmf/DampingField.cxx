@@ -19,8 +19,9 @@ void ComputeBoundaryDistanceField(
   std::vector<double> vertexR0(graph.GetNumberOfVertices());
   for (std::size_t v = 0; v < vertexR0.size(); ++v)
   {
-    vertexR0[v] =
-      mapping.GetVertexKind(static_cast<std::int32_t>(v)) == NodeKind::MovingBoundary ? 0.0 : staticR0;
+    vertexR0[v] = mapping.GetVertexKind(static_cast<std::int32_t>(v)) == NodeKind::MovingBoundary
+      ? 0.0
+      : staticR0;
   }
   const int n = graph.GetVerticesPerElement();
   mapping.ForEachNode(parallelFor,

@@ -1,6 +1,7 @@
 /**
  * @file DampingField.h
- * @brief Steps 3-4 of DGMF: the interpolated boundary value r and the damping factor f of every node.
+ * @brief Steps 3-4 of DGMF: the interpolated boundary value r and the damping factor f of every
+ * node.
  */
 #ifndef dgmf_DampingField_h
 #define dgmf_DampingField_h

@@ -6,12 +6,12 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
@@ -84,7 +84,8 @@ void NumberVertices(Triangulation& t, std::size_t count, const LocatePoint& loca
   }
   for (std::size_t i = 0; i < count; ++i)
   {
-    if (handleOfPoint[i] == VertexHandle() || static_cast<std::size_t>(handleOfPoint[i]->info()) != i)
+    if (handleOfPoint[i] == VertexHandle() ||
+      static_cast<std::size_t>(handleOfPoint[i]->info()) != i)
     {
       // A point coincident with another one: CGAL kept a single vertex for both.
       handleOfPoint[i] = locateVertex(i);
@@ -128,12 +129,13 @@ std::vector<Handle> HilbertOrderedElements(Iterator begin, Iterator end, int cor
     centroids.reserve(handles.size());
     for (const Handle& h : handles)
     {
-      centroids.push_back(CGAL::centroid(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()));
+      centroids.push_back(
+        CGAL::centroid(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()));
     }
     using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel,
       CGAL::Pointer_property_map<Kernel::Point_2>::type>;
-    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())),
-    CGAL::Hilbert_sort_middle_policy());
+    CGAL::hilbert_sort(order.begin(), order.end(),
+      Traits(CGAL::make_property_map(centroids.data())), CGAL::Hilbert_sort_middle_policy());
   }
   std::vector<Handle> ordered;
   ordered.reserve(handles.size());
@@ -157,8 +159,8 @@ std::vector<Handle> HilbertOrderedCells(Iterator begin, Iterator end)
   }
   std::vector<std::size_t> order(handles.size());
   std::iota(order.begin(), order.end(), 0);
-  using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel,
-    CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+  using Traits =
+    CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Kernel::Point_3>::type>;
   CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())),
     CGAL::Hilbert_sort_middle_policy());
   std::vector<Handle> ordered;
@@ -275,7 +277,8 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
-    cells = HilbertOrderedCells<Delaunay3::Cell_handle>(t.finite_cells_begin(), t.finite_cells_end());
+    cells =
+      HilbertOrderedCells<Delaunay3::Cell_handle>(t.finite_cells_begin(), t.finite_cells_end());
     this->ElementVertices.reserve(n * cells.size());
     for (std::size_t e = 0; e < cells.size(); ++e)
     {
@@ -369,7 +372,8 @@ void DelaunayGraph::BuildSeedGrid()
   {
     this->SeedOrigin[c] = lower[c];
     this->SeedCells[c] = c < this->Dimension
-      ? std::clamp<std::int64_t>(static_cast<std::int64_t>((upper[c] - lower[c]) * this->SeedInverseSize) + 1, 1, 1024)
+      ? std::clamp<std::int64_t>(
+          static_cast<std::int64_t>((upper[c] - lower[c]) * this->SeedInverseSize) + 1, 1, 1024)
       : 1;
     total *= static_cast<std::size_t>(this->SeedCells[c]);
   }
@@ -422,7 +426,9 @@ std::size_t DelaunayGraph::SeedCell(const double p[3]) const
   for (int c = 0; c < 3; ++c)
   {
     const double x = (p[c] - this->SeedOrigin[c]) * this->SeedInverseSize;
-    const std::int64_t i = x > 0.0 ? std::min<std::int64_t>(static_cast<std::int64_t>(std::min(x, 1e9)), this->SeedCells[c] - 1) : 0;
+    const std::int64_t i = x > 0.0
+      ? std::min<std::int64_t>(static_cast<std::int64_t>(std::min(x, 1e9)), this->SeedCells[c] - 1)
+      : 0;
     index += static_cast<std::size_t>(i) * stride;
     stride *= static_cast<std::size_t>(this->SeedCells[c]);
   }
@@ -443,8 +449,9 @@ DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int
     const Delaunay2& t = this->Triangulation2->Triangulation;
     Delaunay2::Locate_type lt;
     int li;
-    Delaunay2::Face_handle start =
-      hint >= 0 ? this->Triangulation2->Faces[static_cast<std::size_t>(hint)] : Delaunay2::Face_handle();
+    Delaunay2::Face_handle start = hint >= 0
+      ? this->Triangulation2->Faces[static_cast<std::size_t>(hint)]
+      : Delaunay2::Face_handle();
     Delaunay2::Face_handle f = t.locate(Kernel::Point_2(p[0], p[1]), lt, li, start);
     if (t.is_infinite(f))
     {
@@ -458,8 +465,9 @@ DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int
     const Delaunay3& t = this->Triangulation3->Triangulation;
     Delaunay3::Locate_type lt;
     int li, lj;
-    Delaunay3::Cell_handle start =
-      hint >= 0 ? this->Triangulation3->Cells[static_cast<std::size_t>(hint)] : Delaunay3::Cell_handle();
+    Delaunay3::Cell_handle start = hint >= 0
+      ? this->Triangulation3->Cells[static_cast<std::size_t>(hint)]
+      : Delaunay3::Cell_handle();
     Delaunay3::Cell_handle c = t.locate(Kernel::Point_3(p[0], p[1], p[2]), lt, li, lj, start);
     if (t.is_infinite(c))
     {
@@ -490,19 +498,20 @@ std::size_t DelaunayGraph::CountInvertedElements(const double* displacements) co
     for (int k = 0; k < n; ++k)
     {
       const double* x = this->OriginalPositions.data() + 3 * static_cast<std::size_t>(v[k]);
-      const double* d = displacements ? displacements + 3 * static_cast<std::size_t>(v[k]) : nullptr;
+      const double* d =
+        displacements ? displacements + 3 * static_cast<std::size_t>(v[k]) : nullptr;
       for (int c = 0; c < 3; ++c)
       {
         before[k][c] = x[c];
         after[k][c] = d ? x[c] + d[c] : x[c];
       }
     }
-    auto orientation = [this](const double (*q)[3])
+    auto orientation = [this](const double(*q)[3])
     {
       if (this->Dimension == 2)
       {
-        return CGAL::orientation(Kernel::Point_2(q[0][0], q[0][1]), Kernel::Point_2(q[1][0], q[1][1]),
-          Kernel::Point_2(q[2][0], q[2][1]));
+        return CGAL::orientation(Kernel::Point_2(q[0][0], q[0][1]),
+          Kernel::Point_2(q[1][0], q[1][1]), Kernel::Point_2(q[2][0], q[2][1]));
       }
       return CGAL::orientation(Kernel::Point_3(q[0][0], q[0][1], q[0][2]),
         Kernel::Point_3(q[1][0], q[1][1], q[1][2]), Kernel::Point_3(q[2][0], q[2][1], q[2][2]),
@@ -526,7 +535,8 @@ std::size_t DelaunayGraph::GetMemorySize() const
     this->PointOfVertex.capacity() * sizeof(std::int32_t) +
     (this->VertexPositions.capacity() + this->OriginalPositions.capacity()) * sizeof(double) +
     this->ElementVertices.capacity() * sizeof(std::int32_t) +
-    this->Records.capacity() * sizeof(WalkRecord) + this->SeedGrid.capacity() * sizeof(std::int32_t);
+    this->Records.capacity() * sizeof(WalkRecord) +
+    this->SeedGrid.capacity() * sizeof(std::int32_t);
   if (this->Triangulation2)
   {
     const Delaunay2& t = this->Triangulation2->Triangulation;

@@ -109,7 +109,8 @@ public:
   void PrefetchElement(std::int32_t e) const
   {
     __builtin_prefetch(&this->Records[static_cast<std::size_t>(e)]);
-    __builtin_prefetch(reinterpret_cast<const char*>(&this->Records[static_cast<std::size_t>(e)]) + 64);
+    __builtin_prefetch(
+      reinterpret_cast<const char*>(&this->Records[static_cast<std::size_t>(e)]) + 64);
   }
 
   /**

@@ -51,8 +51,8 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
       {
         if (task == 0)
         {
-          this->Graph =
-            std::make_unique<DelaunayGraph>(dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
+          this->Graph = std::make_unique<DelaunayGraph>(
+            dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
           return;
         }
         this->NodeElement.assign(numberOfNodes, NotLocated);
@@ -135,8 +135,9 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
       [&](std::size_t piece)
       {
         const std::size_t begin = waveBegin + piece * pieceLength;
-        counts[piece] = LocateBlock(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
-          this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
+        counts[piece] =
+          LocateBlock(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
+            this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
       });
     for (const BlockLocationCounts& count : counts)
     {
@@ -151,8 +152,10 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
 std::size_t DelaunayMapping::GetMemorySize() const
 {
   return this->Graph->GetMemorySize() + this->BoundaryNodes.capacity() * sizeof(std::int32_t) +
-    this->NodeElement.capacity() * sizeof(std::int32_t) + this->Weights.capacity() * sizeof(double) +
-    this->Kinds.capacity() * sizeof(NodeKind) + this->VertexKind.capacity() * sizeof(NodeKind) + this->VertexNode.capacity() * sizeof(std::int32_t);
+    this->NodeElement.capacity() * sizeof(std::int32_t) +
+    this->Weights.capacity() * sizeof(double) + this->Kinds.capacity() * sizeof(NodeKind) +
+    this->VertexKind.capacity() * sizeof(NodeKind) +
+    this->VertexNode.capacity() * sizeof(std::int32_t);
 }
 
 } // namespace dgmf

@@ -76,7 +76,8 @@ public:
   {
     const std::size_t nodes = this->GetNumberOfNodes();
     ForEachBlock(parallelFor, (nodes + BlockSize - 1) / BlockSize,
-      [&](std::size_t block) { body(block * BlockSize, std::min(block * BlockSize + BlockSize, nodes)); });
+      [&](std::size_t block)
+      { body(block * BlockSize, std::min(block * BlockSize + BlockSize, nodes)); });
   }
 
   /**
@@ -119,9 +120,15 @@ public:
   }
 
   /// Kind of graph vertex `v`: StaticBoundary or MovingBoundary.
-  NodeKind GetVertexKind(std::int32_t v) const { return this->VertexKind[static_cast<std::size_t>(v)]; }
+  NodeKind GetVertexKind(std::int32_t v) const
+  {
+    return this->VertexKind[static_cast<std::size_t>(v)];
+  }
   /// The mesh node whose prescribed motion a graph vertex carries.
-  std::int32_t GetVertexNode(std::int32_t v) const { return this->VertexNode[static_cast<std::size_t>(v)]; }
+  std::int32_t GetVertexNode(std::int32_t v) const
+  {
+    return this->VertexNode[static_cast<std::size_t>(v)];
+  }
 
   /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }

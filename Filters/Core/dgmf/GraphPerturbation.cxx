@@ -84,7 +84,8 @@ std::vector<double> NearestDistances(const std::vector<std::array<double, 3>>& u
 }
 } // namespace
 
-std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t count, double relative)
+std::vector<double> PerturbPoints(
+  int dimension, const double* xyz, std::size_t count, double relative)
 {
   std::vector<double> moved(3 * count);
   if (count == 0)
@@ -95,7 +96,10 @@ std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t 
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
   auto less = [&](std::size_t a, std::size_t b)
-  { return std::lexicographical_compare(xyz + 3 * a, xyz + 3 * a + dimension, xyz + 3 * b, xyz + 3 * b + dimension); };
+  {
+    return std::lexicographical_compare(
+      xyz + 3 * a, xyz + 3 * a + dimension, xyz + 3 * b, xyz + 3 * b + dimension);
+  };
   std::sort(order.begin(), order.end(), less);
   std::vector<std::array<double, 3>> unique;
   std::vector<std::size_t> uniqueOf(count);
@@ -143,7 +147,8 @@ bool SpansDimension(int dimension, const double* xyz, std::size_t count)
     }
     return false;
   }
-  auto point = [&](std::size_t i) { return Kernel::Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
+  auto point = [&](std::size_t i)
+  { return Kernel::Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
   std::size_t second = 1;
   while (second < count && point(second) == point(0))
   {

@@ -28,7 +28,8 @@ constexpr double GraphPerturbation = 1e-11;
  * direction that is a hash of its coordinates: deterministic, and coincident points stay
  * coincident.
  */
-std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t count, double relative);
+std::vector<double> PerturbPoints(
+  int dimension, const double* xyz, std::size_t count, double relative);
 
 /// True when the points span the dimension (not all collinear in 2D, not all coplanar in 3D),
 /// decided with CGAL's exact predicates.

@@ -28,19 +28,19 @@ struct Sources
 {
   std::size_t Count = 0;
   bool ThreeD = true;
-  std::vector<double> X, Y, Z;     ///< positions (Z = 0 in 2D)
-  std::vector<double> A;           ///< A_i divided by the largest A_i
-  std::vector<double> S[3];        ///< displacement - Reference (S[2] = 0 in 2D)
-  const double* Exact = nullptr;   ///< the given displacements, 3 per node
+  std::vector<double> X, Y, Z;   ///< positions (Z = 0 in 2D)
+  std::vector<double> A;         ///< A_i divided by the largest A_i
+  std::vector<double> S[3];      ///< displacement - Reference (S[2] = 0 in 2D)
+  const double* Exact = nullptr; ///< the given displacements, 3 per node
   double Reference[3] = { 0.0, 0.0, 0.0 };
-  double L = 1.0;                  ///< Ldef
+  double L = 1.0; ///< Ldef
   double LSquared = 1.0;
   double InverseL = 1.0;
   double ExponentA = 3.0;
   double ExponentB = 5.0;
   double Alpha = 5.0;
-  double AlphaPowerB = 3125.0;     ///< alpha^b, for the default exponents
-  double SafeSquared = 0.0;        ///< below this d^2 the fast path could overflow
+  double AlphaPowerB = 3125.0; ///< alpha^b, for the default exponents
+  double SafeSquared = 0.0;    ///< below this d^2 the fast path could overflow
 };
 
 /// Boundary nodes are processed in tiles of this many, with Eigen arrays (SIMD sqrt and division).
@@ -172,8 +172,8 @@ void SumSafe(const Sources& s, const double p[3], double out[3])
   }
   const double qm = std::sqrt(weightedQ2);
   const double la = s.ExponentA * -std::log(qm);
-  const double lb = s.Alpha > 0.0 ? s.ExponentB * std::log(s.Alpha / qm)
-                                  : -std::numeric_limits<double>::infinity();
+  const double lb =
+    s.Alpha > 0.0 ? s.ExponentB * std::log(s.Alpha / qm) : -std::numeric_limits<double>::infinity();
   const double lmax = std::max(la, lb);
   const double ca = std::exp(la - lmax);
   const double cb = std::exp(lb - lmax);
@@ -222,8 +222,7 @@ void CheckParameters(const BoundaryMotion& boundary, const IDWParameters& parame
   {
     if (!std::isfinite(boundary.Positions[i]) || !std::isfinite(boundary.Displacements[i]))
     {
-      throw std::invalid_argument(
-        "IDW: boundary node " + std::to_string(i / 3) +
+      throw std::invalid_argument("IDW: boundary node " + std::to_string(i / 3) +
         " has a non-finite position or displacement");
     }
   }

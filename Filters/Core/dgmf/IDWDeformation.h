@@ -26,15 +26,16 @@ struct IDWParameters
 };
 
 /**
- * s(x) = sum_i w_i s_i / sum_i w_i, w_i = A_i [ (Ldef/d_i)^a + (alpha Ldef/d_i)^b ], d_i = |x - x_i|,
- * summed exactly over all boundary nodes (cost O(N Nb)); deformed = x + s(x). A node within
+ * s(x) = sum_i w_i s_i / sum_i w_i, w_i = A_i [ (Ldef/d_i)^a + (alpha Ldef/d_i)^b ], d_i = |x -
+ * x_i|, summed exactly over all boundary nodes (cost O(N Nb)); deformed = x + s(x). A node within
  * 1e-150 Ldef of a boundary node (in practice: the same position) gets that node's displacement
  * exactly. Very small and very large distances are handled without overflow or underflow. In 2D
  * only x and y are used and z is not changed. Returns the Ldef used (1 if the automatic Ldef
  * would be 0). Throws std::invalid_argument for bad parameters or weights, or no boundary nodes.
  */
 double DeformIDW(const BoundaryMotion& boundary, const IDWParameters& parameters,
-  const double* points, std::size_t numberOfNodes, double* deformed, const ParallelFor& parallelFor);
+  const double* points, std::size_t numberOfNodes, double* deformed,
+  const ParallelFor& parallelFor);
 
 } // namespace dgmf
 

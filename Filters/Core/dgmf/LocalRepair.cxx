@@ -240,7 +240,7 @@ void Validate(const CellMesh& mesh, const double* originalPoints, const double* 
     throw std::invalid_argument("RepairCells: points, original points and node kinds are required");
   }
   if (mesh.Offsets[0] < 0 ||
-      static_cast<std::size_t>(mesh.Offsets[cells]) > mesh.Connectivity.size())
+    static_cast<std::size_t>(mesh.Offsets[cells]) > mesh.Connectivity.size())
   {
     throw std::invalid_argument("RepairCells: the offsets do not fit the connectivity");
   }
@@ -415,7 +415,7 @@ private:
     for (const ActiveCell& cell : this->Cells)
     {
       if (cell.FreeNodeCount > 0 && !cell.Degenerate &&
-          IsBadCell(CellQuality{ cell.Quality, cell.Inverted }, threshold))
+        IsBadCell(CellQuality{ cell.Quality, cell.Inverted }, threshold))
       {
         ++count;
       }
@@ -612,8 +612,7 @@ private:
             continue;
           }
           this->AddDirection(static_cast<double>(a) * node.Basis[0] +
-                             static_cast<double>(b) * node.Basis[1] +
-                             static_cast<double>(c) * node.Basis[2]);
+            static_cast<double>(b) * node.Basis[1] + static_cast<double>(c) * node.Basis[2]);
         }
       }
     }
@@ -1084,7 +1083,7 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
     if (!IsCovered(mesh, c) ||
-        !IsBadCell(CellQuality{ quality[c], inverted[c] != 0 }, parameters.Threshold))
+      !IsBadCell(CellQuality{ quality[c], inverted[c] != 0 }, parameters.Threshold))
     {
       continue;
     }

@@ -11,8 +11,8 @@ void SerialFor(std::size_t begin, std::size_t end, std::size_t /*grain*/, const 
   }
 }
 
-void ForEachBlock(
-  const ParallelFor& parallelFor, std::size_t numberOfBlocks, const std::function<void(std::size_t)>& body)
+void ForEachBlock(const ParallelFor& parallelFor, std::size_t numberOfBlocks,
+  const std::function<void(std::size_t)>& body)
 {
   const ParallelFor& run = parallelFor ? parallelFor : ParallelFor(SerialFor);
   run(0, numberOfBlocks, 1,

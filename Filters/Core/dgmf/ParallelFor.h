@@ -23,8 +23,8 @@ using RangeFunction = std::function<void(std::size_t begin, std::size_t end)>;
  * Runs `body` over [begin, end), possibly in several threads, in chunks of about `grain` indices.
  * Chunks must not overlap and must cover the range.
  */
-using ParallelFor =
-  std::function<void(std::size_t begin, std::size_t end, std::size_t grain, const RangeFunction& body)>;
+using ParallelFor = std::function<void(
+  std::size_t begin, std::size_t end, std::size_t grain, const RangeFunction& body)>;
 
 /// Runs the whole range in the calling thread.
 void SerialFor(std::size_t begin, std::size_t end, std::size_t grain, const RangeFunction& body);
@@ -33,8 +33,8 @@ void SerialFor(std::size_t begin, std::size_t end, std::size_t grain, const Rang
  * Runs `body(block)` for every block index in [0, numberOfBlocks): a convenience over ParallelFor
  * for code whose result must not depend on the chunking.
  */
-void ForEachBlock(
-  const ParallelFor& parallelFor, std::size_t numberOfBlocks, const std::function<void(std::size_t)>& body);
+void ForEachBlock(const ParallelFor& parallelFor, std::size_t numberOfBlocks,
+  const std::function<void(std::size_t)>& body);
 
 } // namespace dgmf
 

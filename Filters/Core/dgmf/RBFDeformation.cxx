@@ -185,8 +185,8 @@ struct RBFInterpolation::Internals
   /// The centres and a_j by coordinate, for the vectorised loop over all centres.
   std::vector<double> CentreXYZ[3];
   std::vector<double> CoefficientXYZ[3];
-  double Polynomial[4][3] = {};     ///< row 0: constant; row 1 + c: coefficient of coordinate c
-  std::unique_ptr<Tree> Search;     ///< over Centres; used for evaluation when UseSearch
+  double Polynomial[4][3] = {}; ///< row 0: constant; row 1 + c: coefficient of coordinate c
+  std::unique_ptr<Tree> Search; ///< over Centres; used for evaluation when UseSearch
   bool UseSearch = false;
   double BoundaryError = 0.0;
 
@@ -328,8 +328,10 @@ void RBFInterpolation::Internals::Fit(const BoundaryMotion& boundary,
     throw std::invalid_argument("RBF: " + std::to_string(k) + " centres give a dense system (" +
       std::to_string(static_cast<int>(100.0 * fraction + 0.5)) + "% nonzeros) that would need " +
       Gigabytes(8.0 * kk * kk) + " and O(n^3) time; the limit is " +
-      std::to_string(MaximumDenseCentres) + " centres. Enable greedy centre selection "
-      "(RBFGreedy, with RBFGreedyMaximumPoints <= " + std::to_string(MaximumDenseCentres) +
+      std::to_string(MaximumDenseCentres) +
+      " centres. Enable greedy centre selection "
+      "(RBFGreedy, with RBFGreedyMaximumPoints <= " +
+      std::to_string(MaximumDenseCentres) +
       ") or choose a smaller SupportRadius so that the system becomes sparse.");
   }
 
@@ -651,8 +653,7 @@ RBFInterpolation::RBFInterpolation(const BoundaryMotion& boundary, const RBFPara
   {
     if (!std::isfinite(boundary.Positions[i]) || !std::isfinite(boundary.Displacements[i]))
     {
-      throw std::invalid_argument(
-        "RBF: boundary node " + std::to_string(i / 3) +
+      throw std::invalid_argument("RBF: boundary node " + std::to_string(i / 3) +
         " has a non-finite position or displacement");
     }
   }
@@ -746,7 +747,8 @@ RBFInterpolation::RBFInterpolation(const BoundaryMotion& boundary, const RBFPara
   {
     throw std::invalid_argument("RBF: greedy selection with a global support could reach " +
       std::to_string(cap) + " centres, above the dense limit of " +
-      std::to_string(MaximumDenseCentres) + "; lower RBFGreedyMaximumPoints or choose a smaller "
+      std::to_string(MaximumDenseCentres) +
+      "; lower RBFGreedyMaximumPoints or choose a smaller "
       "SupportRadius");
   }
   std::vector<std::size_t> selection =
@@ -780,9 +782,8 @@ RBFInterpolation::RBFInterpolation(const BoundaryMotion& boundary, const RBFPara
     {
       break; // the remaining error is at duplicates with a different displacement
     }
-    const std::size_t batch =
-      std::min({ std::max<std::size_t>(1, selection.size() / 8), cap - selection.size(),
-        candidates.size() });
+    const std::size_t batch = std::min({ std::max<std::size_t>(1, selection.size() / 8),
+      cap - selection.size(), candidates.size() });
     std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(batch),
       candidates.end(),
       [&](std::size_t a, std::size_t b)

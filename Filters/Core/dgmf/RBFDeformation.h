@@ -24,7 +24,7 @@ struct RBFParameters
   /// Greedy centre selection: add centres until the interpolation error at every boundary node
   /// is below GreedyTolerance times the largest boundary displacement.
   bool Greedy = false;
-  double GreedyTolerance = 1e-3;      ///< relative error tolerance of the greedy selection
+  double GreedyTolerance = 1e-3;          ///< relative error tolerance of the greedy selection
   std::size_t GreedyMaximumPoints = 2000; ///< upper bound on the number of centres
 };
 

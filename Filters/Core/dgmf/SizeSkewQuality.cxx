@@ -132,8 +132,8 @@ struct Corner3
 constexpr Corner3 kTetraCorners[] = { { 0, 1, 2, 3 } };
 
 // Bottom 0-3 counter-clockwise seen from the top 4-7, 4 above 0.
-constexpr Corner3 kHexCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 5 }, { 2, 3, 1, 6 },
-  { 3, 0, 2, 7 }, { 4, 7, 5, 0 }, { 5, 4, 6, 1 }, { 6, 5, 7, 2 }, { 7, 6, 4, 3 } };
+constexpr Corner3 kHexCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 5 }, { 2, 3, 1, 6 }, { 3, 0, 2, 7 },
+  { 4, 7, 5, 0 }, { 5, 4, 6, 1 }, { 6, 5, 7, 2 }, { 7, 6, 4, 3 } };
 
 // VTK: the normal (1-0)x(2-0) of the bottom triangle points away from the top triangle 3,4,5, so
 // the in-triangle edges are taken as (previous, next) to make the determinants positive.
@@ -180,8 +180,7 @@ inline ScaledCubeRoot WedgeInverseSkew(const CornerMetric& m)
 /// [-1, -1, 2]] and det W = 1/sqrt(2) give the reciprocal below.
 inline ScaledCubeRoot PyramidInverseShape(const CornerMetric& m)
 {
-  const double frobenius =
-    1.5 * (m.L11 + m.L22) + 2.0 * m.L33 + m.L12 - 2.0 * (m.L13 + m.L23);
+  const double frobenius = 1.5 * (m.L11 + m.L22) + 2.0 * m.L33 + m.L12 - 2.0 * (m.L13 + m.L23);
   return { frobenius / 3.0, 1.0, 2.0 * m.Alpha * m.Alpha };
 }
 
@@ -300,7 +299,8 @@ template <typename T>
 inline T HexCornerDeterminant(const HexEdgesOf<T>& edges, int corner)
 {
   const int* e = kHexCornerEdges[corner];
-  return kHexCornerSign[corner] * Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
+  return kHexCornerSign[corner] *
+    Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
 }
 
 CellQuality HexSizeSkew(const double* original, const double* deformed)
@@ -335,7 +335,8 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
     }
     deformedSum += alpha;
     const int* e = kHexCornerEdges[corner];
-    terms[corner] = { 1.0, edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]], alpha * alpha };
+    terms[corner] = { 1.0, edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]],
+      alpha * alpha };
   }
   const double inverseSum = SumOfScaledCubeRoots(terms);
   const double tau = deformedSum / (orientation * originalSum);
@@ -353,14 +354,16 @@ using PairHexEdges = HexEdgesOf<Pair>;
 inline void ComputeHexEdges(const double* a, const double* b, PairHexEdges& edges)
 {
   ComputeHexEdges(
-    [a, b](int i) -> PairVec3 {
+    [a, b](int i) -> PairVec3
+    {
       return { Pair{ a[3 * i], b[3 * i] }, Pair{ a[3 * i + 1], b[3 * i + 1] },
         Pair{ a[3 * i + 2], b[3 * i + 2] } };
     },
     edges);
 }
 
-/// InverseCubeRootInRange of two values (the bit-level guess lane by lane, the Newton steps together).
+/// InverseCubeRootInRange of two values (the bit-level guess lane by lane, the Newton steps
+/// together).
 inline Pair InverseCubeRootInRange(Pair x)
 {
   return InverseCubeRootNewton(x, Pair{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]) });
@@ -409,7 +412,8 @@ bool HexSizeSkewPair(const double* original0, const double* deformed0, const dou
     argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
     for (int l = 0; l < 2; ++l)
     {
-      usable &= alpha[l] > 0.0 && argument[corner][l] >= kCubeRootLow && argument[corner][l] <= kCubeRootHigh;
+      usable &= alpha[l] > 0.0 && argument[corner][l] >= kCubeRootLow &&
+        argument[corner][l] <= kCubeRootHigh;
     }
   }
   if (!usable)
@@ -469,8 +473,7 @@ CellQuality TriangleSizeShape(const double* original, const double* deformed)
 
 CellQuality QuadSizeSkew(const double* original, const double* deformed)
 {
-  const Vec3 p[4] = { Load(original, 0), Load(original, 1), Load(original, 2),
-    Load(original, 3) };
+  const Vec3 p[4] = { Load(original, 0), Load(original, 1), Load(original, 2), Load(original, 3) };
   // Cross product of the diagonals = Newell normal = twice the vector area.
   const Vec3 normal0 = Cross(p[2] - p[0], p[3] - p[1]);
   const double area2Original = std::sqrt(Dot(normal0, normal0));
@@ -479,8 +482,7 @@ CellQuality QuadSizeSkew(const double* original, const double* deformed)
     return Degenerate();
   }
 
-  const Vec3 q[4] = { Load(deformed, 0), Load(deformed, 1), Load(deformed, 2),
-    Load(deformed, 3) };
+  const Vec3 q[4] = { Load(deformed, 0), Load(deformed, 1), Load(deformed, 2), Load(deformed, 3) };
   const Vec3 normal = Cross(q[2] - q[0], q[3] - q[1]);
   if (!(Dot(normal, normal0) > 0.0))
   {
@@ -539,22 +541,25 @@ CellQuality ComputeSizeSkew(CellShape shape, const double* original, const doubl
       return QuadSizeSkew(original, deformed);
     case CellShape::Tetra:
       return Evaluate3D(kTetraCorners, original, deformed,
-        [](const CornerMetric& m) { return TetraInverseShape(m); }); // a lambda inlines, a function pointer does not
+        [](const CornerMetric& m)
+        { return TetraInverseShape(m); }); // a lambda inlines, a function pointer does not
     case CellShape::Hexahedron:
       return HexSizeSkew(original, deformed);
     case CellShape::Wedge:
       return Evaluate3D(kWedgeCorners, original, deformed,
-        [](const CornerMetric& m) { return WedgeInverseSkew(m); }); // a lambda inlines, a function pointer does not
+        [](const CornerMetric& m)
+        { return WedgeInverseSkew(m); }); // a lambda inlines, a function pointer does not
     case CellShape::Pyramid:
       return Evaluate3D(kPyramidCorners, original, deformed,
-        [](const CornerMetric& m) { return PyramidInverseShape(m); }); // a lambda inlines, a function pointer does not
+        [](const CornerMetric& m)
+        { return PyramidInverseShape(m); }); // a lambda inlines, a function pointer does not
   }
   // Not a listed shape (an out-of-range cast): not computed.
   return CellQuality{ std::numeric_limits<double>::quiet_NaN(), false };
 }
 
-void ComputeHexSizeSkewPair(const double* original0, const double* deformed0, const double* original1,
-  const double* deformed1, CellQuality& quality0, CellQuality& quality1)
+void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
+  const double* original1, const double* deformed1, CellQuality& quality0, CellQuality& quality1)
 {
   if (!HexSizeSkewPair(original0, deformed0, original1, deformed1, quality0, quality1))
   {
@@ -563,8 +568,8 @@ void ComputeHexSizeSkewPair(const double* original0, const double* deformed0, co
   }
 }
 
-QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
-  std::size_t count, const std::uint8_t* skip)
+QualitySummary SummarizeQuality(
+  const double* sizeSkew, const std::uint8_t* inverted, std::size_t count, const std::uint8_t* skip)
 {
   QualitySummary summary;
   if (sizeSkew == nullptr)

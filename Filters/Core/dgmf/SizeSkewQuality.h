@@ -54,8 +54,8 @@ CellQuality ComputeSizeSkew(CellShape shape, const double* original, const doubl
  * two-lane vectors, with the same operations in the same order, so the same results as two calls,
  * bit for bit, at a little more than the cost of one.
  */
-void ComputeHexSizeSkewPair(const double* original0, const double* deformed0, const double* original1,
-  const double* deformed1, CellQuality& quality0, CellQuality& quality1);
+void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
+  const double* original1, const double* deformed1, CellQuality& quality0, CellQuality& quality1);
 
 /// Mean, minimum and inverted count over a set of cells.
 struct QualitySummary

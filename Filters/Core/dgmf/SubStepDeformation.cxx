@@ -48,9 +48,9 @@ void AxisAngleOf(const RigidMotion& motion, double axis[3], double& angleDegrees
 }
 
 /// Where the moving nodes are at path parameter s (0: original, 1: prescribed), 3 per node.
-void PathPositions(const double* points, std::size_t n, const NodeKind* kinds, const double center[3],
-  const double axis[3], double angleDegrees, const double* translation, const double* displacement,
-  double s, double* out)
+void PathPositions(const double* points, std::size_t n, const NodeKind* kinds,
+  const double center[3], const double axis[3], double angleDegrees, const double* translation,
+  const double* displacement, double s, double* out)
 {
   RigidMotion rotation;
   for (int c = 0; c < 3; ++c)
@@ -113,7 +113,7 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
   const double minimumStep = automatic ? 1.0 / parameters.MaximumSubSteps : 0.0;
   double s = 0.0;
   double step = 1.0; // automatic mode: the next step's length in s
-  struct Attempt      // automatic mode: the last step rejected from the current mesh
+  struct Attempt     // automatic mode: the last step rejected from the current mesh
   {
     std::vector<double> Points;
     RepairReport Repair;
@@ -127,9 +127,9 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
   {
     // Fixed mode: s_k = k / SubSteps exactly (a sum of 1/SubSteps would miss 1 by round-off).
     double next = automatic ? std::min(1.0, s + step)
-                                  : (report.SubSteps + 1 == parameters.SubSteps
-                                        ? 1.0
-                                        : static_cast<double>(report.SubSteps + 1) / parameters.SubSteps);
+                            : (report.SubSteps + 1 == parameters.SubSteps
+                                  ? 1.0
+                                  : static_cast<double>(report.SubSteps + 1) / parameters.SubSteps);
     // The step's rigid part: the rotation by (next - s) angle about the current centre, and the
     // translation; the moving nodes' path decides the rest (the step's shape deformation).
     PathPositions(points, n, kinds, motion.Center, axis, angle, motion.Translation, displacement,
@@ -230,7 +230,8 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
     s = next;
     if (report.SubSteps + report.RejectedSteps > 4 * parameters.MaximumSubSteps)
     {
-      throw std::runtime_error("sub-steps: too many steps (the motion could not be split finely enough)");
+      throw std::runtime_error(
+        "sub-steps: too many steps (the motion could not be split finely enough)");
     }
   }
   std::copy(current.begin(), current.end(), deformed);

@@ -26,11 +26,12 @@ struct SubStepParameters
   /// the mesh it leaves still has an inverted cell or a cell below RepairThreshold; the step after
   /// an accepted one tries twice as far. The first step tries the whole motion.
   int SubSteps = 1;
-  int MaximumSubSteps = 64;  ///< most sub-steps in automatic mode
-  double RepairThreshold = 0.0; ///< repair cells below this SizeSkew after each step (0: only inverted)
-  bool Repair = false;        ///< run the quality guard (LocalRepair) after each step
-  int RepairLayers = 2;       ///< RepairParameters::Layers
-  int RepairPasses = 20;      ///< RepairParameters::MaximumPasses
+  int MaximumSubSteps = 64; ///< most sub-steps in automatic mode
+  double RepairThreshold =
+    0.0;                 ///< repair cells below this SizeSkew after each step (0: only inverted)
+  bool Repair = false;   ///< run the quality guard (LocalRepair) after each step
+  int RepairLayers = 2;  ///< RepairParameters::Layers
+  int RepairPasses = 20; ///< RepairParameters::MaximumPasses
   DampingFunction Damping = DampingFunction::U1;
   double StaticR0 = 1.0;
 };
@@ -38,11 +39,11 @@ struct SubStepParameters
 /// What DeformInSubSteps did.
 struct SubStepReport
 {
-  int SubSteps = 0;             ///< steps taken
-  int RejectedSteps = 0;        ///< automatic mode: steps tried, found too bad, and halved
+  int SubSteps = 0;              ///< steps taken
+  int RejectedSteps = 0;         ///< automatic mode: steps tried, found too bad, and halved
   std::size_t RepairedCells = 0; ///< bad cells before the repairs, summed over the accepted steps
   std::size_t BadCellsLeft = 0;  ///< bad cells after the last repair
-  double GraphSeconds = 0.0;    ///< summed over the steps
+  double GraphSeconds = 0.0;     ///< summed over the steps
   double LocationSeconds = 0.0;
 };
 

@@ -60,8 +60,10 @@ inline double SubVolumes(const WalkRecord& record, int dimension, const double p
     d[k] = x[3][k] - p[k];
   }
   // Six times the signed volumes of the sub-tetrahedra opposite each vertex.
-  const double cd[3] = { c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2], c[0] * d[1] - c[1] * d[0] };
-  const double ab[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  const double cd[3] = { c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2],
+    c[0] * d[1] - c[1] * d[0] };
+  const double ab[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+    a[0] * b[1] - a[1] * b[0] };
   w[0] = b[0] * cd[0] + b[1] * cd[1] + b[2] * cd[2];
   w[1] = -(a[0] * cd[0] + a[1] * cd[1] + a[2] * cd[2]);
   w[2] = ab[0] * d[0] + ab[1] * d[1] + ab[2] * d[2];
@@ -90,8 +92,10 @@ inline void SubVolumesPair3(const WalkRecord& r0, const WalkRecord& r1, const do
   const Pair(&b)[3] = rel[1];
   const Pair(&c)[3] = rel[2];
   const Pair(&d)[3] = rel[3];
-  const Pair cd[3] = { c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2], c[0] * d[1] - c[1] * d[0] };
-  const Pair ab[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  const Pair cd[3] = { c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2],
+    c[0] * d[1] - c[1] * d[0] };
+  const Pair ab[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+    a[0] * b[1] - a[1] * b[0] };
   const Pair w[4] = { b[0] * cd[0] + b[1] * cd[1] + b[2] * cd[2],
     -(a[0] * cd[0] + a[1] * cd[1] + a[2] * cd[2]), ab[0] * d[0] + ab[1] * d[1] + ab[2] * d[2],
     -(ab[0] * c[0] + ab[1] * c[1] + ab[2] * c[2]) };
@@ -123,7 +127,8 @@ inline bool IsInside(const double w[4], double total, int dimension)
  * the element up to round-off. When the element has no positive volume the coordinates are left
  * unnormalised and false is returned.
  */
-inline bool BarycentricWeights(const WalkRecord& record, int dimension, const double p[3], double w[4])
+inline bool BarycentricWeights(
+  const WalkRecord& record, int dimension, const double p[3], double w[4])
 {
   const double total = SubVolumes(record, dimension, p, w);
   if (!(total > 0.0))
@@ -138,7 +143,8 @@ inline bool BarycentricWeights(const WalkRecord& record, int dimension, const do
   return IsInside(w, 1.0, dimension);
 }
 
-/// The corner (0..dimension) with the most negative coordinate: the walk crosses the face opposite it.
+/// The corner (0..dimension) with the most negative coordinate: the walk crosses the face opposite
+/// it.
 inline int MostNegativeWeight(const double w[4], int dimension)
 {
   int most = 0;
