@@ -3,7 +3,7 @@
 #include "SyntheticNodes.h"
 
 #include "dgmf/DGMFDeformation.h"
-#include "dgmf/DampedRotation.h"
+#include "dgmf/DampedRigidMotion.h"
 #include "dgmf/DampingField.h"
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/RigidMotionFit.h"

@@ -1,6 +1,6 @@
 #include "dgmf/DGMFDeformation.h"
 
-#include "dgmf/DampedRotation.h"
+#include "dgmf/DampedRigidMotion.h"
 
 #include <algorithm>
 

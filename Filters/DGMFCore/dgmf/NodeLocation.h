@@ -1,9 +1,9 @@
 /**
- * @file BlockLocation.h
+ * @file NodeLocation.h
  * @brief Locates a block of mesh nodes in the Delaunay graph with several interleaved walks.
  */
-#ifndef dgmf_BlockLocation_h
-#define dgmf_BlockLocation_h
+#ifndef dgmf_NodeLocation_h
+#define dgmf_NodeLocation_h
 
 #include "dgmf/DelaunayGraph.h"
 #include "dgmf/NodeKind.h"
@@ -15,7 +15,7 @@ namespace dgmf
 {
 
 /// What the location of a block counted.
-struct BlockLocationCounts
+struct NodeLocationCounts
 {
   std::size_t Outside = 0;    ///< nodes outside the graph's convex hull
   std::size_t Restarts = 0;   ///< walks started from the graph's seed grid
@@ -47,7 +47,7 @@ struct BlockLocationCounts
  *   DelaunayMapping::NotLocated for the block's interior nodes; out: their elements
  * @param weights output: dim+1 barycentric coordinates per node (node i at i * (dim + 1))
  */
-BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points,
+NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
   double* weights, std::size_t stride = 0, std::size_t locatedBefore = 0);
 

@@ -27,7 +27,7 @@ namespace dgmf
  * It depends only on the original node positions and on which nodes are boundary nodes of which
  * kind, so one mapping serves every later motion of the same mesh (time steps, design loops).
  *
- * Nodes are located in fixed blocks of BlockSize nodes (LocateBlock): each block is cut into
+ * Nodes are located in fixed blocks of BlockSize nodes (LocateNodes): each block is cut into
  * runs of consecutive nodes; a node walks from the element of its stride neighbour (node
  * i - hintStride, for structured and layered meshes), else from the element of the run's
  * previous node (mesh generators number nodes with spatial coherence), else from the graph's
@@ -85,7 +85,7 @@ public:
    * @param points 3 coordinates per node
    * @param kinds the kind of every node
    * @param hintStride 0, or the index difference of mesh neighbours across layers (see
-   *   FindHintStride): node i's walk then starts from node i - hintStride's element (LocateBlock)
+   *   FindHintStride): node i's walk then starts from node i - hintStride's element (LocateNodes)
    * @param alongside work that does not need the mapping (such as the first touch of the
    *   caller's output arrays), run on a second thread while the graph is built on one; with a
    *   single thread, after it. Exceptions it throws are passed on.
@@ -132,13 +132,8 @@ public:
 
   /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
-  /// Number of walks started from the graph's seed grid: the first node of each run, and the
-  /// nodes not found by a short walk from the previous node's element.
-  std::size_t GetNumberOfWalks() const { return this->Walks; }
   /// Number of interior nodes found from their stride neighbour's element (see hintStride).
   std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
-  /// Number of moving graph vertices.
-  std::size_t GetNumberOfMovingVertices() const { return this->MovingVertices; }
   /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
   std::size_t GetNumberOfConflictingNodes() const { return this->ConflictingNodes; }
 
@@ -159,9 +154,7 @@ private:
   std::vector<NodeKind> VertexKind;
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
-  std::size_t Walks = 0;
   std::size_t StrideHits = 0;
-  std::size_t MovingVertices = 0;
   std::size_t ConflictingNodes = 0;
   double GraphSeconds = 0.0;
   double LocationSeconds = 0.0;

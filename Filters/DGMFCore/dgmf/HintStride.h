@@ -13,7 +13,7 @@ namespace dgmf
 {
 
 /**
- * The hint stride of a mesh (DelaunayMapping, LocateBlock) from a sample of its cells, each given
+ * The hint stride of a mesh (DelaunayMapping, LocateNodes) from a sample of its cells, each given
  * by its point ids: the most common difference between the ids of two corners of a cell (the
  * largest one when several are equally common), or 0 when there is no such regularity.
  *

@@ -1,5 +1,7 @@
 #include "dgmf/DGRBFDeformation.h"
 
+#include "dgmf/Wendland.h"
+
 #include "dgmf/DGMDeformation.h"
 
 #include <Eigen/Dense>
@@ -12,16 +14,6 @@ namespace dgmf
 {
 namespace
 {
-inline double Wendland(double r)
-{
-  if (r >= 1.0)
-  {
-    return 0.0;
-  }
-  const double s = 1.0 - r;
-  const double s2 = s * s;
-  return s2 * s2 * (4.0 * r + 1.0);
-}
 
 inline double Distance(const double* a, const double* b)
 {
@@ -52,7 +44,7 @@ void FitElement(const DelaunayGraph& graph, std::int32_t e,
     for (int k = 0; k < N; ++k)
     {
       phi(j, k) =
-        Wendland(Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])) / R);
+        WendlandC2(Distance(graph.GetVertexPosition(v[j]), graph.GetVertexPosition(v[k])) / R);
     }
     const double* d = vertexDisplacement.data() + 3 * static_cast<std::size_t>(v[j]);
     rhs(j, 0) = d[0];
@@ -117,7 +109,7 @@ void DeformDGRBF(const DelaunayMapping& mapping, const BoundaryMotion& boundary,
         double denominator = 0.0;
         for (int k = 0; k < n; ++k)
         {
-          const double phi = Wendland(Distance(p, graph.GetVertexPosition(v[k])) / R);
+          const double phi = WendlandC2(Distance(p, graph.GetVertexPosition(v[k])) / R);
           const double* ck = c + 1 + 4 * k;
           d[0] += ck[0] * phi;
           d[1] += ck[1] * phi;

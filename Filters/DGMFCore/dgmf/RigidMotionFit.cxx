@@ -1,6 +1,6 @@
 #include "dgmf/RigidMotionFit.h"
 
-#include "dgmf/DampedRotation.h"
+#include "dgmf/DampedRigidMotion.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>

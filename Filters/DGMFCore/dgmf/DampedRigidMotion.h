@@ -1,11 +1,12 @@
 /**
- * @file DampedRotation.h
+ * @file DampedRigidMotion.h
  * @brief A rigid motion scaled by damping factors f in [0, 1], fast enough for one call per node.
  */
-#ifndef dgmf_DampedRotation_h
-#define dgmf_DampedRotation_h
+#ifndef dgmf_DampedRigidMotion_h
+#define dgmf_DampedRigidMotion_h
 
 #include "dgmf/RigidMotion.h"
+#include "dgmf/Simd.h"
 
 #include <vector>
 
@@ -85,8 +86,8 @@ public:
   static constexpr double ShortSeriesLimit = 1e-3;
 
 private:
-  /// Two doubles processed together (GCC and Clang vector extension: SSE2 on x86-64).
-  typedef double Pair __attribute__((vector_size(16)));
+  /// Two doubles processed together (Simd.h).
+  using Pair = simd::Double2;
 
   /// f * Steps split into a table entry k and a remainder, as Axis::SinCos(double) does.
   static Pair TableSplit(Pair f, int k[2])

@@ -1,4 +1,6 @@
-#include "dgmf/BlockLocation.h"
+#include "dgmf/NodeLocation.h"
+
+#include "dgmf/Simd.h"
 
 #include <algorithm>
 
@@ -45,13 +47,13 @@ struct Lane
 };
 } // namespace
 
-BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points,
+NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
   double* weights, std::size_t stride, std::size_t locatedBefore)
 {
   const int dimension = graph.GetDimension();
   const int n = dimension + 1;
-  BlockLocationCounts counts;
+  NodeLocationCounts counts;
   int strideScore = 0;
 
   auto nextInterior = [kinds](std::size_t i, std::size_t runEnd)
@@ -112,11 +114,11 @@ BlockLocationCounts LocateBlock(const DelaunayGraph& graph, const double* points
     {
       // The run's next nodes are read and written a few walks from now: start loading them.
       const std::size_t ahead = std::min(lane.Node + PrefetchNodes, lane.End - 1);
-      __builtin_prefetch(points + 3 * ahead);
-      __builtin_prefetch(weights + ahead * static_cast<std::size_t>(n), 1);
+      simd::Prefetch(points + 3 * ahead);
+      simd::PrefetchForWrite(weights + ahead * static_cast<std::size_t>(n));
       if (stride > 0 && ahead >= stride)
       {
-        __builtin_prefetch(nodeElement + (ahead - stride));
+        simd::Prefetch(nodeElement + (ahead - stride));
       }
       startNode(lane);
     }

@@ -6,6 +6,8 @@
 #ifndef dgmf_WalkRecord_h
 #define dgmf_WalkRecord_h
 
+#include "dgmf/Simd.h"
+
 #include <cstdint>
 
 namespace dgmf
@@ -79,7 +81,7 @@ inline double SubVolumes(const WalkRecord& record, int dimension, const double p
 inline void SubVolumesPair3(const WalkRecord& r0, const WalkRecord& r1, const double p0[3],
   const double p1[3], double w0[4], double w1[4], double& total0, double& total1)
 {
-  typedef double Pair __attribute__((vector_size(16)));
+  using Pair = simd::Double2;
   Pair rel[4][3];
   for (int k = 0; k < 4; ++k)
   {

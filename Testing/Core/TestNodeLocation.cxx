@@ -1,7 +1,7 @@
-// Location of a block of nodes with interleaved walks (BlockLocation) and the graph's seed grid.
+// Location of a block of nodes with interleaved walks (NodeLocation) and the graph's seed grid.
 #include "SyntheticNodes.h"
 
-#include "dgmf/BlockLocation.h"
+#include "dgmf/NodeLocation.h"
 #include "dgmf/DelaunayGraph.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ struct Located
 {
   std::vector<std::int32_t> Element;
   std::vector<double> Weights;
-  dgmf::BlockLocationCounts Counts;
+  dgmf::NodeLocationCounts Counts;
 };
 
 /// The graph of a node set's boundary nodes.
@@ -42,7 +42,7 @@ Located LocateAll(const dgmf::DelaunayGraph& graph, const std::vector<double>& p
   result.Weights.assign(4 * nodes, -1.0);
   for (std::size_t begin = 0; begin < nodes; begin += blockSize)
   {
-    const dgmf::BlockLocationCounts counts = dgmf::LocateBlock(graph, points.data(), kinds.data(),
+    const dgmf::NodeLocationCounts counts = dgmf::LocateNodes(graph, points.data(), kinds.data(),
       begin, std::min(nodes, begin + blockSize), result.Element.data(), result.Weights.data());
     result.Counts.Outside += counts.Outside;
     result.Counts.Restarts += counts.Restarts;
@@ -96,7 +96,7 @@ void ExpectCorrect(const dgmf::DelaunayGraph& graph, const std::vector<double>& 
 }
 } // namespace
 
-TEST(BlockLocation, FindsTheElementOfEveryNodeIn3D)
+TEST(NodeLocation, FindsTheElementOfEveryNodeIn3D)
 {
   const dgmf_test::NodeSet set = dgmf_test::SphereInBox(3000);
   std::vector<double> boundary;
@@ -106,7 +106,7 @@ TEST(BlockLocation, FindsTheElementOfEveryNodeIn3D)
   EXPECT_EQ(located.Counts.Outside, 0u);
 }
 
-TEST(BlockLocation, FindsTheElementOfEveryNodeIn2D)
+TEST(NodeLocation, FindsTheElementOfEveryNodeIn2D)
 {
   const dgmf_test::NodeSet set = dgmf_test::CircleInSquare();
   std::vector<double> boundary;
@@ -115,7 +115,7 @@ TEST(BlockLocation, FindsTheElementOfEveryNodeIn2D)
   ExpectCorrect(graph, set.Points, set.Kinds, located, 2);
 }
 
-TEST(BlockLocation, ShuffledNumberingRestartsFromTheSeedGridAndStaysCorrect)
+TEST(NodeLocation, ShuffledNumberingRestartsFromTheSeedGridAndStaysCorrect)
 {
   // Random numbering: every node is a jump from the previous one, so short walks fail and the
   // lanes restart from the seed grid; small blocks give many lanes of one or two nodes.
@@ -141,7 +141,7 @@ TEST(BlockLocation, ShuffledNumberingRestartsFromTheSeedGridAndStaysCorrect)
   }
 }
 
-TEST(BlockLocation, NodesOutsideTheHullGetClampedWeightsAndAreCounted)
+TEST(NodeLocation, NodesOutsideTheHullGetClampedWeightsAndAreCounted)
 {
   const double square[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
   const dgmf::DelaunayGraph graph(2, square, 4);
@@ -162,7 +162,7 @@ TEST(BlockLocation, NodesOutsideTheHullGetClampedWeightsAndAreCounted)
   }
 }
 
-TEST(BlockLocation, SeedElementIsAValidElementEverywhere)
+TEST(NodeLocation, SeedElementIsAValidElementEverywhere)
 {
   const dgmf_test::NodeSet set = dgmf_test::SphereInBox(100);
   std::vector<double> boundary;

@@ -1,4 +1,4 @@
-#include "dgmf/DampedRotation.h"
+#include "dgmf/DampedRigidMotion.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,7 @@
 #include "dgmf/DampingFunction.h"
 
+#include "dgmf/Wendland.h"
+
 namespace dgmf
 {
 
@@ -26,7 +28,7 @@ double EvaluateDamping(DampingFunction u, double r)
     case DampingFunction::U1:
       return s2 * (r + 1.0);
     case DampingFunction::U2:
-      return s2 * s2 * (4.0 * r + 1.0);
+      return WendlandC2(r);
     case DampingFunction::U3:
       return s2 * s2 * s2 * ((35.0 * r + 18.0) * r + 3.0) / 3.0;
     case DampingFunction::U4:

@@ -3,6 +3,9 @@
 // 2D cells in 3D space and degenerate cells, are in Documentation/quality.md.
 #include "dgmf/SizeSkewQuality.h"
 
+#include "dgmf/CellGeometry.h"
+#include "dgmf/Simd.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -16,37 +19,6 @@ namespace
 /// Below this size relative to (longest edge)^dimension, an original cell counts as degenerate.
 constexpr double kDegenerateTolerance = 1e-12;
 constexpr double kSqrt3 = 1.7320508075688772935;
-
-/// A 3-vector of doubles, or of two-lane vectors (two cells at once, HexSizeSkewPair).
-template <typename T>
-struct Vec3Of
-{
-  T X, Y, Z;
-};
-using Vec3 = Vec3Of<double>;
-
-inline Vec3 Load(const double* points, int i)
-{
-  return { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
-}
-
-template <typename T>
-inline Vec3Of<T> operator-(const Vec3Of<T>& a, const Vec3Of<T>& b)
-{
-  return { a.X - b.X, a.Y - b.Y, a.Z - b.Z };
-}
-
-template <typename T>
-inline T Dot(const Vec3Of<T>& a, const Vec3Of<T>& b)
-{
-  return a.X * b.X + a.Y * b.Y + a.Z * b.Z;
-}
-
-template <typename T>
-inline Vec3Of<T> Cross(const Vec3Of<T>& a, const Vec3Of<T>& b)
-{
-  return { a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X };
-}
 
 constexpr double kCubeRootLow = 1e-300;
 constexpr double kCubeRootHigh = 1e300;
@@ -122,29 +94,6 @@ inline double SumOfScaledCubeRoots(const ScaledCubeRoot (&terms)[N])
   return sum;
 }
 
-/// Edge vectors leaving one corner of a 3D cell: Origin -> A, Origin -> B, Origin -> C, ordered
-/// so that det[A-O, B-O, C-O] > 0 at every corner of a valid cell in VTK's orientation.
-struct Corner3
-{
-  int Origin, A, B, C;
-};
-
-constexpr Corner3 kTetraCorners[] = { { 0, 1, 2, 3 } };
-
-// Bottom 0-3 counter-clockwise seen from the top 4-7, 4 above 0.
-constexpr Corner3 kHexCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 5 }, { 2, 3, 1, 6 }, { 3, 0, 2, 7 },
-  { 4, 7, 5, 0 }, { 5, 4, 6, 1 }, { 6, 5, 7, 2 }, { 7, 6, 4, 3 } };
-
-// VTK: the normal (1-0)x(2-0) of the bottom triangle points away from the top triangle 3,4,5, so
-// the in-triangle edges are taken as (previous, next) to make the determinants positive.
-constexpr Corner3 kWedgeCorners[] = { { 0, 2, 1, 3 }, { 1, 0, 2, 4 }, { 2, 1, 0, 5 },
-  { 3, 4, 5, 0 }, { 4, 5, 3, 1 }, { 5, 3, 4, 2 } };
-
-// Base 0-3 counter-clockwise seen from the apex 4. Only the base corners are used: each one sees
-// the apex, and the apex has four edges (no single 3x3 edge matrix).
-constexpr Corner3 kPyramidCorners[] = { { 0, 1, 3, 4 }, { 1, 2, 0, 4 }, { 2, 3, 1, 4 },
-  { 3, 0, 2, 4 } };
-
 /// Entries of lambda = A^T A for the edge matrix A = [a b c], and alpha = det A.
 struct CornerMetric
 {
@@ -213,12 +162,12 @@ inline CellQuality Inverted()
 /// Shared by all 3D shapes: orientation and size from the sum of the corner determinants of the
 /// original cell, inversion and the skew/shape factor from the deformed cell's corners.
 template <std::size_t N, typename InverseCornerQuality>
-CellQuality Evaluate3D(const Corner3 (&corners)[N], const double* original, const double* deformed,
-  InverseCornerQuality inverseQuality)
+CellQuality Evaluate3D(const CornerEdges (&corners)[N], const double* original,
+  const double* deformed, InverseCornerQuality inverseQuality)
 {
   double originalSum = 0.0;
   double longestEdge2 = 0.0;
-  for (const Corner3& corner : corners)
+  for (const CornerEdges& corner : corners)
   {
     const Vec3 o = Load(original, corner.Origin);
     const Vec3 a = Load(original, corner.A) - o;
@@ -239,7 +188,7 @@ CellQuality Evaluate3D(const Corner3 (&corners)[N], const double* original, cons
   ScaledCubeRoot terms[N];
   for (std::size_t k = 0; k < N; ++k)
   {
-    const Corner3& corner = corners[k];
+    const CornerEdges& corner = corners[k];
     const Vec3 o = Load(deformed, corner.Origin);
     const Vec3 a = Load(deformed, corner.A) - o;
     const Vec3 b = Load(deformed, corner.B) - o;
@@ -263,8 +212,6 @@ CellQuality Evaluate3D(const Corner3 (&corners)[N], const double* original, cons
  * them, up to sign): the most common cell of large structured meshes, and about twice as fast as
  * the generic Evaluate3D this way.
  */
-constexpr int kHexEdges[12][2] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 },
-  { 6, 7 }, { 7, 4 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
 /// For each corner of kHexCorners: its edges to A, B and C, and the product of their signs.
 constexpr int kHexCornerEdges[8][3] = { { 0, 3, 8 }, { 1, 0, 9 }, { 2, 1, 10 }, { 3, 2, 11 },
   { 7, 4, 8 }, { 4, 5, 9 }, { 5, 6, 10 }, { 6, 7, 11 } };
@@ -343,8 +290,8 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
   return Valid(SizeFactor(tau) * 8.0 / inverseSum);
 }
 
-/// Two doubles processed together (GCC and Clang vector extension: SSE2 on x86-64).
-typedef double Pair __attribute__((vector_size(16)));
+/// Two doubles processed together (Simd.h).
+using Pair = simd::Double2;
 
 /// Vec3 of two hexahedra at once.
 using PairVec3 = Vec3Of<Pair>;

@@ -5,6 +5,7 @@
 #ifndef dgmf_DelaunayGraph_h
 #define dgmf_DelaunayGraph_h
 
+#include "dgmf/Simd.h"
 #include "dgmf/WalkRecord.h"
 
 #include <cstddef>
@@ -18,7 +19,7 @@ namespace dgmf
 /**
  * @class DelaunayGraph
  * @brief Delaunay graph of a set of points, built with CGAL (exact predicates, inexact
- * constructions), with the element records the point location walks on (LocateBlock) and CGAL's
+ * constructions), with the element records the point location walks on (LocateNodes) and CGAL's
  * exact location as its fallback.
  *
  * Vertices are the distinct input points; coincident input points share one vertex (see
@@ -108,9 +109,9 @@ public:
   /// Asks the processor to start loading element `e`'s record (no effect on results).
   void PrefetchElement(std::int32_t e) const
   {
-    __builtin_prefetch(&this->Records[static_cast<std::size_t>(e)]);
-    __builtin_prefetch(
-      reinterpret_cast<const char*>(&this->Records[static_cast<std::size_t>(e)]) + 64);
+    const WalkRecord* record = &this->Records[static_cast<std::size_t>(e)];
+    simd::Prefetch(record);
+    simd::Prefetch(reinterpret_cast<const char*>(record) + 64);
   }
 
   /**
@@ -124,7 +125,7 @@ public:
    * Locates `p` with CGAL's exact walk, starting from element `hint` (or CGAL's default start
    * when `hint` < 0). A point outside the convex hull gets the hull element across the hull face
    * it lies beyond, with its barycentric coordinates clamped to >= 0 and normalised, and
-   * Outside = true. The fast location of many points is LocateBlock's walks; this is their exact
+   * Outside = true. The fast location of many points is LocateNodes's walks; this is their exact
    * fallback.
    */
   Location LocateExactly(const double p[3], std::int32_t hint) const;

@@ -1,6 +1,6 @@
 #include "dgmf/DelaunayMapping.h"
 
-#include "dgmf/BlockLocation.h"
+#include "dgmf/NodeLocation.h"
 
 #include <algorithm>
 #include <chrono>
@@ -95,8 +95,6 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
       this->VertexNode[v] = node;
     }
   }
-  this->MovingVertices = static_cast<std::size_t>(
-    std::count(this->VertexKind.begin(), this->VertexKind.end(), NodeKind::MovingBoundary));
   for (std::size_t b = 0; b < this->BoundaryNodes.size(); ++b)
   {
     const auto v = static_cast<std::size_t>(vertexOfPoint[b]);
@@ -130,19 +128,18 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   {
     const std::size_t waveEnd = std::min(numberOfNodes, waveBegin + waveLength);
     const std::size_t pieces = (waveEnd - waveBegin + pieceLength - 1) / pieceLength;
-    std::vector<BlockLocationCounts> counts(pieces);
+    std::vector<NodeLocationCounts> counts(pieces);
     ForEachBlock(parallelFor, pieces,
       [&](std::size_t piece)
       {
         const std::size_t begin = waveBegin + piece * pieceLength;
         counts[piece] =
-          LocateBlock(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
+          LocateNodes(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
             this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
       });
-    for (const BlockLocationCounts& count : counts)
+    for (const NodeLocationCounts& count : counts)
     {
       this->OutsideNodes += count.Outside;
-      this->Walks += count.Restarts;
       this->StrideHits += count.StrideHits;
     }
   }

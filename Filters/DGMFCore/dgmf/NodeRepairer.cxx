@@ -1,0 +1,375 @@
+// The quality guard's node steps, without the moves themselves (RepairMoves.cxx).
+#include "dgmf/NodeRepairer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dgmf
+{
+namespace repair
+{
+
+/// Newell normal (twice the vector area) of a triangle or quad given by its corners.
+Vec3 PolygonNormal(CellShape shape, const double* corners)
+{
+  const Vec3 p0 = Load(corners, 0);
+  if (shape == CellShape::Triangle)
+  {
+    return Cross(Load(corners, 1) - p0, Load(corners, 2) - p0);
+  }
+  return Cross(Load(corners, 2) - p0, Load(corners, 3) - Load(corners, 1));
+}
+
+NodeRepairer::NodeRepairer(const CellMesh& mesh, const double* originalPoints, double* points,
+  const std::vector<std::int64_t>& freeIndex)
+  : Mesh(mesh)
+  , OriginalPoints(originalPoints)
+  , Points(points)
+  , FreeIndex(freeIndex)
+{
+}
+
+void NodeRepairer::InitializeCell(
+  ActiveCell& cell, std::size_t c, double quality, bool inverted) const
+{
+  cell.Cell = c;
+  cell.Shape = this->Mesh.Shapes[c];
+  cell.Tables = GetShapeTables(cell.Shape);
+  cell.NumberOfNodes = GetNumberOfCorners(cell.Shape);
+  cell.Nodes = this->Mesh.Connectivity.data() + this->Mesh.Offsets[c];
+  GatherCorners(this->Mesh, c, this->OriginalPoints, cell.Original);
+  const CellQuality self = ComputeSizeSkew(cell.Shape, cell.Original, cell.Original);
+  cell.Degenerate = self.SizeSkew == 0.0 && !self.Inverted;
+  cell.Quality = quality;
+  cell.Inverted = inverted;
+  if (cell.Tables.Dimension == 2)
+  {
+    const Vec3 n0 = PolygonNormal(cell.Shape, cell.Original);
+    const double length = Norm(n0);
+    if (length > 0.0 && std::isfinite(length))
+    {
+      cell.Normal0 = (1.0 / length) * n0;
+      // Mean corner Jacobian: 2 x area (triangle), area (quad); |n0| = 2 x area.
+      cell.Beta = kUntangleFraction * (cell.Shape == CellShape::Triangle ? length : 0.5 * length);
+    }
+    else
+    {
+      cell.Degenerate = true;
+    }
+  }
+  else
+  {
+    double sum = 0.0;
+    for (int k = 0; k < cell.Tables.NumberOfCorners; ++k)
+    {
+      sum += this->Alpha3(cell.Tables.Corners[k], cell.Original);
+    }
+    cell.Orientation = sum < 0.0 ? -1.0 : 1.0;
+    cell.Beta = kUntangleFraction * std::abs(sum) / cell.Tables.NumberOfCorners;
+    if (!std::isfinite(cell.Beta))
+    {
+      cell.Degenerate = true;
+    }
+  }
+}
+
+std::size_t NodeRepairer::Run(int maximumPasses, double threshold)
+{
+  this->Threshold = threshold;
+  std::size_t passes = 0;
+  this->Dirty.assign(this->Nodes.size(), 1);
+  for (int pass = 0; pass < maximumPasses; ++pass)
+  {
+    if (this->CountRepairableBadCells(threshold) == 0)
+    {
+      break;
+    }
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < this->Nodes.size(); ++i)
+    {
+      if (this->Nodes[i].Enabled && this->Dirty[i] != 0)
+      {
+        this->Dirty[i] = 0;
+        if (this->StepNode(this->Nodes[i]))
+        {
+          ++moved;
+        }
+      }
+    }
+    ++passes;
+    if (moved == 0)
+    {
+      break;
+    }
+  }
+  return passes;
+}
+
+double NodeRepairer::Alpha3(const CornerEdges& corner, const double* corners)
+{
+  const Vec3 o = Load(corners, corner.Origin);
+  return Dot(
+    Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o), Load(corners, corner.C) - o);
+}
+
+void NodeRepairer::GatherWith(
+  const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const
+{
+  for (int k = 0; k < cell.NumberOfNodes; ++k)
+  {
+    const Vec3 p = cell.Nodes[k] == node ? position : Load(this->Points, cell.Nodes[k]);
+    Store(p, out, k);
+  }
+}
+
+std::size_t NodeRepairer::CountRepairableBadCells(double threshold) const
+{
+  std::size_t count = 0;
+  for (const ActiveCell& cell : this->Cells)
+  {
+    if (cell.FreeNodeCount > 0 && !cell.Degenerate &&
+      IsBadCell(CellQuality{ cell.Quality, cell.Inverted }, threshold))
+    {
+      ++count;
+    }
+  }
+  return count;
+}
+
+double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position, bool& inverted,
+  double* qualities, double cutoff, std::size_t first) const
+{
+  double corners[3 * kMaximumCorners];
+  double minimum = kInfinity;
+  inverted = false;
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const std::size_t offset = (first + j) % count;
+    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
+    if (cell.Degenerate)
+    {
+      continue;
+    }
+    this->GatherWith(cell, node.Id, position, corners);
+    const CellQuality quality = ComputeSizeSkew(cell.Shape, cell.Original, corners);
+    inverted = inverted || quality.Inverted;
+    minimum = std::min(minimum, quality.SizeSkew);
+    if (qualities != nullptr)
+    {
+      qualities[offset] = quality.SizeSkew;
+    }
+    else if (minimum <= cutoff)
+    {
+      break;
+    }
+  }
+  return minimum;
+}
+
+double NodeRepairer::CornerMargins(const FreeNode& node, const Vec3& position,
+  std::vector<double>* margins, std::vector<double>* targets, double cutoff) const
+{
+  double corners[3 * kMaximumCorners];
+  double objective = 0.0;
+  if (margins != nullptr)
+  {
+    margins->clear();
+  }
+  if (targets != nullptr)
+  {
+    targets->clear();
+  }
+  for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+  {
+    const ActiveCell& cell = this->Cells[this->Incident[i]];
+    if (cell.Degenerate)
+    {
+      continue;
+    }
+    this->GatherWith(cell, node.Id, position, corners);
+    for (int k = 0; k < cell.Tables.NumberOfCorners; ++k)
+    {
+      const CornerEdges& corner = cell.Tables.Corners[k];
+      double alpha;
+      if (cell.Tables.Dimension == 2)
+      {
+        const Vec3 o = Load(corners, corner.Origin);
+        alpha = Dot(Cross(Load(corners, corner.A) - o, Load(corners, corner.B) - o), cell.Normal0);
+      }
+      else
+      {
+        alpha = cell.Orientation * Alpha3(corner, corners);
+      }
+      const double margin = alpha - cell.Beta;
+      if (!std::isfinite(margin))
+      {
+        objective = kInfinity;
+      }
+      else if (margin < 0.0)
+      {
+        objective -= margin;
+      }
+      if (margins != nullptr)
+      {
+        margins->push_back(margin);
+      }
+      if (targets != nullptr)
+      {
+        targets->push_back(cell.Beta);
+      }
+    }
+    if (margins == nullptr && objective >= cutoff)
+    {
+      break;
+    }
+  }
+  return objective;
+}
+
+void NodeRepairer::Neighbourhood(
+  const FreeNode& node, const Vec3& x, Vec3& laplacian, double& length) const
+{
+  Vec3 reference{ 0.0, 0.0, 0.0 };
+  Vec3 sum{ 0.0, 0.0, 0.0 };
+  double deformedLength = 0.0;
+  double originalLength = 0.0;
+  int count = 0;
+  const Vec3 x0 = Load(this->OriginalPoints, node.Id);
+  for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+  {
+    const ActiveCell& cell = this->Cells[this->Incident[i]];
+    for (int e = 0; e < cell.Tables.NumberOfEdges; ++e)
+    {
+      const std::int64_t a = cell.Nodes[cell.Tables.Edges[e][0]];
+      const std::int64_t b = cell.Nodes[cell.Tables.Edges[e][1]];
+      if ((a == node.Id) == (b == node.Id))
+      {
+        continue; // not an edge of the node (or a collapsed edge in the connectivity)
+      }
+      const std::int64_t other = a == node.Id ? b : a;
+      const Vec3 p = Load(this->Points, other);
+      if (count == 0)
+      {
+        reference = p;
+      }
+      sum = sum + (p - reference);
+      deformedLength += Norm(p - x);
+      originalLength += Norm(Load(this->OriginalPoints, other) - x0);
+      ++count;
+    }
+  }
+  if (count == 0)
+  {
+    laplacian = x;
+    length = 0.0;
+    return;
+  }
+  laplacian = reference + (1.0 / count) * sum;
+  length = deformedLength / count;
+  if (!(length > 0.0 && std::isfinite(length)))
+  {
+    length = originalLength / count;
+  }
+}
+
+Vec3 NodeRepairer::InPlane(const FreeNode& node, const Vec3& v)
+{
+  if (node.Dimension == 3)
+  {
+    return v;
+  }
+  return Dot(v, node.Basis[0]) * node.Basis[0] + Dot(v, node.Basis[1]) * node.Basis[1];
+}
+
+void NodeRepairer::AddDirection(const Vec3& v)
+{
+  const double length = Norm(v);
+  if (length > 0.0 && std::isfinite(length))
+  {
+    this->Directions.push_back((1.0 / length) * v);
+  }
+}
+
+void NodeRepairer::AddLatticeDirections(const FreeNode& node)
+{
+  for (int a = -1; a <= 1; ++a)
+  {
+    for (int b = -1; b <= 1; ++b)
+    {
+      for (int c = -1; c <= 1; ++c)
+      {
+        if ((a == 0 && b == 0 && c == 0) || (node.Dimension == 2 && c != 0))
+        {
+          continue;
+        }
+        this->AddDirection(static_cast<double>(a) * node.Basis[0] +
+          static_cast<double>(b) * node.Basis[1] + static_cast<double>(c) * node.Basis[2]);
+      }
+    }
+  }
+}
+
+void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
+{
+  Store(position, this->Points, node.Id);
+  double corners[3 * kMaximumCorners];
+  for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+  {
+    ActiveCell& cell = this->Cells[this->Incident[i]];
+    this->GatherWith(cell, node.Id, position, corners);
+    const CellQuality quality = ComputeSizeSkew(cell.Shape, cell.Original, corners);
+    cell.Quality = quality.SizeSkew;
+    cell.Inverted = quality.Inverted;
+    for (int k = 0; k < cell.NumberOfNodes; ++k)
+    {
+      const std::int64_t index = this->FreeIndex[static_cast<std::size_t>(cell.Nodes[k])];
+      if (index >= 0)
+      {
+        this->Dirty[static_cast<std::size_t>(index)] = 1;
+      }
+    }
+  }
+}
+
+bool NodeRepairer::StepNode(FreeNode& node)
+{
+  bool inverted = false;
+  double minimum = kInfinity;
+  for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+  {
+    const ActiveCell& cell = this->Cells[this->Incident[i]];
+    if (!cell.Degenerate)
+    {
+      inverted = inverted || cell.Inverted;
+      minimum = std::min(minimum, cell.Quality);
+    }
+  }
+  if (!inverted)
+  {
+    if (minimum >= std::min(1.0, kComfortFactor * this->Threshold))
+    {
+      return false; // every cell of the node is comfortably good: it need not make room
+    }
+    return this->SmoothNode(node, minimum);
+  }
+  bool moved = false;
+  for (int step = 0; step < kUntangleStepsPerPass && inverted; ++step)
+  {
+    if (!this->UntangleNode(node))
+    {
+      break;
+    }
+    moved = true;
+    inverted = false;
+    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    {
+      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      inverted = inverted || (cell.Inverted && !cell.Degenerate);
+    }
+  }
+  return moved;
+}
+
+} // namespace repair
+} // namespace dgmf
