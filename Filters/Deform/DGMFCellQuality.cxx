@@ -1,5 +1,7 @@
 #include "DGMFCellQuality.h"
 
+#include "DGMFMeshConversion.h"
+
 #include "vtkPoints.h"
 
 #include "vtkCellArray.h"
@@ -17,65 +19,6 @@
 
 namespace dgmf_vtk
 {
-namespace
-{
-/// The metric's shape for a VTK cell type and the corner order (VTK ids in the shape's order).
-bool GetShape(int vtkType, dgmf::CellShape& shape, const int*& order)
-{
-  static const int identity[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
-  static const int pixel[4] = { 0, 1, 3, 2 };
-  static const int voxel[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-  order = identity;
-  switch (vtkType)
-  {
-    case VTK_TRIANGLE:
-      shape = dgmf::CellShape::Triangle;
-      return true;
-    case VTK_QUAD:
-      shape = dgmf::CellShape::Quad;
-      return true;
-    case VTK_PIXEL:
-      shape = dgmf::CellShape::Quad;
-      order = pixel;
-      return true;
-    case VTK_TETRA:
-      shape = dgmf::CellShape::Tetra;
-      return true;
-    case VTK_HEXAHEDRON:
-      shape = dgmf::CellShape::Hexahedron;
-      return true;
-    case VTK_VOXEL:
-      shape = dgmf::CellShape::Hexahedron;
-      order = voxel;
-      return true;
-    case VTK_WEDGE:
-      shape = dgmf::CellShape::Wedge;
-      return true;
-    case VTK_PYRAMID:
-      shape = dgmf::CellShape::Pyramid;
-      return true;
-    default:
-      return false;
-  }
-}
-} // namespace
-
-const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
-{
-  auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData());
-  if (doubles && doubles->GetNumberOfComponents() == 3)
-  {
-    return doubles->GetPointer(0);
-  }
-  const vtkIdType n = points->GetNumberOfPoints();
-  copy.resize(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->GetPoint(i, copy.data() + 3 * i);
-  }
-  return copy.data();
-}
-
 dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
   const dgmf::ParallelFor& parallelFor)
@@ -106,7 +49,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         const int* order;
         vtkIdType npts;
         const vtkIdType* pts;
-        if (!GetShape(types[c], shape, order))
+        if (!CellShapeOf(types[c], shape, order))
         {
           values[c] = std::numeric_limits<double>::quiet_NaN();
           flags[c] = 0;

@@ -30,9 +30,6 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
   const dgmf::ParallelFor& parallelFor);
 
-/// The points as a contiguous array of 3 doubles per point: their own memory when they already
-/// are (no copy), otherwise a copy in `copy`.
-const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy);
 } // namespace dgmf_vtk
 
 #endif

@@ -1,5 +1,7 @@
 #include "DGMFCompositeMesh.h"
 
+#include "dgmf/ResultNames.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
@@ -7,6 +9,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -56,10 +59,18 @@ CoordinateKey KeyOf(const double p[3])
 } // namespace
 
 CompositeMesh::CompositeMesh(
-  vtkCompositeDataSet* input, const std::vector<std::string>& arrays, const std::string& markerName)
+  vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName)
   : Input(input)
   , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
 {
+  std::vector<std::string> arrays;
+  for (const std::string& name : { displacementName, markerName })
+  {
+    if (!name.empty())
+    {
+      arrays.push_back(name);
+    }
+  }
   std::unordered_map<CoordinateKey, vtkIdType, CoordinateHash> nodeAt;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -193,6 +204,20 @@ CompositeMesh::CompositeMesh(
       this->Merged->GetPointData()->AddArray(array);
     }
   }
+}
+
+void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDataSet* output) const
+{
+  namespace names = dgmf::names;
+  output->Initialize();
+  this->Scatter(deformed, { names::R, names::F }, { names::SizeSkew, names::Inverted }, output);
+  vtkNew<vtkFieldData> fieldData;
+  fieldData->PassData(this->Input->GetFieldData());
+  for (int k = 0; k < deformed->GetFieldData()->GetNumberOfArrays(); ++k)
+  {
+    fieldData->AddArray(deformed->GetFieldData()->GetAbstractArray(k));
+  }
+  output->SetFieldData(fieldData);
 }
 
 void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,

@@ -23,21 +23,28 @@ namespace dgmf_vtk
  * The blocks of a composite dataset as one unstructured grid. Every leaf with explicit points
  * (unstructured grids, polydata such as boundary patches, structured grids) contributes its cells;
  * nodes at exactly the same coordinates, in the same or different blocks, become one node.
- * The merged grid carries the point arrays named in `arrays` (first value found for each merged
- * node, except the boundary marker, `markerName`, which keeps the largest: a node that moves in
- * any block moves); a block without the array contributes zeros.
+ * The merged grid carries the point arrays `displacementName` and `markerName` when they are not
+ * empty (first non-zero value found for each merged node, except the boundary marker, which
+ * keeps the largest: a node that moves in any block moves); a block without the array
+ * contributes zeros.
  */
 class CompositeMesh
 {
 public:
-  CompositeMesh(vtkCompositeDataSet* input, const std::vector<std::string>& arrays,
-    const std::string& markerName);
+  CompositeMesh(
+    vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName);
 
   /// The merged grid (empty when no leaf has points).
   vtkUnstructuredGrid* GetMergedMesh() const { return this->Merged; }
 
   /// Number of leaves that were skipped (no explicit points, e.g. image data).
   int GetNumberOfSkippedBlocks() const { return this->Skipped; }
+
+  /**
+   * The deformation's result as the composite output: Scatter() with the filters' point arrays
+   * (r, f) and cell arrays (SizeSkew, Inverted), and the input's field data with the result's.
+   */
+  void ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDataSet* output) const;
 
   /**
    * Builds the output: `output` gets the structure of the input; every merged leaf becomes a copy

@@ -1,12 +1,21 @@
 #include "DGMFDistributed.h"
 
+#include "DGMFInputNodes.h"
+#include "DGMFOutputArrays.h"
+
+#include "dgmf/ResultNames.h"
+
 #include "vtkCellTypes.h"
 #include "vtkCommunicator.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkMultiProcessController.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <map>
 
 namespace dgmf_vtk
 {
@@ -126,6 +135,114 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
   summary.Mean = summary.Evaluated > 0 ? summary.Sum / static_cast<double>(summary.Evaluated) : 0.0;
   summary.Minimum = summary.Evaluated > 0 ? globalMinimum : 0.0;
   outsideNodes = static_cast<std::size_t>(total[5]);
+}
+
+void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)
+{
+  const std::size_t n = nodes.LocalNodes;
+  std::vector<RemoteBoundaryNode> local;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (nodes.Kinds[i] == dgmf::NodeKind::Interior)
+    {
+      continue;
+    }
+    RemoteBoundaryNode node;
+    for (int c = 0; c < 3; ++c)
+    {
+      node.Position[c] = nodes.Points[3 * i + c];
+      node.Displacement[c] = nodes.Displacement ? nodes.Displacement[3 * i + c] : 0.0;
+    }
+    node.Kind = static_cast<std::int32_t>(nodes.Kinds[i]);
+    node.BodyId = nodes.BodyIds.empty() ? 0 : nodes.BodyIds[i];
+    local.push_back(node);
+  }
+  const std::vector<RemoteBoundaryNode> remote = ExchangeBoundaryNodes(controller, local);
+  if (remote.empty())
+  {
+    return;
+  }
+  // A ghost node on the mesh's boundary may look interior here (its boundary face belongs to a
+  // ghost cell, whose faces are left out): it takes the kind its owner found for it.
+  std::map<std::array<double, 3>, dgmf::NodeKind> remoteKind;
+  for (const RemoteBoundaryNode& node : remote)
+  {
+    auto& kind = remoteKind[{ node.Position[0], node.Position[1], node.Position[2] }];
+    kind = std::max(kind, static_cast<dgmf::NodeKind>(node.Kind));
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (nodes.Kinds[i] == dgmf::NodeKind::Interior)
+    {
+      const auto found =
+        remoteKind.find({ nodes.Points[3 * i], nodes.Points[3 * i + 1], nodes.Points[3 * i + 2] });
+      if (found != remoteKind.end())
+      {
+        nodes.Kinds[i] = found->second;
+      }
+    }
+  }
+  // The other pieces' boundary nodes follow this piece's nodes (coincident copies of the same
+  // node, on several pieces, share one graph vertex).
+  if (nodes.PointCopy.empty())
+  {
+    nodes.PointCopy.assign(nodes.Points, nodes.Points + 3 * n);
+  }
+  if (nodes.Displacement && nodes.DisplacementCopy.empty())
+  {
+    nodes.DisplacementCopy.assign(nodes.Displacement, nodes.Displacement + 3 * n);
+  }
+  for (const RemoteBoundaryNode& node : remote)
+  {
+    nodes.PointCopy.insert(nodes.PointCopy.end(), node.Position, node.Position + 3);
+    if (nodes.Displacement)
+    {
+      nodes.DisplacementCopy.insert(
+        nodes.DisplacementCopy.end(), node.Displacement, node.Displacement + 3);
+    }
+    nodes.Kinds.push_back(static_cast<dgmf::NodeKind>(node.Kind));
+    if (!nodes.BodyIds.empty())
+    {
+      nodes.BodyIds.push_back(node.BodyId);
+      nodes.NumberOfBodies = std::max(nodes.NumberOfBodies, node.BodyId);
+    }
+  }
+  nodes.Points = nodes.PointCopy.data();
+  if (nodes.Displacement)
+  {
+    nodes.Displacement = nodes.DisplacementCopy.data();
+  }
+  nodes.NumberOfNodes = n + remote.size();
+}
+
+void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData)
+{
+  namespace names = dgmf::names;
+  dgmf::QualitySummary summary;
+  summary.Evaluated =
+    static_cast<std::size_t>(GetFieldValue(fieldData, names::SizeSkewEvaluatedCells));
+  summary.Sum =
+    GetFieldValue(fieldData, names::SizeSkewMean) * static_cast<double>(summary.Evaluated);
+  summary.Minimum = GetFieldValue(fieldData, names::SizeSkewMinimum);
+  summary.Inverted = static_cast<std::size_t>(GetFieldValue(fieldData, names::InvertedCellCount));
+  std::size_t outside = static_cast<std::size_t>(GetFieldValue(fieldData, names::OutsideNodeCount));
+  ReduceSummary(controller, ok, summary, outside);
+  if (!ok)
+  {
+    return;
+  }
+  const auto set = [fieldData](const char* name, double value)
+  {
+    if (vtkDataArray* array = fieldData->GetArray(name))
+    {
+      array->SetTuple1(0, value);
+    }
+  };
+  set(names::SizeSkewMean, summary.Mean);
+  set(names::SizeSkewMinimum, summary.Minimum);
+  set(names::InvertedCellCount, static_cast<double>(summary.Inverted));
+  set(names::SizeSkewEvaluatedCells, static_cast<double>(summary.Evaluated));
+  set(names::OutsideNodeCount, static_cast<double>(outside));
 }
 
 } // namespace dgmf_vtk

@@ -9,14 +9,18 @@
 
 #include "dgmf/SizeSkewQuality.h"
 
+#include <cstddef>
+
 #include <cstdint>
 #include <vector>
 
+class vtkFieldData;
 class vtkMultiProcessController;
 class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
 {
+struct InputNodes;
 
 /// True when `controller` runs more than one process.
 bool IsDistributed(vtkMultiProcessController* controller);
@@ -44,6 +48,21 @@ struct RemoteBoundaryNode
  */
 std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
   vtkMultiProcessController* controller, const std::vector<RemoteBoundaryNode>& local);
+
+/**
+ * Appends the other processes' boundary nodes to `nodes` (this piece's nodes stay first: the
+ * graph is then the same on every process), and gives this piece's nodes that look interior but
+ * are another piece's boundary nodes (ghost nodes whose boundary face is on a ghost cell) the kind
+ * their owner found. Collective.
+ */
+void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes);
+
+/**
+ * The field data of a distributed result made global: the quality summary (SizeSkewMean,
+ * SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) and OutsideNodeCount over all
+ * processes. `ok` false on any process makes it false on all. Collective.
+ */
+void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData);
 
 /**
  * The quality summary over all processes (each process's summary leaves out its ghost cells),

@@ -5,15 +5,16 @@
  *
  * vtkDGMFDeformFilter takes a vtkUnstructuredGrid whose boundary nodes carry a prescribed motion
  * and moves every other node so that the mesh follows (Wang, Qin, Zhao, Chinese Journal of
- * Aeronautics 31(11), 2018):
+ * Aeronautics 31(11), 2018). The paper's steps, as Documentation/architecture.md numbers them:
  *
  * 1. the Delaunay graph of all boundary nodes (static and moving) is built with CGAL;
- * 2. every node is located in a graph element (triangle or tetrahedron), with barycentric
- *    coordinates e_i;
- * 3. r = sum e_i r0_i, with r0 = 0 on moving and r0 = StaticBoundaryR0 on static boundary nodes;
- * 4. the damping factor f = u(r) (u chosen by DampingFunction; 0 for r > 1);
- * 5. x' = c + R(f angles)(x - c) + f t + f d: the rigid motion (Translation t, RotationAngles
- *    about RotationCenter c) and the shape deformation d, all scaled by f.
+ * 2. every node is located in a graph element (triangle or tetrahedron),
+ * 3. with barycentric coordinates e_i;
+ * 4. r = sum e_i r0_i, with r0 = 0 on moving and r0 = StaticBoundaryR0 on static boundary nodes;
+ * 5. the damping factor f = u(r) (u chosen by DampingFunction; 0 for r > 1);
+ * 6. x' = c + R(f angles)(x - c) + f t + f d: the rigid motion (Translation t, RotationAngles
+ *    about RotationCenter c) and the shape deformation d, all scaled by f;
+ * 7. d at an interior node interpolated from the moving boundary (DGMF2).
  *
  * The shape deformation d comes from the displacement point array (input array 0, 3 components):
  * in DGMF2 mode (default) it is given at the moving boundary nodes and interpolated inside each
@@ -30,7 +31,8 @@
  * points (volume blocks and boundary patches) are merged at their coincident nodes, deformed
  * together, and the output has the input's block structure, each block with its own arrays plus
  * the filter's (SizeSkew for its own cells); the quality summary is in the output's field data.
- * GetOutputDataObject(0) returns it (GetOutput() is for unstructured-grid input).
+ * The output has the input's type (vtkPassInputTypeAlgorithm); GetOutput() returns it for
+ * unstructured-grid input, GetOutputDataObject(0) for any.
  *
  * A mesh is 2D when it has no 3D cell and all its nodes have the same z; the graph is then 2D and
  * the mesh can only rotate about z. Otherwise the graph is 3D.
@@ -59,37 +61,41 @@
  * @warning Threaded with vtkSMPTools (see NumberOfThreads). Results are identical for any number
  * of threads.
  *
- * @sa vtkWarpVector vtkTransformFilter
+ * The filter holds the properties and reads as the steps of a run: gather the input (composite
+ * blocks merged: DGMFCompositeMesh), gather and check the arrays (DGMFInputNodes), exchange the
+ * boundary nodes (DGMFDistributed), deform through the VTK-free core's method interface
+ * (dgmf::DeformationMethod, with the graph from DGMFMappingCache), and write the outputs
+ * (DGMFOutputArrays). Documentation/architecture.md draws the whole path.
+ *
+ * @sa vtkWarpVector vtkTransformFilter vtkSizeSkewQualityFilter
  */
 #ifndef vtkDGMFDeformFilter_h
 #define vtkDGMFDeformFilter_h
 
 #include "DGMFFiltersModule.h" // for export macro
-#include "vtkUnstructuredGridAlgorithm.h"
+#include "vtkPassInputTypeAlgorithm.h"
 
-class vtkFieldData;
 class vtkMultiProcessController;
+class vtkUnstructuredGrid;
 
 #include <cstddef> // for std::size_t
-#include <cstdint> // for std::int32_t
 #include <memory>  // for std::unique_ptr
-#include <vector>  // for std::vector
 
-namespace dgmf_vtk
-{
-struct BoundaryFacets;
-}
-namespace dgmf
-{
-struct RigidMotion;
-}
-
-class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkUnstructuredGridAlgorithm
+class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkPassInputTypeAlgorithm
 {
 public:
   static vtkDGMFDeformFilter* New();
-  vtkTypeMacro(vtkDGMFDeformFilter, vtkUnstructuredGridAlgorithm);
+  vtkTypeMacro(vtkDGMFDeformFilter, vtkPassInputTypeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The output for unstructured-grid input (null for composite input: use
+   * GetOutputDataObject(0)).
+   */
+  vtkUnstructuredGrid* GetOutput();
+  vtkUnstructuredGrid* GetOutput(int port);
+  ///@}
 
   /// Damping functions of the paper's Table 1.
   enum DampingFunctions
@@ -110,14 +116,15 @@ public:
     DGMF2 = 2  ///< given at the moving boundary nodes, interpolated by paper Eq. 7
   };
 
-  /// Deformation methods.
+  /// Deformation methods: the values of the method table (Filters/DGMFCore/dgmf/MethodTable.def,
+  /// which also names and describes them).
   enum Methods
   {
-    DGMF = 0,  ///< Delaunay graph mapping with damping functions (this project's method)
-    DGM = 1,   ///< Delaunay graph mapping (Liu, Qin, Xia 2006)
-    DGRBF = 2, ///< Delaunay graph with a local RBF per element (Wang, Qin, Zhao 2015)
-    RBF = 3,   ///< global RBF interpolation (de Boer et al. 2007; greedy: Rendall and Allen 2009)
-    IDW = 4    ///< inverse distance weighting (Witteveen and Bijl 2009; Luke et al. 2012)
+    DGMF = 0,
+    DGM = 1,
+    DGRBF = 2,
+    RBF = 3,
+    IDW = 4
   };
 
   ///@{
@@ -350,13 +357,12 @@ public:
   ///@{
   /**
    * Wall-clock seconds of the phases of the last execution: building the Delaunay graph, locating
-   * the nodes (both 0 when the cache was reused), the deformation itself (r, f and the new
-   * positions, or the method's fit and evaluation), and the quality metric.
+   * the nodes (both 0 when the cache was reused), and the deformation itself (r, f and the new
+   * positions, or the method's fit and evaluation).
    */
   double GetLastGraphSeconds() const { return this->LastGraphSeconds; }
   double GetLastLocationSeconds() const { return this->LastLocationSeconds; }
   double GetLastDeformationSeconds() const { return this->LastDeformationSeconds; }
-  double GetLastQualitySeconds() const { return this->LastQualitySeconds; }
   ///@}
 
   /// Memory kept between executions (graph, node locations, r), in bytes.
@@ -369,11 +375,7 @@ protected:
   vtkDGMFDeformFilter();
   ~vtkDGMFDeformFilter() override;
 
-  vtkTypeBool ProcessRequest(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -404,35 +406,14 @@ private:
   vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
   void operator=(const vtkDGMFDeformFilter&) = delete;
 
-  struct Inputs;
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
-  bool CheckMemory(vtkUnstructuredGrid* input);
-  bool GatherInputs(vtkUnstructuredGrid* input, Inputs& inputs);
-  bool UpdateMapping(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output);
-  void UpdateDampingField(Inputs& inputs);
-  const dgmf_vtk::BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* input, int dimension);
-  bool Deform(vtkUnstructuredGrid* input, Inputs& inputs, vtkUnstructuredGrid* output);
 
-  struct Cache;
-  std::unique_ptr<Cache> GraphCache;
-  struct BodyMotions;
-  std::unique_ptr<BodyMotions> PerBodyMotions;
-  bool DeformBodies(Inputs& inputs, vtkFieldData* fieldData, double* out);
-  bool DeformInSubSteps(
-    vtkUnstructuredGrid* input, Inputs& inputs, vtkFieldData* fieldData, double* out);
-  bool GatherBodyIds(vtkUnstructuredGrid* input, Inputs& inputs);
-  void AppendRemoteBoundaryNodes(Inputs& inputs);
-  void ReduceAcrossProcesses(int& status, vtkUnstructuredGrid* output);
-  int DistributedDimension = 0; ///< the whole mesh's dimension in a distributed run
-  double DistributedZ = 0.0;    ///< and its z when it is 2D
-  std::vector<dgmf::RigidMotion> PropertyBodyMotions(const Inputs& inputs) const;
-  std::vector<std::int32_t> BodyIdsOrMovingNodes(const Inputs& inputs) const;
-  std::vector<double> TotalBodyDisplacement(const Inputs& inputs) const;
+  struct Internals; ///< the caches (graph, r and f, boundary, output points) and body motions
+  std::unique_ptr<Internals> Internal;
   bool LastExecutionReusedGraph = false;
   double LastGraphSeconds = 0.0;
   double LastLocationSeconds = 0.0;
   double LastDeformationSeconds = 0.0;
-  double LastQualitySeconds = 0.0;
 };
 
 #endif

@@ -1,23 +1,25 @@
 #include "vtkSizeSkewQualityFilter.h"
 
-#include "DGMFCellQuality.h"
+#include "DGMFMeshConversion.h"
+#include "DGMFOutputArrays.h"
 #include "DGMFSMPTools.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkSizeSkewQualityFilter);
@@ -57,6 +59,37 @@ bool SameCells(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
   }
   return true;
 }
+
+/**
+ * The quality of `mesh` against `reference` added to `result` (a shallow copy of `mesh`): its
+ * cell arrays and its field data. Returns false, with the reason in `error`, when the two do not
+ * have the same points and cells.
+ */
+bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
+  dgmf::QualitySummary& summary, std::string& error)
+{
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = dgmf_vtk::AsUnstructuredGrid(mesh);
+  const vtkSmartPointer<vtkUnstructuredGrid> original = dgmf_vtk::AsUnstructuredGrid(reference);
+  if (mesh->GetNumberOfPoints() != reference->GetNumberOfPoints() || !SameCells(grid, original))
+  {
+    error = "The mesh (" + std::to_string(mesh->GetNumberOfPoints()) + " points, " +
+      std::to_string(mesh->GetNumberOfCells()) + " cells) and the reference (" +
+      std::to_string(reference->GetNumberOfPoints()) + " points, " +
+      std::to_string(reference->GetNumberOfCells()) +
+      " cells) must have the same points and cells.";
+    return false;
+  }
+  if (mesh->GetNumberOfPoints() == 0)
+  {
+    return true;
+  }
+  std::vector<double> deformedCopy, originalCopy; // only for points that are not doubles
+  const double* deformed = dgmf_vtk::PointsAsDouble(mesh->GetPoints(), deformedCopy);
+  const double* undeformed = dgmf_vtk::PointsAsDouble(reference->GetPoints(), originalCopy);
+  summary = dgmf_vtk::AddCellQuality(original, undeformed, deformed, result->GetCellData(),
+    result->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
+  return true;
+}
 } // namespace
 
 vtkSizeSkewQualityFilter::vtkSizeSkewQualityFilter()
@@ -64,60 +97,101 @@ vtkSizeSkewQualityFilter::vtkSizeSkewQualityFilter()
   this->SetNumberOfInputPorts(2);
 }
 
+vtkUnstructuredGrid* vtkSizeSkewQualityFilter::GetOutput()
+{
+  return this->GetOutput(0);
+}
+
+vtkUnstructuredGrid* vtkSizeSkewQualityFilter::GetOutput(int port)
+{
+  return vtkUnstructuredGrid::SafeDownCast(this->GetOutputDataObject(port));
+}
+
+int vtkSizeSkewQualityFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
+}
+
 int vtkSizeSkewQualityFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkUnstructuredGrid* mesh = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* reference = vtkUnstructuredGrid::GetData(inputVector[1], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  if (!mesh || !reference || !output)
-  {
-    vtkErrorMacro("Both inputs (the mesh and its reference) must be vtkUnstructuredGrid.");
-    return 0;
-  }
-  if (mesh->GetNumberOfPoints() != reference->GetNumberOfPoints() || !SameCells(mesh, reference))
-  {
-    vtkErrorMacro("The mesh (" << mesh->GetNumberOfPoints() << " points, "
-                               << mesh->GetNumberOfCells() << " cells) and the reference ("
-                               << reference->GetNumberOfPoints() << " points, "
-                               << reference->GetNumberOfCells()
-                               << " cells) must have the same points and cells.");
-    output->Initialize();
-    return 0;
-  }
-  std::vector<double> deformedCopy, originalCopy; // only for points that are not doubles
-  const double* deformed = dgmf_vtk::PointsAsDouble(mesh->GetPoints(), deformedCopy);
-  const double* original = dgmf_vtk::PointsAsDouble(reference->GetPoints(), originalCopy);
-
-  output->ShallowCopy(mesh);
-  vtkNew<vtkDoubleArray> sizeSkew;
-  sizeSkew->SetName("SizeSkew");
-  vtkNew<vtkUnsignedCharArray> inverted;
-  inverted->SetName("Inverted");
-  dgmf::QualitySummary summary;
+  vtkDataObject* meshObject = vtkDataObject::GetData(inputVector[0], 0);
+  vtkDataObject* referenceObject = vtkDataObject::GetData(inputVector[1], 0);
+  vtkDataObject* outputObject = vtkDataObject::GetData(outputVector, 0);
+  std::string error;
+  bool ok = true;
   dgmf_vtk::RunWithThreads(this->NumberOfThreads,
     [&]()
     {
-      summary = dgmf_vtk::ComputeCellQuality(
-        reference, original, deformed, sizeSkew, inverted, dgmf_vtk::MakeSMPParallelFor());
+      auto* mesh = vtkUnstructuredGrid::SafeDownCast(meshObject);
+      auto* reference = vtkUnstructuredGrid::SafeDownCast(referenceObject);
+      auto* output = vtkUnstructuredGrid::SafeDownCast(outputObject);
+      if (mesh && reference && output)
+      {
+        output->ShallowCopy(mesh);
+        vtkNew<vtkFieldData> fieldData; // the output's own (a shallow copy shares the input's)
+        fieldData->PassData(mesh->GetFieldData());
+        output->SetFieldData(fieldData);
+        dgmf::QualitySummary summary;
+        ok = Measure(mesh, reference, output, summary, error);
+        return;
+      }
+      auto* meshes = vtkCompositeDataSet::SafeDownCast(meshObject);
+      auto* references = vtkCompositeDataSet::SafeDownCast(referenceObject);
+      auto* outputs = vtkCompositeDataSet::SafeDownCast(outputObject);
+      if (!meshes || !references || !outputs)
+      {
+        error = "The mesh and its reference must both be unstructured grids, or both composite "
+                "datasets of the same structure.";
+        ok = false;
+        return;
+      }
+      // Block by block; the summary over all blocks.
+      outputs->CopyStructure(meshes);
+      dgmf::QualitySummary total;
+      auto iterator = vtk::TakeSmartPointer(meshes->NewIterator());
+      iterator->SkipEmptyNodesOn();
+      for (iterator->InitTraversal(); ok && !iterator->IsDoneWithTraversal();
+           iterator->GoToNextItem())
+      {
+        auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject());
+        if (!block)
+        {
+          outputs->SetDataSet(iterator, iterator->GetCurrentDataObject()); // passed unchanged
+          continue;
+        }
+        auto* original = vtkPointSet::SafeDownCast(references->GetDataSet(iterator));
+        if (!original)
+        {
+          error = "The reference has no mesh for block " +
+            std::to_string(iterator->GetCurrentFlatIndex()) + " of the mesh.";
+          ok = false;
+          break;
+        }
+        vtkSmartPointer<vtkPointSet> result = vtk::TakeSmartPointer(block->NewInstance());
+        result->ShallowCopy(block);
+        vtkNew<vtkFieldData> blockFieldData;
+        blockFieldData->PassData(block->GetFieldData());
+        result->SetFieldData(blockFieldData);
+        dgmf::QualitySummary summary;
+        ok = Measure(block, original, result, summary, error);
+        total = dgmf::MergeQualitySummaries(total, summary);
+        outputs->SetDataSet(iterator, result);
+      }
+      vtkNew<vtkFieldData> fieldData;
+      fieldData->PassData(meshes->GetFieldData());
+      dgmf_vtk::SetQualitySummary(fieldData, total);
+      outputs->SetFieldData(fieldData);
     });
-  output->GetCellData()->AddArray(sizeSkew);
-  output->GetCellData()->AddArray(inverted);
-  vtkNew<vtkDoubleArray> mean;
-  mean->SetName("SizeSkewMean");
-  mean->InsertNextValue(summary.Mean);
-  vtkNew<vtkDoubleArray> minimum;
-  minimum->SetName("SizeSkewMinimum");
-  minimum->InsertNextValue(summary.Minimum);
-  vtkNew<vtkIdTypeArray> count;
-  count->SetName("InvertedCellCount");
-  count->InsertNextValue(static_cast<vtkIdType>(summary.Inverted));
-  vtkNew<vtkFieldData> fieldData;
-  fieldData->PassData(mesh->GetFieldData());
-  fieldData->AddArray(mean);
-  fieldData->AddArray(minimum);
-  fieldData->AddArray(count);
-  output->SetFieldData(fieldData);
+  if (!ok)
+  {
+    vtkErrorMacro(<< error);
+    outputObject->Initialize();
+    return 0;
+  }
   return 1;
 }
 

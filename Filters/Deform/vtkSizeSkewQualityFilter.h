@@ -5,14 +5,19 @@
  *
  * Input 0 is the mesh to measure; input 1 (the reference, SetReferenceData or
  * SetReferenceConnection) is the same mesh before deformation: the same number of points and the
- * same cells, only the point coordinates may differ. The output is input 0 with every array passed
- * through, plus the cell arrays `SizeSkew` (1 = ideal shape and unchanged size, 0 = degenerate or
- * inverted; NaN for cell types the metric does not cover) and `Inverted`, and the field data
- * `SizeSkewMean`, `SizeSkewMinimum` and `InvertedCellCount`.
+ * same cells, only the point coordinates may differ. Both are unstructured grids, or both
+ * composite datasets of the same structure (multiblock, partitioned dataset collection: the
+ * output of DGMF Deform on a CFD reader's blocks), measured block by block.
  *
- * This is the metric vtkDGMFDeformFilter computes for its own output, available for any pair of
- * meshes, e.g. to compare deformations made by other tools. The definition for every cell type is
- * in Documentation/quality.md.
+ * The output is input 0 with every array passed through, plus the cell arrays `SizeSkew` (1 =
+ * ideal shape and unchanged size, 0 = degenerate or inverted; NaN for cell types the metric does
+ * not cover) and `Inverted`, and the field data `SizeSkewMean`, `SizeSkewMinimum`,
+ * `InvertedCellCount` and `SizeSkewEvaluatedCells` (over all blocks): the same names and values
+ * vtkDGMFDeformFilter writes for its own output.
+ *
+ * This is the metric vtkDGMFDeformFilter computes, available for any pair of meshes, e.g. to
+ * compare deformations made by other tools. The definition for every cell type is in
+ * Documentation/quality.md.
  *
  * @warning Threaded with vtkSMPTools.
  * @sa vtkDGMFDeformFilter vtkMeshQuality
@@ -21,19 +26,27 @@
 #define vtkSizeSkewQualityFilter_h
 
 #include "DGMFFiltersModule.h" // for export macro
-#include "vtkUnstructuredGridAlgorithm.h"
+#include "vtkPassInputTypeAlgorithm.h"
 
-class DGMFFILTERS_EXPORT vtkSizeSkewQualityFilter : public vtkUnstructuredGridAlgorithm
+class vtkUnstructuredGrid;
+
+class DGMFFILTERS_EXPORT vtkSizeSkewQualityFilter : public vtkPassInputTypeAlgorithm
 {
 public:
   static vtkSizeSkewQualityFilter* New();
-  vtkTypeMacro(vtkSizeSkewQualityFilter, vtkUnstructuredGridAlgorithm);
+  vtkTypeMacro(vtkSizeSkewQualityFilter, vtkPassInputTypeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// The reference (undeformed) mesh, input port 1.
   void SetReferenceData(vtkDataObject* reference) { this->SetInputData(1, reference); }
   void SetReferenceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  ///@}
+
+  ///@{
+  /// The output for unstructured-grid input (null for composite input: GetOutputDataObject(0)).
+  vtkUnstructuredGrid* GetOutput();
+  vtkUnstructuredGrid* GetOutput(int port);
   ///@}
 
   ///@{
@@ -48,6 +61,7 @@ protected:
   vtkSizeSkewQualityFilter();
   ~vtkSizeSkewQualityFilter() override = default;
 
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfThreads = 0;

@@ -1,8 +1,8 @@
 // Location of a block of nodes with interleaved walks (NodeLocation) and the graph's seed grid.
 #include "SyntheticNodes.h"
 
-#include "dgmf/NodeLocation.h"
 #include "dgmf/DelaunayGraph.h"
+#include "dgmf/NodeLocation.h"
 
 #include <gtest/gtest.h>
 

@@ -33,25 +33,9 @@ void InterpolateMovingDeformation(const DelaunayMapping& mapping, const double* 
   std::int32_t element, const double* weights, double d[3])
 {
   const DelaunayGraph& graph = mapping.GetGraph();
-  const std::int32_t* vertices = graph.GetElement(element);
-  const int n = graph.GetVerticesPerElement();
-  double sum[3] = { 0.0, 0.0, 0.0 };
-  double weight = 0.0;
-  for (int k = 0; k < n; ++k)
-  {
-    if (mapping.GetVertexKind(vertices[k]) == NodeKind::MovingBoundary)
-    {
-      const double* dk = vertexDeformation + 3 * static_cast<std::size_t>(vertices[k]);
-      sum[0] += weights[k] * dk[0];
-      sum[1] += weights[k] * dk[1];
-      sum[2] += weights[k] * dk[2];
-      weight += weights[k];
-    }
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    d[c] = weight > 0.0 ? sum[c] / weight : 0.0;
-  }
+  InterpolateSourceDeformation(
+    graph.GetElement(element), weights, graph.GetVerticesPerElement(), vertexDeformation,
+    [&](std::int32_t v) { return mapping.GetVertexKind(v) == NodeKind::MovingBoundary; }, d);
 }
 
 void DeformDGMF(const DelaunayMapping& mapping, const double* f, const RigidMotion& motion,

@@ -1,6 +1,7 @@
 /**
  * @file DGMFDeformation.h
- * @brief Steps 5-6 of DGMF: the new position of every node (paper Eqs. 3-7).
+ * @brief Steps 6-7 of DGMF (Documentation/architecture.md): the new position of every node with
+ * one moving body (paper Eqs. 3-7).
  */
 #ifndef dgmf_DGMFDeformation_h
 #define dgmf_DGMFDeformation_h
@@ -30,10 +31,36 @@ std::vector<double> GatherVertexDeformation(
   const DelaunayMapping& mapping, const double* displacement);
 
 /**
- * Paper Eq. 7: d = sum e_i d_i / sum e_i over the moving vertices i of `element`, or 0 when the
- * element has no moving vertex (or their weights are all 0). Continuous across shared faces:
- * on a face the weight of the opposite vertex is 0, so both elements give the same d.
+ * Paper Eq. 7 at a node of a graph element: d = sum w_k d_k / sum w_k over the element's
+ * vertices v_k with `isSource(v_k)` (the moving vertices, or one body's), d_k their deformation
+ * (3 per vertex in `vertexDeformation`); 0 when there is none (or their weights are all 0).
+ * Continuous across shared faces: on a face the weight of the opposite vertex is 0, so both
+ * elements give the same d. One body and each of several bodies use this same arithmetic.
  */
+template <typename IsSource>
+inline void InterpolateSourceDeformation(const std::int32_t* vertices, const double* w, int n,
+  const double* vertexDeformation, const IsSource& isSource, double d[3])
+{
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  double weight = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    if (isSource(vertices[k]))
+    {
+      const double* dk = vertexDeformation + 3 * static_cast<std::size_t>(vertices[k]);
+      sum[0] += w[k] * dk[0];
+      sum[1] += w[k] * dk[1];
+      sum[2] += w[k] * dk[2];
+      weight += w[k];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    d[c] = weight > 0.0 ? sum[c] / weight : 0.0;
+  }
+}
+
+/// InterpolateSourceDeformation over the moving vertices of `element`.
 void InterpolateMovingDeformation(const DelaunayMapping& mapping, const double* vertexDeformation,
   std::int32_t element, const double* weights, double d[3]);
 

@@ -12,10 +12,6 @@ void Tabulate(double angleDegrees, int steps, std::vector<double>& sines,
   std::vector<double>& cosines, double& angle, double& anglePerStep)
 {
   constexpr double degreesToRadians = 3.14159265358979323846 / 180.0;
-  if (!(std::abs(angleDegrees) <= 720.0))
-  {
-    throw std::invalid_argument("rotation angles must be within [-720, 720] degrees");
-  }
   angle = angleDegrees * degreesToRadians;
   anglePerStep = angle / steps;
   sines.resize(static_cast<std::size_t>(steps) + 1);

@@ -8,13 +8,18 @@
 namespace dgmf
 {
 
-void ComputeBoundaryDistanceField(
-  const DelaunayMapping& mapping, double staticR0, double* r, const ParallelFor& parallelFor)
+void CheckStaticR0(double staticR0)
 {
   if (!(staticR0 >= 1.0) || !std::isfinite(staticR0))
   {
     throw std::invalid_argument("the static-boundary value r0s must be a finite number >= 1");
   }
+}
+
+void ComputeBoundaryDistanceField(
+  const DelaunayMapping& mapping, double staticR0, double* r, const ParallelFor& parallelFor)
+{
+  CheckStaticR0(staticR0);
   const DelaunayGraph& graph = mapping.GetGraph();
   std::vector<double> vertexR0(graph.GetNumberOfVertices());
   for (std::size_t v = 0; v < vertexR0.size(); ++v)
@@ -32,14 +37,8 @@ void ComputeBoundaryDistanceField(
         r[i] = mapping.GetNodeKind(i) == NodeKind::MovingBoundary ? 0.0 : staticR0;
         return;
       }
-      const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
-      const double* w = mapping.GetWeights(i);
-      double sum = 0.0;
-      for (int k = 0; k < n; ++k)
-      {
-        sum += w[k] * vertexR0[static_cast<std::size_t>(vertices[k])];
-      }
-      r[i] = std::min(sum, staticR0); // round-off must not leave [0, r0s]
+      r[i] = InterpolateR(graph.GetElement(mapping.GetElementOfNode(i)), mapping.GetWeights(i), n,
+        staticR0, [&](std::int32_t v) { return vertexR0[static_cast<std::size_t>(v)]; });
     });
 }
 

@@ -1,7 +1,7 @@
 /**
  * @file DampingField.h
- * @brief Steps 3-4 of DGMF: the interpolated boundary value r and the damping factor f of every
- * node.
+ * @brief Steps 4-5 of DGMF (Documentation/architecture.md): the interpolated boundary value r and
+ * the damping factor f of every node.
  */
 #ifndef dgmf_DampingField_h
 #define dgmf_DampingField_h
@@ -10,8 +10,32 @@
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/ParallelFor.h"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace dgmf
 {
+
+/// Throws std::invalid_argument unless r0s is a finite number >= 1.
+void CheckStaticR0(double staticR0);
+
+/**
+ * Paper Eq. 1 at a node of a graph element: r = sum_k w_k r0(v_k) over the element's `n`
+ * vertices with barycentric coordinates `w`, at most r0s (round-off must not leave [0, r0s]).
+ * `r0(v)` is the value of vertex v: 0 on the vertices the motion comes from, r0s elsewhere. One
+ * body and each of several bodies (MultiBodyDeformation) use this same arithmetic.
+ */
+template <typename VertexR0>
+inline double InterpolateR(
+  const std::int32_t* vertices, const double* w, int n, double staticR0, const VertexR0& r0)
+{
+  double sum = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    sum += w[k] * r0(vertices[k]);
+  }
+  return std::min(sum, staticR0);
+}
 
 /**
  * r = sum_i e_i r0_i over the vertices of each node's Delaunay element (paper Eq. 1), with

@@ -1,11 +1,13 @@
 #include "dgmf/DelaunayMapping.h"
 
+#include "dgmf/Finite.h"
 #include "dgmf/NodeLocation.h"
 
 #include <algorithm>
 #include <chrono>
 #include <exception>
 #include <stdexcept>
+#include <string>
 
 namespace dgmf
 {
@@ -55,6 +57,13 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
             dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
           return;
         }
+        const std::size_t bad = FirstNonFinite(points, 3 * numberOfNodes);
+        if (bad < 3 * numberOfNodes)
+        {
+          throw std::invalid_argument(
+            "The input mesh has NaN or infinite point coordinates (point " +
+            std::to_string(bad / 3) + ").");
+        }
         this->NodeElement.assign(numberOfNodes, NotLocated);
         this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
         if (alongside)
@@ -67,7 +76,8 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         failure[task] = std::current_exception();
       }
     });
-  for (const std::exception_ptr& thrown : failure)
+  // The check of every point (task 1) explains a failure of the graph's (task 0) as well.
+  for (const std::exception_ptr& thrown : { failure[1], failure[0] })
   {
     if (thrown)
     {

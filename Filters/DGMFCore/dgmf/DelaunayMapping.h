@@ -90,7 +90,7 @@ public:
    *   caller's output arrays), run on a second thread while the graph is built on one; with a
    *   single thread, after it. Exceptions it throws are passed on.
    * Throws std::invalid_argument when there are no boundary nodes, when the boundary nodes do
-   * not span the dimension, or when a coordinate is not finite.
+   * not span the dimension, or when any node's coordinate is not finite.
    */
   DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
     const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride = 0,

@@ -1,6 +1,7 @@
 #include "dgmf/MultiBodyDeformation.h"
 
 #include "dgmf/DampedRigidMotion.h"
+#include "dgmf/DampingField.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,14 +12,6 @@ namespace dgmf
 {
 namespace
 {
-void CheckStaticR0(double staticR0)
-{
-  if (!(staticR0 >= 1.0) || !std::isfinite(staticR0))
-  {
-    throw std::invalid_argument("the static-boundary value r0s must be a finite number >= 1");
-  }
-}
-
 /// The body of every graph vertex: that of the node whose motion it carries; 0 when static.
 std::vector<std::int32_t> VertexBodies(const DelaunayMapping& mapping, const std::int32_t* bodyIds)
 {
@@ -56,43 +49,37 @@ int ElementBodies(
   return count;
 }
 
-/**
- * r_k of `body` at a node of an element: the arithmetic of ComputeBoundaryDistanceField with
- * the body's vertices as the moving ones (so one body gives the same bits).
- */
+/// r_k of `body` at a node of an element: paper Eq. 1 with the body's vertices as the moving ones.
 double BodyDistance(const std::int32_t* vertexBody, const std::int32_t* vertices, const double* w,
   int n, std::int32_t body, double staticR0)
 {
-  double sum = 0.0;
-  for (int k = 0; k < n; ++k)
-  {
-    sum += w[k] * (vertexBody[static_cast<std::size_t>(vertices[k])] == body ? 0.0 : staticR0);
-  }
-  return std::min(sum, staticR0);
+  return InterpolateR(vertices, w, n, staticR0,
+    [&](std::int32_t v)
+    { return vertexBody[static_cast<std::size_t>(v)] == body ? 0.0 : staticR0; });
 }
 
-/// Paper Eq. 7 over the vertices of `body` (the arithmetic of InterpolateMovingDeformation).
+/// d_k of `body` at a node of an element: paper Eq. 7 over the body's vertices.
 void BodyDeformation(const std::int32_t* vertexBody, const double* vertexDeformation,
   const std::int32_t* vertices, const double* w, int n, std::int32_t body, double d[3])
 {
-  double sum[3] = { 0.0, 0.0, 0.0 };
-  double weight = 0.0;
-  for (int k = 0; k < n; ++k)
+  InterpolateSourceDeformation(
+    vertices, w, n, vertexDeformation,
+    [&](std::int32_t v) { return vertexBody[static_cast<std::size_t>(v)] == body; }, d);
+}
+
+/**
+ * f_k of `body` at an interior node in an element whose bodies are `present` (ElementBodies):
+ * 0 when the body has no vertex there, u(r_k) otherwise.
+ */
+double BodyDamping(const std::int32_t* vertexBody, const std::int32_t* vertices, const double* w,
+  int n, const std::int32_t* present, int count, std::int32_t body, double staticR0,
+  DampingFunction u)
+{
+  if (std::find(present, present + count, body) == present + count)
   {
-    const auto v = static_cast<std::size_t>(vertices[k]);
-    if (vertexBody[v] == body)
-    {
-      const double* dk = vertexDeformation + 3 * v;
-      sum[0] += w[k] * dk[0];
-      sum[1] += w[k] * dk[1];
-      sum[2] += w[k] * dk[2];
-      weight += w[k];
-    }
+    return 0.0;
   }
-  for (int c = 0; c < 3; ++c)
-  {
-    d[c] = weight > 0.0 ? sum[c] / weight : 0.0;
-  }
+  return EvaluateDamping(u, BodyDistance(vertexBody, vertices, w, n, body, staticR0));
 }
 } // namespace
 
@@ -151,13 +138,8 @@ void ComputeBodyDampingFactor(const DelaunayMapping& mapping, const std::int32_t
       const std::int32_t* vertices = graph.GetElement(mapping.GetElementOfNode(i));
       std::int32_t present[4];
       const int count = ElementBodies(vertexBody.data(), vertices, n, present);
-      if (std::find(present, present + count, body) == present + count)
-      {
-        f[i] = 0.0;
-        return;
-      }
-      f[i] = EvaluateDamping(
-        u, BodyDistance(vertexBody.data(), vertices, mapping.GetWeights(i), n, body, staticR0));
+      f[i] = BodyDamping(
+        vertexBody.data(), vertices, mapping.GetWeights(i), n, present, count, body, staticR0, u);
     });
 }
 
@@ -240,7 +222,7 @@ void DeformMultiBody(const DelaunayMapping& mapping, const std::int32_t* bodyIds
       {
         const std::int32_t body = present[b];
         const double f =
-          EvaluateDamping(u, BodyDistance(vertexBody.data(), vertices, w, n, body, staticR0));
+          BodyDamping(vertexBody.data(), vertices, w, n, present, count, body, staticR0, u);
         if (f == 0.0)
         {
           continue;

@@ -5,6 +5,7 @@
 #ifndef dgmf_NodeKind_h
 #define dgmf_NodeKind_h
 
+#include <cstddef>
 #include <cstdint>
 
 namespace dgmf
@@ -23,6 +24,9 @@ inline bool IsBoundary(NodeKind kind)
 {
   return kind != NodeKind::Interior;
 }
+
+/// Throws std::invalid_argument for a boundary-marker value other than 0, 1 and 2 at `node`.
+[[noreturn]] void ThrowBadMarkerValue(double value, std::size_t node);
 
 } // namespace dgmf
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace dgmf
 {
@@ -58,6 +59,15 @@ void RigidMotion::GetUnitAxis(double axis[3]) const
 
 void RigidMotion::CheckRotation() const
 {
+  for (double angle : { this->AnglesDegrees[0], this->AnglesDegrees[1], this->AnglesDegrees[2],
+         this->AxisAngleDegrees })
+  {
+    if (!(std::abs(angle) <= MaximumAngleDegrees))
+    {
+      throw std::invalid_argument(
+        "rotation angles must be within [-720, 720] degrees (got " + std::to_string(angle) + ")");
+    }
+  }
   if (!this->HasAxisRotation())
   {
     return;
@@ -69,6 +79,28 @@ void RigidMotion::CheckRotation() const
   }
   double axis[3];
   this->GetUnitAxis(axis);
+}
+
+void RigidMotion::Check() const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!std::isfinite(this->Translation[c]) || !std::isfinite(this->Center[c]))
+    {
+      throw std::invalid_argument("the translation and the rotation centre must be finite");
+    }
+  }
+  this->CheckRotation();
+}
+
+bool RigidMotion::KeepsPlane() const
+{
+  if (this->HasAxisRotation() && (this->Axis[0] != 0.0 || this->Axis[1] != 0.0))
+  {
+    return false;
+  }
+  return this->AnglesDegrees[0] == 0.0 && this->AnglesDegrees[1] == 0.0 &&
+    this->Translation[2] == 0.0;
 }
 
 bool RigidMotion::IsIdentity() const

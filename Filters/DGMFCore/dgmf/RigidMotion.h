@@ -53,10 +53,23 @@ struct RigidMotion
   void GetUnitAxis(double axis[3]) const;
 
   /**
-   * Throws std::invalid_argument when the rotation is ill-defined: both Euler angles and an axis
-   * angle, or an axis angle with a zero or non-finite Axis.
+   * Throws std::invalid_argument when the rotation is ill-defined: an angle that is not finite or
+   * beyond +-MaximumAngleDegrees, both Euler angles and an axis angle, or an axis angle with a
+   * zero or non-finite Axis.
    */
   void CheckRotation() const;
+
+  /// CheckRotation, and a finite Translation and Center (std::invalid_argument otherwise).
+  void Check() const;
+
+  /**
+   * True when the motion keeps a 2D mesh (a plane z = constant) in its plane: no Euler angle
+   * about x or y, an axis (if any) along z, no translation along z.
+   */
+  bool KeepsPlane() const;
+
+  /// Largest rotation angle, in degrees, of either form (two full turns).
+  static constexpr double MaximumAngleDegrees = 720.0;
 
   /// The rotation matrix R(fraction * angles), row-major. Calls CheckRotation.
   void GetRotationMatrix(double fraction, double R[3][3]) const;

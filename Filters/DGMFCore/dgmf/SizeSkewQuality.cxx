@@ -515,6 +515,23 @@ void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
   }
 }
 
+QualitySummary MergeQualitySummaries(const QualitySummary& a, const QualitySummary& b)
+{
+  QualitySummary merged;
+  merged.Sum = a.Sum + b.Sum;
+  merged.Evaluated = a.Evaluated + b.Evaluated;
+  merged.Inverted = a.Inverted + b.Inverted;
+  merged.NotComputed = a.NotComputed + b.NotComputed;
+  if (merged.Evaluated > 0)
+  {
+    merged.Mean = merged.Sum / static_cast<double>(merged.Evaluated);
+    merged.Minimum = a.Evaluated == 0 ? b.Minimum
+      : b.Evaluated == 0              ? a.Minimum
+                                      : std::min(a.Minimum, b.Minimum);
+  }
+  return merged;
+}
+
 QualitySummary SummarizeQuality(
   const double* sizeSkew, const std::uint8_t* inverted, std::size_t count, const std::uint8_t* skip)
 {

@@ -77,6 +77,9 @@ struct QualitySummary
 QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
   std::size_t count, const std::uint8_t* skip = nullptr);
 
+/// The summary of two disjoint sets of cells (e.g. two blocks of a composite mesh).
+QualitySummary MergeQualitySummaries(const QualitySummary& a, const QualitySummary& b);
+
 } // namespace dgmf
 
 #endif

@@ -1,0 +1,97 @@
+/**
+ * @file DeformationProblem.h
+ * @brief What every deformation method reads: the mesh's nodes and their prescribed boundary
+ * motion, and the one check of it.
+ */
+#ifndef dgmf_DeformationProblem_h
+#define dgmf_DeformationProblem_h
+
+#include "dgmf/BoundaryMotion.h"
+#include "dgmf/CellMesh.h"
+#include "dgmf/NodeKind.h"
+#include "dgmf/RigidMotion.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dgmf
+{
+
+/**
+ * The nodes of a mesh and the motion of its boundary, in the caller's memory (3 coordinates per
+ * node for points and displacements). A method reads only what it needs (MethodNeeds).
+ */
+struct DeformationProblem
+{
+  int Dimension = 3;                     ///< 2 (a plane z = constant) or 3
+  std::size_t NumberOfNodes = 0;         ///< nodes of the mesh
+  const double* Points = nullptr;        ///< original positions
+  const NodeKind* Kinds = nullptr;       ///< interior, static or moving boundary
+  const double* Displacement = nullptr;  ///< shape deformation d (or total motion), or null
+  const std::int32_t* BodyIds = nullptr; ///< per node: 0, or the moving body 1, 2, ...; or null
+  std::int32_t NumberOfBodies = 0;       ///< the largest body id (0 without BodyIds)
+  /// The rigid motion of body k at Motions[k - 1]: one per body, and at least one (the moving
+  /// nodes without body ids are body 1). Ignored when ExtractRigidMotion.
+  std::vector<RigidMotion> Motions = std::vector<RigidMotion>(1);
+  /// The rigid motions are fitted to Displacement, then the total motion of the moving nodes.
+  bool ExtractRigidMotion = false;
+  const CellMesh* Cells = nullptr;         ///< the cells (MethodNeeds::Cells), or null
+  const double* BoundaryWeights = nullptr; ///< per node: boundary area or length (IDW), or null
+
+  /// True when each moving body is handled apart: body ids are given, or the motions extracted.
+  bool UsesBodies() const { return this->NumberOfBodies > 0 || this->ExtractRigidMotion; }
+};
+
+/**
+ * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
+ * std::invalid_argument, with a message for the user, for: a dimension other than 2 or 3, no node,
+ * missing points or kinds, a displacement that is not finite, or not in the plane of a 2D mesh,
+ * too few rigid motions for the bodies, and a rigid motion that is not finite, turns beyond
+ * +-720 degrees, or leaves the plane of a 2D mesh. With `checkPoints`, also non-finite point
+ * coordinates (the graph methods check them when the graph is built: DelaunayMapping).
+ */
+std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints);
+
+/**
+ * The total motion of the boundary nodes, as the interpolation methods (DGM, DGRBF, RBF, IDW)
+ * use it: each moving node's rigid motion (its body's) plus its displacement, or with extracted
+ * motions the displacement itself; zero on static nodes.
+ */
+BoundaryMotion GatherTotalBoundaryMotion(const DeformationProblem& problem);
+
+/**
+ * Node kinds from boundary-marker values of any numeric type (0 interior, 1 static, 2 moving).
+ * Throws std::invalid_argument naming the first other value and its node; the message continues
+ * a sentence that names the array ("The boundary-marker array 'X' has the value ...").
+ */
+template <typename Values>
+void MarkerToNodeKinds(const Values& values, NodeKind* kinds)
+{
+  std::size_t i = 0;
+  for (const auto value : values)
+  {
+    const double v = static_cast<double>(value);
+    if (v != 0.0 && v != 1.0 && v != 2.0)
+    {
+      ThrowBadMarkerValue(v, i);
+    }
+    kinds[i++] = static_cast<NodeKind>(static_cast<int>(v));
+  }
+}
+
+/**
+ * Body ids from the values of a body-id array (one per node), applied to the node kinds: a node
+ * with an id > 0 becomes a moving boundary node; a moving node with id 0 becomes static when
+ * `markerGiven` is false (its kind came from a non-zero displacement). Returns the largest id.
+ * Throws std::invalid_argument for an id that is negative, not a whole number or above 1e6, an id
+ * on an interior node, or (with a marker) a node marked moving with id 0; the message continues
+ * a sentence that names the array ("The body-id array 'X' has the value ...").
+ */
+std::int32_t ResolveBodyIds(const double* values, std::size_t numberOfNodes, bool markerGiven,
+  NodeKind* kinds, std::int32_t* bodyIds);
+
+} // namespace dgmf
+
+#endif

@@ -1,0 +1,56 @@
+/**
+ * @file ResultNames.h
+ * @brief The names of everything a deformation or a quality evaluation adds to its output: one
+ * list for the core's reports, the VTK filters, the command line and the tests.
+ * Documentation/properties.md describes each one.
+ */
+#ifndef dgmf_ResultNames_h
+#define dgmf_ResultNames_h
+
+namespace dgmf
+{
+namespace names
+{
+// Point arrays (DGMF).
+constexpr const char* R = "r"; ///< interpolated boundary value r (one body)
+constexpr const char* F = "f"; ///< damping factor f
+
+// Cell arrays (the quality metric).
+constexpr const char* SizeSkew = "SizeSkew"; ///< Knupp's size-skew relative to the input cell
+constexpr const char* Inverted = "Inverted"; ///< 1 for a cell the deformation inverted
+
+// Field data: the quality summary.
+constexpr const char* SizeSkewMean = "SizeSkewMean";
+constexpr const char* SizeSkewMinimum = "SizeSkewMinimum";
+constexpr const char* InvertedCellCount = "InvertedCellCount";
+constexpr const char* SizeSkewEvaluatedCells = "SizeSkewEvaluatedCells";
+
+// Field data: every method.
+constexpr const char* Method = "Method"; ///< the method's name (MethodTable.def)
+
+// Field data: the graph methods (DGMF, DGM, DGRBF).
+constexpr const char* OutsideNodeCount = "OutsideNodeCount";
+constexpr const char* GraphReused = "GraphReused";
+constexpr const char* InvertedGraphElementCount = "InvertedGraphElementCount"; ///< DGM
+
+// Field data: RBF and IDW.
+constexpr const char* RBFCentreCount = "RBFCentreCount";
+constexpr const char* RBFBoundaryError = "RBFBoundaryError";
+constexpr const char* IDWReferenceLength = "IDWReferenceLength";
+
+// Field data: DGMF's extracted rigid motions (one tuple per body).
+constexpr const char* FittedTranslation = "FittedTranslation";
+constexpr const char* FittedRotationCenter = "FittedRotationCenter";
+constexpr const char* FittedRotationAxis = "FittedRotationAxis";
+constexpr const char* FittedRotationAngle = "FittedRotationAngle";
+constexpr const char* FittedResidualRMS = "FittedResidualRMS";
+
+// Field data: DGMF's sub-steps and quality guard.
+constexpr const char* SubStepsUsed = "SubStepsUsed";
+constexpr const char* RejectedSubSteps = "RejectedSubSteps";
+constexpr const char* RepairedCellCount = "RepairedCellCount";
+constexpr const char* UnrepairedCellCount = "UnrepairedCellCount";
+} // namespace names
+} // namespace dgmf
+
+#endif

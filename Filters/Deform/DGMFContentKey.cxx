@@ -1,0 +1,73 @@
+#include "DGMFContentKey.h"
+
+#include "vtkDataArray.h"
+
+#include <cstring>
+
+namespace dgmf_vtk
+{
+
+std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
+{
+  const auto* p = static_cast<const unsigned char*>(data);
+  std::uint64_t lane[4] = { seed ^ (bytes * 0xff51afd7ed558ccdull), seed + 1, seed + 2, seed + 3 };
+  std::size_t k = 0;
+  for (; k + 32 <= bytes; k += 32)
+  {
+    for (int l = 0; l < 4; ++l)
+    {
+      std::uint64_t word;
+      std::memcpy(&word, p + k + 8 * l, 8);
+      lane[l] = (lane[l] ^ word) * 0x100000001b3ull;
+      lane[l] ^= lane[l] >> 32;
+    }
+  }
+  std::uint64_t h = lane[0];
+  for (int l = 1; l < 4; ++l)
+  {
+    h = (h ^ lane[l]) * 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+  }
+  for (; k < bytes; ++k)
+  {
+    h = (h ^ p[k]) * 0x100000001b3ull;
+  }
+  return h;
+}
+
+std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed)
+{
+  return HashBytes(array->GetVoidPointer(0),
+    static_cast<std::size_t>(array->GetNumberOfValues()) *
+      static_cast<std::size_t>(array->GetDataTypeSize()),
+    seed + static_cast<std::uint64_t>(array->GetDataType()));
+}
+
+bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>& hash)
+{
+  if (!this->Valid)
+  {
+    return false;
+  }
+  if (this->Object == object && this->MTime == object->GetMTime())
+  {
+    return true;
+  }
+  if (hash() != this->Hash)
+  {
+    return false;
+  }
+  this->Object = object;
+  this->MTime = object->GetMTime();
+  return true;
+}
+
+void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& hash)
+{
+  this->Object = object;
+  this->MTime = object->GetMTime();
+  this->Hash = hash();
+  this->Valid = true;
+}
+
+} // namespace dgmf_vtk

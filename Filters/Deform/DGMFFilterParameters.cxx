@@ -1,0 +1,85 @@
+#include "DGMFFilterParameters.h"
+
+#include "vtkDGMFDeformFilter.h"
+
+#include <algorithm>
+#include <cmath>
+
+// The filter's enumerations are the core's values.
+static_assert(vtkDGMFDeformFilter::DGMF == static_cast<int>(dgmf::Method::DGMF) &&
+    vtkDGMFDeformFilter::DGM == static_cast<int>(dgmf::Method::DGM) &&
+    vtkDGMFDeformFilter::DGRBF == static_cast<int>(dgmf::Method::DGRBF) &&
+    vtkDGMFDeformFilter::RBF == static_cast<int>(dgmf::Method::RBF) &&
+    vtkDGMFDeformFilter::IDW == static_cast<int>(dgmf::Method::IDW),
+  "Methods must match Filters/DGMFCore/dgmf/MethodTable.def");
+static_assert(vtkDGMFDeformFilter::U1 == static_cast<int>(dgmf::DampingFunction::U1) &&
+    vtkDGMFDeformFilter::U7 == static_cast<int>(dgmf::DampingFunction::U7) &&
+    vtkDGMFDeformFilter::DGMF1 == static_cast<int>(dgmf::DeformationMode::DGMF1) &&
+    vtkDGMFDeformFilter::DGMF2 == static_cast<int>(dgmf::DeformationMode::DGMF2),
+  "DampingFunctions and DeformationModes must match the core's");
+
+namespace dgmf_vtk
+{
+
+dgmf::Method MethodOf(vtkDGMFDeformFilter* filter)
+{
+  return static_cast<dgmf::Method>(filter->GetMethod());
+}
+
+dgmf::MethodParameters MethodParametersOf(vtkDGMFDeformFilter* filter)
+{
+  dgmf::MethodParameters p;
+  p.Damping = static_cast<dgmf::DampingFunction>(filter->GetDampingFunction());
+  p.StaticR0 = filter->GetStaticBoundaryR0();
+  p.Mode = static_cast<dgmf::DeformationMode>(filter->GetDeformationMode());
+  p.SubSteps = filter->GetSubSteps();
+  p.RepairThreshold = filter->GetRepairThreshold();
+  p.RepairLayers = filter->GetRepairLayers();
+  p.RepairPasses = filter->GetRepairPasses();
+  p.SupportRadius = filter->GetSupportRadius();
+  p.RBFGreedy = filter->GetRBFGreedy();
+  p.RBFGreedyTolerance = filter->GetRBFGreedyTolerance();
+  p.RBFGreedyMaximumPoints = static_cast<std::size_t>(filter->GetRBFGreedyMaximumPoints());
+  p.IDWAlpha = filter->GetIDWAlpha();
+  p.IDWReferenceLength = filter->GetIDWReferenceLength();
+  return p;
+}
+
+bool BodyMotionTable::Set(
+  double bodyId, const double translation[3], const double center[3], const double anglesDegrees[3])
+{
+  if (!(bodyId >= 1.0) || bodyId != std::floor(bodyId) || bodyId > 1e6)
+  {
+    return false;
+  }
+  dgmf::RigidMotion& motion = this->Motions[static_cast<int>(bodyId)];
+  std::copy_n(translation, 3, motion.Translation);
+  std::copy_n(center, 3, motion.Center);
+  std::copy_n(anglesDegrees, 3, motion.AnglesDegrees);
+  return true;
+}
+
+bool BodyMotionTable::Clear()
+{
+  const bool any = !this->Motions.empty();
+  this->Motions.clear();
+  return any;
+}
+
+std::vector<dgmf::RigidMotion> BodyMotionTable::For(
+  vtkDGMFDeformFilter* filter, std::int32_t bodies) const
+{
+  dgmf::RigidMotion properties;
+  filter->GetTranslation(properties.Translation);
+  filter->GetRotationCenter(properties.Center);
+  filter->GetRotationAngles(properties.AnglesDegrees);
+  std::vector<dgmf::RigidMotion> motions;
+  for (int k = 1; k <= std::max<std::int32_t>(bodies, 1); ++k)
+  {
+    const auto found = this->Motions.find(k);
+    motions.push_back(found != this->Motions.end() ? found->second : properties);
+  }
+  return motions;
+}
+
+} // namespace dgmf_vtk

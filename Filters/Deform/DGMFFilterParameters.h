@@ -1,0 +1,50 @@
+/**
+ * @file DGMFFilterParameters.h
+ * @brief vtkDGMFDeformFilter's properties as the core's terms: the method and its parameters, and
+ * the rigid motion of each body (private to the DGMF::Filters module).
+ */
+#ifndef DGMFFilterParameters_h
+#define DGMFFilterParameters_h
+
+#include "dgmf/DeformationMethod.h"
+#include "dgmf/RigidMotion.h"
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+class vtkDGMFDeformFilter;
+
+namespace dgmf_vtk
+{
+
+/// The filter's method (its Method property).
+dgmf::Method MethodOf(vtkDGMFDeformFilter* filter);
+
+/// The filter's properties as the parameters of every method.
+dgmf::MethodParameters MethodParametersOf(vtkDGMFDeformFilter* filter);
+
+/// The rigid motions given per body (vtkDGMFDeformFilter::SetBodyMotion).
+class BodyMotionTable
+{
+public:
+  /// Sets body `bodyId`'s motion; false (nothing set) when the id is not 1, 2, ... up to 1e6.
+  bool Set(double bodyId, const double translation[3], const double center[3],
+    const double anglesDegrees[3]);
+  /// Forgets every motion; false when there was none.
+  bool Clear();
+  /// Number of bodies with a motion.
+  std::size_t Size() const { return this->Motions.size(); }
+  /**
+   * The rigid motion of bodies 1..max(bodies, 1): the one set for the body, else the filter's
+   * motion properties (Translation, RotationCenter, RotationAngles).
+   */
+  std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, std::int32_t bodies) const;
+
+private:
+  std::map<int, dgmf::RigidMotion> Motions;
+};
+
+} // namespace dgmf_vtk
+
+#endif

@@ -1,0 +1,160 @@
+#include "DGMFMeshConversion.h"
+
+#include "dgmf/HintStride.h"
+
+#include "vtkCellType.h"
+#include "vtkCellTypes.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace dgmf_vtk
+{
+
+const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
+{
+  auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData());
+  if (doubles && doubles->GetNumberOfComponents() == 3)
+  {
+    return doubles->GetPointer(0);
+  }
+  const vtkIdType n = points->GetNumberOfPoints();
+  copy.resize(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, copy.data() + 3 * i);
+  }
+  return copy.data();
+}
+
+bool CellShapeOf(int vtkCellType, dgmf::CellShape& shape, const int*& order)
+{
+  static const int identity[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  static const int pixel[4] = { 0, 1, 3, 2 };
+  static const int voxel[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  order = identity;
+  switch (vtkCellType)
+  {
+    case VTK_TRIANGLE:
+      shape = dgmf::CellShape::Triangle;
+      return true;
+    case VTK_QUAD:
+      shape = dgmf::CellShape::Quad;
+      return true;
+    case VTK_PIXEL:
+      shape = dgmf::CellShape::Quad;
+      order = pixel;
+      return true;
+    case VTK_TETRA:
+      shape = dgmf::CellShape::Tetra;
+      return true;
+    case VTK_HEXAHEDRON:
+      shape = dgmf::CellShape::Hexahedron;
+      return true;
+    case VTK_VOXEL:
+      shape = dgmf::CellShape::Hexahedron;
+      order = voxel;
+      return true;
+    case VTK_WEDGE:
+      shape = dgmf::CellShape::Wedge;
+      return true;
+    case VTK_PYRAMID:
+      shape = dgmf::CellShape::Pyramid;
+      return true;
+    default:
+      return false;
+  }
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(points))
+  {
+    return grid;
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points->GetPoints());
+  grid->Allocate(points->GetNumberOfCells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < points->GetNumberOfCells(); ++c)
+  {
+    points->GetCellPoints(c, ids);
+    grid->InsertNextCell(points->GetCellType(c), ids);
+  }
+  return grid;
+}
+
+dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)
+{
+  dgmf::CellMesh cells;
+  cells.NumberOfPoints = static_cast<std::size_t>(mesh->GetNumberOfPoints());
+  cells.Offsets.push_back(0);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    dgmf::CellShape shape = dgmf::CellShape::Triangle;
+    const int* order = nullptr;
+    const bool covered = CellShapeOf(mesh->GetCellType(c), shape, order);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      cells.Connectivity.push_back(ids->GetId(covered && k < 8 ? order[k] : k));
+    }
+    cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
+    cells.Shapes.push_back(shape);
+    cells.Covered.push_back(covered ? 1 : 0);
+  }
+  return cells;
+}
+
+int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
+{
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const int type = mesh->GetCellType(c);
+    if (type != VTK_EMPTY_CELL && vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 3)
+    {
+      return 3;
+    }
+  }
+  // Non-finite coordinates are left to the core's check (which names them).
+  const double* z0 = nullptr;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double* z = xyz + 3 * i + 2;
+    if (std::isfinite(*z))
+    {
+      z0 = z0 ? z0 : z;
+      if (*z != *z0)
+      {
+        return -1;
+      }
+    }
+  }
+  return 2;
+}
+
+std::size_t HintStrideOf(vtkUnstructuredGrid* mesh)
+{
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  const vtkIdType samples = std::min<vtkIdType>(cells, 4096);
+  std::vector<std::vector<std::int64_t>> sampled;
+  sampled.reserve(static_cast<std::size_t>(samples));
+  for (vtkIdType s = 0; s < samples; ++s)
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    mesh->GetCellPoints(s * cells / samples, count, ids);
+    sampled.emplace_back(ids, ids + count);
+  }
+  return dgmf::FindHintStride(sampled);
+}
+
+} // namespace dgmf_vtk

@@ -1,0 +1,51 @@
+/**
+ * @file DGMFMeshConversion.h
+ * @brief VTK meshes as the core reads them: points as doubles, cell types as shapes, cells as a
+ * dgmf::CellMesh, the mesh's dimension and hint stride (private to the DGMF::Filters module).
+ */
+#ifndef DGMFMeshConversion_h
+#define DGMFMeshConversion_h
+
+#include "dgmf/CellMesh.h"
+#include "dgmf/SizeSkewQuality.h"
+
+#include "vtkSmartPointer.h"
+
+#include <cstddef>
+#include <vector>
+
+class vtkPoints;
+class vtkPointSet;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/// The points as a contiguous array of 3 doubles per point: their own memory when they already
+/// are (no copy), otherwise a copy in `copy`.
+const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy);
+
+/**
+ * The size-skew shape of a VTK cell type, and the order in which to read its point ids for that
+ * shape (pixels and voxels are quads and hexahedra with their corners reordered). False for the
+ * types the metric does not cover (polygons, polyhedra, quadratic cells, ...).
+ */
+bool CellShapeOf(int vtkCellType, dgmf::CellShape& shape, const int*& order);
+
+/// `points` with its cells as an unstructured grid: itself when it is one, else a new grid that
+/// shares its points (e.g. the polydata of a boundary patch).
+vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points);
+
+/// The grid's cells in the corner order of the size-skew metric (the quality guard's input).
+dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh);
+
+/// 2 when the mesh is planar (no 3D cell, all z equal), 3 otherwise; -1 for 2D cells off a z plane.
+int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n);
+
+/// The mesh's hint stride for the node location (dgmf::FindHintStride), from up to 4,096 cells
+/// spread over the mesh.
+std::size_t HintStrideOf(vtkUnstructuredGrid* mesh);
+
+} // namespace dgmf_vtk
+
+#endif

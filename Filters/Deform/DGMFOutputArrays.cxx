@@ -1,0 +1,132 @@
+#include "DGMFOutputArrays.h"
+
+#include "DGMFCellQuality.h"
+
+#include "dgmf/ResultNames.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace dgmf_vtk
+{
+
+void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->InsertNextValue(static_cast<vtkIdType>(value));
+  fieldData->AddArray(array);
+}
+
+void AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
+}
+
+void AddFieldString(vtkFieldData* fieldData, const char* name, const char* value)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
+}
+
+double GetFieldValue(vtkFieldData* fieldData, const char* name)
+{
+  vtkDataArray* array = fieldData->GetArray(name);
+  return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : 0.0;
+}
+
+void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report)
+{
+  for (const dgmf::ReportedValue& value : report.Values)
+  {
+    if (value.IsCount && value.Components == 1 && value.Values.size() == 1)
+    {
+      AddFieldCount(fieldData, value.Name.c_str(), static_cast<std::size_t>(value.Values[0]));
+      continue;
+    }
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(value.Name.c_str());
+    array->SetNumberOfComponents(value.Components);
+    for (std::size_t t = 0; t + value.Components <= value.Values.size(); t += value.Components)
+    {
+      array->InsertNextTuple(value.Values.data() + t);
+    }
+    fieldData->AddArray(array);
+  }
+}
+
+void AddMethodResults(vtkUnstructuredGrid* output, const dgmf::MethodNeeds& needs,
+  FieldArrays& fields, const dgmf::DeformationReport& report, const char* methodName,
+  bool graphReused, std::size_t localNodes)
+{
+  vtkPointData* pointData = output->GetPointData();
+  vtkFieldData* fieldData = output->GetFieldData();
+  const auto local = static_cast<vtkIdType>(localNodes);
+  for (const char* name : { dgmf::names::R, dgmf::names::F })
+  {
+    vtkDoubleArray* array = fields.GetArray(name);
+    if ((std::strcmp(name, dgmf::names::R) == 0 ? needs.R : needs.F) && array)
+    {
+      if (array->GetNumberOfTuples() > local)
+      {
+        vtkNew<vtkDoubleArray> kept; // this piece's nodes only
+        kept->SetName(name);
+        kept->SetNumberOfTuples(local);
+        std::copy_n(array->GetPointer(0), localNodes, kept->GetPointer(0));
+        pointData->AddArray(kept);
+      }
+      else
+      {
+        pointData->AddArray(array);
+      }
+    }
+  }
+  AddReport(fieldData, report);
+  if (needs.Graph)
+  {
+    AddFieldCount(fieldData, dgmf::names::GraphReused, graphReused ? 1 : 0);
+  }
+  AddFieldString(fieldData, dgmf::names::Method, methodName);
+}
+
+void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summary)
+{
+  AddFieldValue(fieldData, dgmf::names::SizeSkewMean, summary.Mean);
+  AddFieldValue(fieldData, dgmf::names::SizeSkewMinimum, summary.Minimum);
+  AddFieldCount(fieldData, dgmf::names::InvertedCellCount, summary.Inverted);
+  AddFieldCount(fieldData, dgmf::names::SizeSkewEvaluatedCells, summary.Evaluated);
+}
+
+dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
+  const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
+  const dgmf::ParallelFor& parallelFor)
+{
+  vtkNew<vtkDoubleArray> sizeSkew;
+  sizeSkew->SetName(dgmf::names::SizeSkew);
+  vtkNew<vtkUnsignedCharArray> inverted;
+  inverted->SetName(dgmf::names::Inverted);
+  const dgmf::QualitySummary summary =
+    ComputeCellQuality(mesh, originalPoints, deformedPoints, sizeSkew, inverted, parallelFor);
+  cellData->AddArray(sizeSkew);
+  cellData->AddArray(inverted);
+  SetQualitySummary(fieldData, summary);
+  return summary;
+}
+
+} // namespace dgmf_vtk

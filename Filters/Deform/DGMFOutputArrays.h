@@ -1,0 +1,66 @@
+/**
+ * @file DGMFOutputArrays.h
+ * @brief The arrays and field data the filters add to their output, under the names of
+ * dgmf/ResultNames.h: one place for vtkDGMFDeformFilter and vtkSizeSkewQualityFilter (private to
+ * the DGMF::Filters module).
+ */
+#ifndef DGMFOutputArrays_h
+#define DGMFOutputArrays_h
+
+#include "DGMFOutputBuffers.h"
+
+#include "dgmf/DeformationMethod.h"
+#include "dgmf/ParallelFor.h"
+#include "dgmf/SizeSkewQuality.h"
+
+#include <cstddef>
+
+class vtkDataSetAttributes;
+class vtkFieldData;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/// Adds a one-tuple vtkIdTypeArray `name` with `value` to `fieldData` (replacing one of that name).
+void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value);
+
+/// Adds a one-tuple vtkDoubleArray `name` with `value` to `fieldData`.
+void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);
+
+/// Adds a one-value vtkStringArray `name` with `value` to `fieldData`.
+void AddFieldString(vtkFieldData* fieldData, const char* name, const char* value);
+
+/// The value of the first tuple of the field-data array `name` (0 when it is missing or empty).
+double GetFieldValue(vtkFieldData* fieldData, const char* name);
+
+/// Adds every value of a method's report to `fieldData` (counts as vtkIdTypeArray, values as
+/// vtkDoubleArray, one tuple per body for per-body values).
+void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report);
+
+/**
+ * A method's results on `output`: the point arrays r and f it wrote (from `fields`, as `needs`
+ * says), the values of `report`, GraphReused (graph methods) and the Method name; then the first
+ * `localNodes` of them kept (a distributed run also deformed the other pieces' boundary nodes).
+ */
+void AddMethodResults(vtkUnstructuredGrid* output, const dgmf::MethodNeeds& needs,
+  dgmf_vtk::FieldArrays& fields, const dgmf::DeformationReport& report, const char* methodName,
+  bool graphReused, std::size_t localNodes);
+
+/**
+ * The size-skew quality of `mesh`'s cells between `originalPoints` and `deformedPoints` (3 doubles
+ * per point): the cell arrays SizeSkew and Inverted into `cellData`, and the summary
+ * (SizeSkewMean, SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) into `fieldData`.
+ * Returns the summary.
+ */
+dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
+  const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
+  const dgmf::ParallelFor& parallelFor);
+
+/// Writes `summary` into `fieldData` (SizeSkewMean, SizeSkewMinimum, InvertedCellCount,
+/// SizeSkewEvaluatedCells), replacing the arrays of those names.
+void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summary);
+
+} // namespace dgmf_vtk
+
+#endif
