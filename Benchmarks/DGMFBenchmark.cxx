@@ -65,19 +65,6 @@ double PeakResidentMegabytes()
   return usage.ru_maxrss / 1024.0;
 }
 
-int MethodFromName(const std::string& name)
-{
-  const char* const names[] = { "dgmf", "dgm", "dgrbf", "rbf", "idw" };
-  for (int m = 0; m < 5; ++m)
-  {
-    if (name == names[m])
-    {
-      return m;
-    }
-  }
-  return -1;
-}
-
 struct Result
 {
   double Graph = 0, Location = 0, Mapping = 0, First = 0, Repeated = 0, Quality = 0;
@@ -130,7 +117,7 @@ int main(int argc, char* argv[])
               << " hexahedra (generated in " << Seconds(made) << " s)\n";
     for (const std::string& methodName : methods)
     {
-      const int method = MethodFromName(methodName);
+      const int method = vtkDGMFDeformFilter::GetMethodFromName(methodName.c_str());
       if (method < 0)
       {
         std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";

@@ -29,24 +29,34 @@
 
 namespace
 {
-const char* const Usage =
-  "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
-  "  INPUT                   .vtu or .vtk unstructured grid\n"
-  "  --rotate AX AY AZ       rotation angles in degrees about x, y, z (2D: only AZ)\n"
-  "  --center X Y Z          rotation centre (default 0 0 0)\n"
-  "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
-  "  --marker NAME           boundary-marker point array (default BoundaryMarker if present)\n"
-  "  --displacement NAME     displacement point array (default Displacement if present)\n"
-  "  --method NAME           dgmf (default), dgm, dgrbf, rbf or idw\n"
-  "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
-  "  --damping 1..7          damping function u1..u7 (default 1)\n"
-  "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
-  "  --sub-steps N           large motions: N sub-steps, 0 = automatic (default 1: one step)\n"
-  "  --repair T              quality guard: repair cells with SizeSkew below T (default 0: off)\n"
-  "  --repair-layers N       layers around bad cells whose interior nodes may move (default 2)\n"
-  "  --repair-passes N       most repair passes per step (default 20)\n"
-  "  --threads N             number of threads, 0 = all (default 0)\n"
-  "  --no-quality            skip the SizeSkew quality metric\n";
+std::string Usage()
+{
+  std::string usage =
+    "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
+    "  INPUT                   .vtu or .vtk unstructured grid\n"
+    "  --rotate AX AY AZ       rotation angles in degrees about x, y, z (2D: AZ)\n"
+    "  --center X Y Z          rotation centre (default 0 0 0)\n"
+    "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
+    "  --marker NAME           boundary-marker point array (default "
+    "BoundaryMarker if present)\n"
+    "  --displacement NAME     displacement point array (default Displacement "
+    "if present)\n";
+  usage +=
+    "  --method NAME           " + vtkDGMFDeformFilter::GetMethodKeys(", ") + " (default dgmf)\n";
+  usage +=
+    "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
+    "  --damping 1..7          damping function u1..u7 (default 1)\n"
+    "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
+    "  --sub-steps N           large motions: N sub-steps, 0 = automatic (default 1)\n"
+    "  --repair T              quality guard: repair cells with SizeSkew below T (default 0: "
+    "off)\n"
+    "  --repair-layers N       layers around bad cells whose interior nodes may move "
+    "(default 2)\n"
+    "  --repair-passes N       most repair passes per step (default 20)\n"
+    "  --threads N             number of threads, 0 = all (default 0)\n"
+    "  --no-quality            skip the SizeSkew quality metric\n";
+  return usage;
+}
 
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
@@ -95,20 +105,6 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(const std::string& path)
   return mesh;
 }
 
-/// The filter's method for a command-line name, or -1.
-int MethodFromName(const std::string& name)
-{
-  const char* const names[] = { "dgmf", "dgm", "dgrbf", "rbf", "idw" };
-  for (int m = 0; m < 5; ++m)
-  {
-    if (name == names[m])
-    {
-      return m;
-    }
-  }
-  return -1;
-}
-
 double FieldValue(vtkUnstructuredGrid* mesh, const char* name)
 {
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
@@ -126,7 +122,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << Usage;
+    std::cerr << Usage();
     return 2;
   }
   const std::string inputPath = argv[1];
@@ -152,9 +148,10 @@ int main(int argc, char* argv[])
     {
       filter->SetTranslation(v);
     }
-    else if (option == "--method" && i + 1 < argc && MethodFromName(argv[i + 1]) >= 0)
+    else if (option == "--method" && i + 1 < argc &&
+      vtkDGMFDeformFilter::GetMethodFromName(argv[i + 1]) >= 0)
     {
-      filter->SetMethod(MethodFromName(argv[++i]));
+      filter->SetMethod(vtkDGMFDeformFilter::GetMethodFromName(argv[++i]));
     }
     else if (option == "--mode" && ReadDoubles(argc, argv, i, 1, v) && (v[0] == 1 || v[0] == 2))
     {
@@ -204,7 +201,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::cerr << "dgmf-deform: bad option or value: " << option << "\n" << Usage;
+      std::cerr << "dgmf-deform: bad option or value: " << option << "\n" << Usage();
       return 2;
     }
   }

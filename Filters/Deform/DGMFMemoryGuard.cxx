@@ -3,6 +3,7 @@
 #include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace dgmf_vtk
@@ -17,16 +18,16 @@ double AvailableBytes()
 {
   vtksys::SystemInformation system;
   system.RunMemoryCheck();
-  // Free memory plus buffers and page cache (the system gives those back), in MiB.
-  double available = static_cast<double>(system.GetAvailablePhysicalMemory()) * 1048576.0;
+  // Free memory plus buffers and page cache (the system gives those back), in MiB; 0 if unknown.
+  const double physical = static_cast<double>(system.GetAvailablePhysicalMemory()) * 1048576.0;
+  double available = physical > 0.0 ? physical : std::numeric_limits<double>::infinity();
   // The process's share, in KiB: its limit (rlimit, or the variables) less what it uses.
   const long long processLimit =
     system.GetProcMemoryAvailable("DGMF_HOST_MEMORY_KIB", "DGMF_PROCESS_MEMORY_KIB");
-  const long long used = system.GetProcMemoryUsed();
   if (processLimit > 0)
   {
-    available = std::min(
-      available, static_cast<double>(std::max(0LL, processLimit - std::max(0LL, used))) * 1024.0);
+    const long long left = std::max(0LL, processLimit - std::max(0LL, system.GetProcMemoryUsed()));
+    available = std::min(available, static_cast<double>(left) * 1024.0);
   }
   return available;
 }
@@ -35,9 +36,9 @@ std::string CheckDeformationMemory(double nodes, double cells)
 {
   const double needed = EstimateDeformationBytes(nodes, cells);
   const double available = AvailableBytes();
-  if (!(available > 0.0) || needed <= available)
+  if (needed <= available)
   {
-    return std::string(); // an unreadable figure does not stop a deformation
+    return std::string();
   }
   std::ostringstream message;
   message.precision(3);

@@ -25,7 +25,7 @@ double EstimateDeformationBytes(double nodes, double cells);
  * (free, buffers and page cache: vtksys::SystemInformation) and the process's limit (`ulimit -v`,
  * `ulimit -d`) less what it uses. The environment variables DGMF_HOST_MEMORY_KIB and
  * DGMF_PROCESS_MEMORY_KIB, when set, lower the system's and the process's limits (in KiB), as
- * vtksys::SystemInformation reads them.
+ * vtksys::SystemInformation reads them. Infinite when the system tells nothing.
  */
 double AvailableBytes();
 

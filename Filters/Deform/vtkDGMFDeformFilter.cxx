@@ -61,6 +61,35 @@ vtkDGMFDeformFilter::~vtkDGMFDeformFilter()
   this->SetController(nullptr);
 }
 
+const char* vtkDGMFDeformFilter::GetMethodName(int method)
+{
+  for (const dgmf::MethodInfo& info : dgmf::GetMethods())
+  {
+    if (static_cast<int>(info.Id) == method)
+    {
+      return info.Name;
+    }
+  }
+  return nullptr;
+}
+
+const char* vtkDGMFDeformFilter::GetMethodKey(int method)
+{
+  const char* name = GetMethodName(method);
+  return name ? dgmf::FindMethod(name)->Key : nullptr;
+}
+
+int vtkDGMFDeformFilter::GetMethodFromName(const char* name)
+{
+  const dgmf::MethodInfo* info = name ? dgmf::FindMethod(name) : nullptr;
+  return info ? static_cast<int>(info->Id) : -1;
+}
+
+std::string vtkDGMFDeformFilter::GetMethodKeys(const char* separator)
+{
+  return dgmf::ListMethodKeys(separator ? separator : ", ");
+}
+
 vtkUnstructuredGrid* vtkDGMFDeformFilter::GetOutput()
 {
   return this->GetOutput(0);
@@ -372,8 +401,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
 void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Method: " << dgmf::GetMethodInfo(static_cast<dgmf::Method>(this->Method)).Name
-     << "\n";
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
   os << indent << "DampingFunction: U" << this->DampingFunction << "\n";
   os << indent << "StaticBoundaryR0: " << this->StaticBoundaryR0 << "\n";
   const auto vector = [&os, indent](const char* name, const double* v)

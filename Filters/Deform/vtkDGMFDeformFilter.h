@@ -80,6 +80,7 @@ class vtkUnstructuredGrid;
 
 #include <cstddef> // for std::size_t
 #include <memory>  // for std::unique_ptr
+#include <string>  // for std::string
 
 class DGMFFILTERS_EXPORT vtkDGMFDeformFilter : public vtkPassInputTypeAlgorithm
 {
@@ -126,6 +127,19 @@ public:
     RBF = 3,
     IDW = 4
   };
+
+  ///@{
+  /**
+   * The method table (Filters/DGMFCore/dgmf/MethodTable.def), for programs that name methods:
+   * the name of a method ("DGMF"; null for an unknown value), its command-line key ("dgmf"), the
+   * method of a name or key in any case (-1 if none), and the keys of all methods separated by
+   * `separator`.
+   */
+  static const char* GetMethodName(int method);
+  static const char* GetMethodKey(int method);
+  static int GetMethodFromName(const char* name);
+  static std::string GetMethodKeys(const char* separator);
+  ///@}
 
   ///@{
   /**

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -353,4 +354,25 @@ TEST(DataSafety, PropertyChangesInAnyOrderGiveTheFreshResult)
     for (vtkIdType k = 0; k < a->GetNumberOfValues(); ++k)
       ASSERT_EQ(a->GetComponent(k / 3, k % 3), b->GetComponent(k / 3, k % 3)) << "step " << step;
   }
+}
+
+TEST(BadInput, ADeformationThatCannotFitInMemoryIsRefusedBeforeItStarts)
+{
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+#ifdef _WIN32
+  _putenv_s("DGMF_PROCESS_MEMORY_KIB", "1");
+#else
+  setenv("DGMF_PROCESS_MEMORY_KIB", "1", 1); // a process limit of 1 KiB
+#endif
+  FilterRun refused;
+  vtkUnstructuredGrid* out = refused.Execute(mesh);
+#ifdef _WIN32
+  _putenv_s("DGMF_PROCESS_MEMORY_KIB", "");
+#else
+  unsetenv("DGMF_PROCESS_MEMORY_KIB");
+#endif
+  EXPECT_EQ(out->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(FilterRun::Has(refused.Errors, "Deforming 822 points needs about"));
+  FilterRun allowed;
+  EXPECT_EQ(allowed.Execute(mesh)->GetNumberOfPoints(), 822);
 }

@@ -1,6 +1,7 @@
 // Composite input deformed as one mesh, and the cache across inputs that are new objects with the
 // same mesh (a temporal reader reads the mesh again at each time step).
 #include "vtkDGMFDeformFilter.h"
+#include "vtkSizeSkewQualityFilter.h"
 
 #include "ShippedMesh.h"
 #include "vtkCellArray.h"
@@ -193,4 +194,54 @@ TEST(TimeSeries, ANewInputObjectWithTheSameMeshReusesTheGraph)
       ASSERT_EQ(filter->GetOutput()->GetPoint(i)[1], fresh->GetOutput()->GetPoint(i)[1]);
     }
   }
+}
+
+TEST(Composite, QualityFilterMeasuresTheBlocksDGMFDeformReturns)
+{
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, Part(mesh, false));
+  blocks->SetBlock(1, Part(mesh, true));
+  vtkNew<vtkDGMFDeformFilter> deform;
+  deform->SetInputData(blocks);
+  deform->SetBoundaryMarkerArrayName("BoundaryMarker");
+  deform->SetRotationAngles(0, 0, 75);
+  deform->Update();
+  auto* deformed = vtkMultiBlockDataSet::SafeDownCast(deform->GetOutputDataObject(0));
+  ASSERT_NE(deformed, nullptr);
+  // The deformed blocks against the input blocks: the same values, block by block, and the same
+  // summary as the deformation's own.
+  vtkNew<vtkSizeSkewQualityFilter> quality;
+  quality->SetInputData(deformed);
+  quality->SetReferenceData(blocks);
+  quality->Update();
+  auto* measured = vtkMultiBlockDataSet::SafeDownCast(quality->GetOutputDataObject(0));
+  ASSERT_NE(measured, nullptr);
+  ASSERT_EQ(measured->GetNumberOfBlocks(), 2u);
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    vtkDataArray* ours =
+      vtkUnstructuredGrid::SafeDownCast(measured->GetBlock(b))->GetCellData()->GetArray("SizeSkew");
+    vtkDataArray* deforms =
+      vtkUnstructuredGrid::SafeDownCast(deformed->GetBlock(b))->GetCellData()->GetArray("SizeSkew");
+    ASSERT_TRUE(ours && deforms);
+    ASSERT_EQ(ours->GetNumberOfTuples(), deforms->GetNumberOfTuples());
+    for (vtkIdType c = 0; c < ours->GetNumberOfTuples(); ++c)
+    {
+      ASSERT_EQ(ours->GetTuple1(c), deforms->GetTuple1(c)) << "block " << b << " cell " << c;
+    }
+  }
+  const auto summary = [](vtkMultiBlockDataSet* data, const char* name)
+  { return data->GetFieldData()->GetArray(name)->GetTuple1(0); };
+  // The mean is summed block by block here, over the merged mesh there: equal up to round-off.
+  EXPECT_NEAR(summary(measured, "SizeSkewMean"), summary(deformed, "SizeSkewMean"), 1e-14);
+  EXPECT_EQ(summary(measured, "SizeSkewMinimum"), summary(deformed, "SizeSkewMinimum"));
+  EXPECT_EQ(summary(measured, "InvertedCellCount"), summary(deformed, "InvertedCellCount"));
+  // A reference of another kind: a clear error.
+  vtkNew<vtkSizeSkewQualityFilter> mismatch;
+  mismatch->SetInputData(deformed);
+  mismatch->SetReferenceData(mesh);
+  mismatch->Update();
+  EXPECT_EQ(
+    vtkMultiBlockDataSet::SafeDownCast(mismatch->GetOutputDataObject(0))->GetNumberOfBlocks(), 0u);
 }

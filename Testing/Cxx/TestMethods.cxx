@@ -270,3 +270,29 @@ TEST(Methods, QualityFilterMeasuresAnyPairOfMeshes)
   mismatch->Update();
   EXPECT_EQ(mismatch->GetOutput()->GetNumberOfPoints(), 0);
 }
+
+TEST(Methods, TheMethodTableNamesEveryMethodTheFilterRuns)
+{
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+  int count = 0;
+  for (int method = 0; vtkDGMFDeformFilter::GetMethodName(method); ++method, ++count)
+  {
+    const std::string key = vtkDGMFDeformFilter::GetMethodKey(method);
+    ASSERT_EQ(vtkDGMFDeformFilter::GetMethodFromName(key.c_str()), method) << key;
+    ASSERT_EQ(
+      vtkDGMFDeformFilter::GetMethodFromName(vtkDGMFDeformFilter::GetMethodName(method)), method);
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(mesh);
+    filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+    filter->SetMethod(vtkDGMFDeformFilter::GetMethodFromName(key.c_str()));
+    filter->SetRotationAngles(0, 0, 10);
+    filter->Update();
+    auto* name =
+      vtkStringArray::SafeDownCast(filter->GetOutput()->GetFieldData()->GetAbstractArray("Method"));
+    ASSERT_TRUE(name) << key;
+    EXPECT_EQ(name->GetValue(0), vtkDGMFDeformFilter::GetMethodName(method));
+  }
+  EXPECT_EQ(count, 5);
+  EXPECT_EQ(vtkDGMFDeformFilter::GetMethodFromName("NoSuchMethod"), -1);
+  EXPECT_EQ(vtkDGMFDeformFilter::GetMethodKeys(" | "), "dgmf | dgm | dgrbf | rbf | idw");
+}

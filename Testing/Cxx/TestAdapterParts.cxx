@@ -1,0 +1,314 @@
+// The VTK adapter's parts, each on its own (Documentation/architecture.md): the content key, the
+// output buffers, the memory guard, the mesh conversions, the output arrays, the composite merge
+// and the input gathering. Built from the module's sources (they are private to it).
+#include "DGMFCompositeMesh.h"
+#include "DGMFContentKey.h"
+#include "DGMFInputNodes.h"
+#include "DGMFMemoryGuard.h"
+#include "DGMFMeshConversion.h"
+#include "DGMFOutputArrays.h"
+#include "DGMFOutputBuffers.h"
+
+#include "dgmf/ResultNames.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace
+{
+/// Two unit squares side by side in the plane z = 0 (6 nodes, 2 quads), with a marker: the left
+/// edge static, the right edge moving.
+vtkSmartPointer<vtkUnstructuredGrid> TwoSquares(double x0 = 0.0)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int j = 0; j < 2; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      points->InsertNextPoint(x0 + i, j, 0.0);
+    }
+  }
+  grid->SetPoints(points);
+  const vtkIdType left[4] = { 0, 1, 4, 3 }, right[4] = { 1, 2, 5, 4 };
+  grid->InsertNextCell(VTK_QUAD, 4, left);
+  grid->InsertNextCell(VTK_QUAD, 4, right);
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("BoundaryMarker");
+  for (int value : { 1, 0, 2, 1, 0, 2 })
+  {
+    marker->InsertNextValue(value);
+  }
+  grid->GetPointData()->AddArray(marker);
+  return grid;
+}
+
+void SetEnvironment(const char* name, const char* value)
+{
+#ifdef _WIN32
+  _putenv_s(name, value ? value : "");
+#else
+  if (value)
+  {
+    setenv(name, value, 1);
+  }
+  else
+  {
+    unsetenv(name);
+  }
+#endif
+}
+} // namespace
+
+TEST(ContentKey, MatchesTheSameContentInAnyObjectAndNothingElse)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetNumberOfTuples(1000);
+  for (vtkIdType i = 0; i < 1000; ++i)
+  {
+    a->SetValue(i, 0.5 * i);
+  }
+  const auto hashOf = [](vtkDataArray* array)
+  { return [array]() { return dgmf_vtk::HashArray(array); }; };
+  dgmf_vtk::ContentKey key;
+  EXPECT_FALSE(key.Matches(a, hashOf(a)));
+  key.Set(a, hashOf(a));
+  EXPECT_TRUE(key.Matches(a, hashOf(a)));
+  a->Modified(); // touched, same content
+  EXPECT_TRUE(key.Matches(a, hashOf(a)));
+  vtkNew<vtkDoubleArray> copy; // a new object with the same values (a reader's next time step)
+  copy->DeepCopy(a);
+  EXPECT_TRUE(key.Matches(copy, hashOf(copy)));
+  copy->SetValue(999, -1.0);
+  copy->Modified();
+  EXPECT_FALSE(key.Matches(copy, hashOf(copy)));
+  key.Reset();
+  EXPECT_FALSE(key.Matches(a, hashOf(a)));
+  const double x[3] = { 1, 2, 3 }, y[3] = { 1, 2, 4 };
+  EXPECT_NE(dgmf_vtk::HashBytes(x, sizeof x), dgmf_vtk::HashBytes(y, sizeof y));
+  EXPECT_EQ(dgmf_vtk::HashBytes(x, sizeof x), dgmf_vtk::HashBytes(x, sizeof x));
+}
+
+TEST(OutputBuffers, PointsAreReusedOnlyWhenNobodyElseHoldsThem)
+{
+  auto input = TwoSquares();
+  vtkNew<vtkUnstructuredGrid> output;
+  vtkSmartPointer<vtkPoints> last;
+  vtkPoints* first = dgmf_vtk::ReuseOutputPoints(last, input, output, 6);
+  output->SetPoints(first);
+  EXPECT_EQ(dgmf_vtk::ReuseOutputPoints(last, input, output, 6).GetPointer(), first);
+  vtkSmartPointer<vtkDataArray> heldByUser = first->GetData(); // e.g. a Python variable
+  vtkPoints* second = dgmf_vtk::ReuseOutputPoints(last, input, output, 6);
+  EXPECT_NE(second, first);
+  EXPECT_EQ(second->GetNumberOfPoints(), 6);
+  EXPECT_NE(dgmf_vtk::ReuseOutputPoints(last, input, output, 7).GetPointer(), second);
+}
+
+TEST(OutputBuffers, FieldArraysKeepTheirValuesAndNeverOverwriteAHeldArray)
+{
+  dgmf_vtk::FieldArrays fields;
+  fields.Reset(4);
+  const dgmf::FieldKey key{ 1.0, 0 }, other{ 2.0, 0 };
+  EXPECT_EQ(fields.Find(dgmf::names::R, key), nullptr);
+  double* r = fields.Store(dgmf::names::R, key);
+  r[0] = 42.0;
+  EXPECT_EQ(fields.Find(dgmf::names::R, key), r);
+  EXPECT_EQ(fields.Find(dgmf::names::R, other), nullptr);
+  EXPECT_STREQ(fields.GetArray(dgmf::names::R)->GetName(), "r");
+  vtkSmartPointer<vtkDoubleArray> inAnOutput = fields.GetArray(dgmf::names::R);
+  double* again = fields.Store(dgmf::names::R, other);
+  EXPECT_NE(again, r); // a new array: the held one is left alone
+  EXPECT_EQ(inAnOutput->GetValue(0), 42.0);
+  EXPECT_EQ(fields.Store(dgmf::names::F, key), fields.Store(dgmf::names::F, other)); // not held
+  fields.Reset(4);
+  EXPECT_EQ(fields.Find(dgmf::names::R, other), nullptr); // a new mapping forgets every key
+  EXPECT_EQ(fields.Prepare(true, false).size(), 1u);
+  EXPECT_THROW(fields.Store("q", key), std::invalid_argument);
+}
+
+TEST(MemoryGuard, RefusesWhatCannotFitAndSaysSo)
+{
+  EXPECT_DOUBLE_EQ(dgmf_vtk::EstimateDeformationBytes(1000.0, 500.0), 1000.0 * 277 + 500.0 * 9);
+  SetEnvironment("DGMF_PROCESS_MEMORY_KIB", nullptr);
+  EXPECT_GT(dgmf_vtk::AvailableBytes(), 1e6);
+  EXPECT_EQ(dgmf_vtk::CheckDeformationMemory(1000.0, 1000.0), "");
+  SetEnvironment("DGMF_PROCESS_MEMORY_KIB", "1"); // a process limit of 1 KiB
+  const std::string refused = dgmf_vtk::CheckDeformationMemory(1e6, 1e6);
+  SetEnvironment("DGMF_PROCESS_MEMORY_KIB", nullptr);
+  EXPECT_NE(refused.find("Deforming 1000000 points needs about"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("on a machine with more memory"), std::string::npos) << refused;
+}
+
+TEST(MeshConversion, CellShapesDimensionAndGrids)
+{
+  dgmf::CellShape shape;
+  const int* order = nullptr;
+  ASSERT_TRUE(dgmf_vtk::CellShapeOf(VTK_PIXEL, shape, order));
+  EXPECT_EQ(shape, dgmf::CellShape::Quad);
+  EXPECT_EQ(order[2], 3); // pixel corners 2 and 3 swap
+  ASSERT_TRUE(dgmf_vtk::CellShapeOf(VTK_VOXEL, shape, order));
+  EXPECT_EQ(shape, dgmf::CellShape::Hexahedron);
+  EXPECT_EQ(order[6], 7);
+  EXPECT_FALSE(dgmf_vtk::CellShapeOf(VTK_POLYHEDRON, shape, order));
+  EXPECT_FALSE(dgmf_vtk::CellShapeOf(VTK_QUADRATIC_TETRA, shape, order));
+
+  auto grid = TwoSquares();
+  std::vector<double> copy;
+  const double* xyz = dgmf_vtk::PointsAsDouble(grid->GetPoints(), copy);
+  EXPECT_TRUE(copy.empty()); // doubles are used in place
+  EXPECT_EQ(dgmf_vtk::DetectDimension(grid, xyz, 6), 2);
+  grid->GetPoints()->SetPoint(5, 2.0, 1.0, 0.5);
+  EXPECT_EQ(dgmf_vtk::DetectDimension(grid, xyz, 6), -1); // 2D cells off a plane z = constant
+  const dgmf::CellMesh cells = dgmf_vtk::ToCellMesh(grid);
+  ASSERT_EQ(cells.GetNumberOfCells(), 2u);
+  EXPECT_EQ(cells.Connectivity[4], 1);
+
+  vtkNew<vtkPolyData> patch; // a boundary patch, as the OpenFOAM reader gives it
+  patch->SetPoints(grid->GetPoints());
+  vtkNew<vtkCellArray> polygons;
+  const vtkIdType triangle[3] = { 0, 1, 4 };
+  polygons->InsertNextCell(3, triangle);
+  patch->SetPolys(polygons);
+  const vtkSmartPointer<vtkUnstructuredGrid> asGrid = dgmf_vtk::AsUnstructuredGrid(patch);
+  ASSERT_EQ(asGrid->GetNumberOfCells(), 1);
+  EXPECT_EQ(asGrid->GetCellType(0), VTK_TRIANGLE);
+  EXPECT_EQ(asGrid->GetPoints(), grid->GetPoints());
+  EXPECT_EQ(dgmf_vtk::AsUnstructuredGrid(grid).GetPointer(), grid.GetPointer());
+}
+
+TEST(OutputArrays, ReportsSummariesAndLocalNodesUnderTheSharedNames)
+{
+  vtkNew<vtkFieldData> fieldData;
+  dgmf::DeformationReport report;
+  report.AddCount(dgmf::names::RBFCentreCount, 12);
+  report.Values.push_back({ dgmf::names::FittedTranslation, false, 3, { 1, 2, 3, 4, 5, 6 } });
+  dgmf_vtk::AddReport(fieldData, report);
+  ASSERT_TRUE(vtkIdTypeArray::SafeDownCast(fieldData->GetArray("RBFCentreCount")));
+  EXPECT_EQ(dgmf_vtk::GetFieldValue(fieldData, "RBFCentreCount"), 12.0);
+  vtkDataArray* fitted = fieldData->GetArray("FittedTranslation");
+  ASSERT_TRUE(fitted);
+  EXPECT_EQ(fitted->GetNumberOfTuples(), 2); // one tuple per body
+  EXPECT_EQ(fitted->GetComponent(1, 2), 6.0);
+  dgmf::QualitySummary summary;
+  summary.Mean = 0.75;
+  summary.Minimum = 0.5;
+  summary.Inverted = 3;
+  summary.Evaluated = 8;
+  dgmf_vtk::SetQualitySummary(fieldData, summary);
+  EXPECT_EQ(dgmf_vtk::GetFieldValue(fieldData, "SizeSkewMean"), 0.75);
+  EXPECT_EQ(dgmf_vtk::GetFieldValue(fieldData, "InvertedCellCount"), 3.0);
+  EXPECT_EQ(dgmf_vtk::GetFieldValue(fieldData, "SizeSkewEvaluatedCells"), 8.0);
+
+  // A distributed run deformed 6 nodes, 4 of them its own: r and f keep the 4.
+  auto grid = TwoSquares();
+  dgmf_vtk::FieldArrays fields;
+  fields.Reset(6);
+  fields.Store(dgmf::names::F, dgmf::FieldKey{ 1.0, 1 })[3] = 0.25;
+  dgmf::MethodNeeds needs;
+  needs.Graph = needs.F = true;
+  dgmf_vtk::AddMethodResults(grid, needs, fields, dgmf::DeformationReport(), "DGMF", true, 4);
+  vtkDataArray* f = grid->GetPointData()->GetArray("f");
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->GetNumberOfTuples(), 4);
+  EXPECT_EQ(f->GetTuple1(3), 0.25);
+  EXPECT_FALSE(grid->GetPointData()->GetArray("r"));
+  EXPECT_EQ(dgmf_vtk::GetFieldValue(grid->GetFieldData(), "GraphReused"), 1.0);
+  auto* method = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("Method"));
+  ASSERT_TRUE(method);
+  EXPECT_EQ(method->GetValue(0), "DGMF");
+}
+
+TEST(CompositeMesh, BlocksMergeAtSharedNodesAndScatterBack)
+{
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, TwoSquares(0.0)); // x in [0, 2]
+  auto right = TwoSquares(2.0);         // x in [2, 4]: its left edge is the first's right edge
+  right->GetPointData()->GetArray("BoundaryMarker")->SetTuple1(0, 1);
+  blocks->SetBlock(1, right);
+  const dgmf_vtk::CompositeMesh composite(blocks, "", "BoundaryMarker");
+  vtkUnstructuredGrid* merged = composite.GetMergedMesh();
+  EXPECT_EQ(merged->GetNumberOfPoints(), 10); // 12 block nodes, 2 shared
+  EXPECT_EQ(merged->GetNumberOfCells(), 4);
+  vtkDataArray* marker = merged->GetPointData()->GetArray("BoundaryMarker");
+  ASSERT_TRUE(marker);
+  EXPECT_EQ(marker->GetTuple1(2), 2.0); // moving in one block, static in the other: moving
+
+  vtkNew<vtkUnstructuredGrid> deformed;
+  deformed->DeepCopy(merged);
+  for (vtkIdType i = 0; i < deformed->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    deformed->GetPoint(i, p);
+    p[1] += 10.0;
+    deformed->GetPoints()->SetPoint(i, p);
+  }
+  vtkNew<vtkMultiBlockDataSet> output;
+  composite.ScatterResult(deformed, output);
+  auto* second = vtkUnstructuredGrid::SafeDownCast(output->GetBlock(1));
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->GetNumberOfPoints(), 6);
+  EXPECT_EQ(second->GetPoint(5)[0], 4.0);
+  EXPECT_EQ(second->GetPoint(5)[1], 11.0);
+  EXPECT_TRUE(second->GetPointData()->GetArray("BoundaryMarker")); // the block's own arrays
+}
+
+TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)
+{
+  auto grid = TwoSquares();
+  dgmf_vtk::InputGatherer gatherer;
+  dgmf_vtk::InputNodes nodes;
+  dgmf_vtk::SelectedArrays arrays;
+  arrays.Marker = "BoundaryMarker";
+  gatherer.Gather(grid, arrays, 0, false, nodes);
+  EXPECT_EQ(nodes.NumberOfNodes, 6u);
+  EXPECT_EQ(nodes.Dimension, 2);
+  EXPECT_EQ(nodes.Kinds[2], dgmf::NodeKind::MovingBoundary);
+  EXPECT_EQ(nodes.Displacement, nullptr);
+  const auto message = [&](const dgmf_vtk::SelectedArrays& selected)
+  {
+    try
+    {
+      dgmf_vtk::InputNodes ignored;
+      gatherer.Gather(grid, selected, 0, false, ignored);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(
+    message(dgmf_vtk::SelectedArrays()).find("Select a boundary-marker array"), std::string::npos);
+  dgmf_vtk::SelectedArrays wrong;
+  wrong.Displacement = "BoundaryMarker";
+  EXPECT_NE(
+    message(wrong).find("'BoundaryMarker' has 1 components; it must have 3"), std::string::npos);
+  wrong = arrays;
+  wrong.BodyIds = "Nope";
+  EXPECT_NE(
+    message(wrong).find("The body-id array 'Nope' is not a point array"), std::string::npos);
+  grid->GetPointData()->GetArray("BoundaryMarker")->SetTuple1(1, 7);
+  grid->GetPointData()->GetArray("BoundaryMarker")->Modified();
+  EXPECT_NE(
+    message(arrays).find("The boundary-marker array 'BoundaryMarker' has the value 7 at point 1"),
+    std::string::npos);
+}
