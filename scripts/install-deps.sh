@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   # build tools
-  cmake g++ make ninja-build pkg-config
+  cmake g++ clang clang-format make ninja-build pkg-config
   # ParaView 5.11 SDK (ships its own VTK 9.2) and what its CMake config asks for
   paraview paraview-dev python3-paraview
   qtbase5-dev qttools5-dev libqt5svg5-dev libqt5opengl5-dev libqt5x11extras5-dev

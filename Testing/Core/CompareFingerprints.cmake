@@ -1,0 +1,15 @@
+# Runs two dgmf-core-fingerprint programs (REFERENCE, CANDIDATE) and fails unless their hashes
+# are equal: the two builds compute the same bits.
+foreach(program REFERENCE CANDIDATE)
+  execute_process(COMMAND "${${program}}" OUTPUT_VARIABLE output RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${${program}} failed (${status})")
+  endif()
+  string(STRIP "${output}" output)
+  message(STATUS "${program}: ${output}")
+  string(REGEX MATCH "^[0-9a-f]+" ${program}_HASH "${output}")
+endforeach()
+if(NOT REFERENCE_HASH STREQUAL CANDIDATE_HASH)
+  message(FATAL_ERROR "different bits: ${REFERENCE_HASH} (reference) and ${CANDIDATE_HASH}")
+endif()
+message(STATUS "same bits: ${CANDIDATE_HASH}")
