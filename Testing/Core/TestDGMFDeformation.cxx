@@ -1,5 +1,6 @@
 // DGMF steps 3-6 on synthetic node sets: boundary exactness, r and f, continuity, threads.
 #include "SyntheticNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/DGMFDeformation.h"
 #include "dgmf/DampedRigidMotion.h"
@@ -53,22 +54,7 @@ void Prescribed2D(const double* x, double angleDegrees, const double* c, const d
   out[2] = x[2] + t[2] + d[2];
 }
 
-/// A ParallelFor that really uses two std::threads, splitting the range in two.
-void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
-{
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other(
-    [&]()
-    {
-      if (begin < middle)
-        body(begin, middle);
-    });
-  if (middle < end)
-  {
-    body(middle, end);
-  }
-  other.join();
-}
+using dgmf_test::TwoThreadFor;
 } // namespace
 
 TEST(DGMFDeformation, BoundaryNodesFollowThePrescribedMotion2D)

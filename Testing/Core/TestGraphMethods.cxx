@@ -1,5 +1,6 @@
 // DGM and DGRBF: the comparison methods that share DGMF's Delaunay graph.
 #include "SyntheticNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/BoundaryMotion.h"
 #include "dgmf/DGMDeformation.h"
@@ -56,19 +57,7 @@ dgmf::BoundaryMotion MotionFromField(const dgmf_test::NodeSet& set, Field field)
   return boundary;
 }
 
-void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
-{
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other(
-    [&]()
-    {
-      if (begin < middle)
-        body(begin, middle);
-    });
-  if (middle < end)
-    body(middle, end);
-  other.join();
-}
+using dgmf_test::TwoThreadFor;
 } // namespace
 
 TEST(GraphMethods, BoundaryReproducedAndTranslationExact)

@@ -1,5 +1,6 @@
 // IDW interpolation of the boundary motion: exactness, hand computations, overflow, threads.
 #include "SyntheticNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/BoundaryMotion.h"
 #include "dgmf/IDWDeformation.h"
@@ -15,24 +16,7 @@
 
 namespace
 {
-/// A ParallelFor that really uses two std::threads, splitting the range in two.
-void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
-{
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other(
-    [&]()
-    {
-      if (begin < middle)
-      {
-        body(begin, middle);
-      }
-    });
-  if (middle < end)
-  {
-    body(middle, end);
-  }
-  other.join();
-}
+using dgmf_test::TwoThreadFor;
 
 dgmf::BoundaryMotion Gather(const dgmf_test::NodeSet& set, const dgmf::RigidMotion& motion)
 {

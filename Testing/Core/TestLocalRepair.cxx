@@ -1,6 +1,7 @@
 // The quality guard (Documentation/repair.md): inverted and poor cells of small 2D and 3D grids
 // are repaired by moving nearby interior nodes only; boundary nodes, nodes outside the region and
 // meshes without bad cells are left bit for bit; results do not depend on the ParallelFor.
+#include "TwoThreadFor.h"
 #include "dgmf/LocalRepair.h"
 
 #include <gtest/gtest.h>
@@ -301,24 +302,7 @@ bool SameBits(const double* a, const double* b)
   return std::memcmp(a, b, 3 * sizeof(double)) == 0;
 }
 
-/// A ParallelFor that runs the two halves of the range in two threads.
-void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
-{
-  if (end <= begin)
-  {
-    return;
-  }
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::thread first(
-    [&]
-    {
-      if (begin < middle)
-        body(begin, middle);
-    });
-  std::thread second([&] { body(middle, end); });
-  first.join();
-  second.join();
-}
+using dgmf_test::TwoThreadFor;
 
 RepairReport Repair(TestMesh& grid, const RepairParameters& parameters,
   const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)

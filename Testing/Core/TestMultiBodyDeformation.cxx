@@ -2,6 +2,7 @@
 // bodies, the single-body case, threads, validity between two bodies, extracted motions.
 #include "SyntheticNodes.h"
 #include "TwoBodyNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/DGMFDeformation.h"
 #include "dgmf/DampingField.h"
@@ -22,22 +23,7 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-/// A ParallelFor that really uses two std::threads, splitting the range in two.
-void TwoThreadFor(std::size_t begin, std::size_t end, std::size_t, const dgmf::RangeFunction& body)
-{
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::thread other(
-    [&]()
-    {
-      if (begin < middle)
-        body(begin, middle);
-    });
-  if (middle < end)
-  {
-    body(middle, end);
-  }
-  other.join();
-}
+using dgmf_test::TwoThreadFor;
 
 dgmf::DelaunayMapping Map(
   const dgmf_test::NodeSet& set, const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)

@@ -2,6 +2,7 @@
 // crash or a silent loss.
 #include "vtkDGMFDeformFilter.h"
 
+#include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -66,11 +67,7 @@ struct FilterRun
   }
 };
 
-double Field(vtkUnstructuredGrid* mesh, const char* name)
-{
-  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-  return a ? a->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
-}
+using dgmf_test::Field;
 } // namespace
 
 TEST(BadInput, NonFiniteCoordinatesOrDisplacements)

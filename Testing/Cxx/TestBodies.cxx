@@ -1,6 +1,7 @@
 // Rigid motions extracted from displacements, and several moving bodies, through the filter.
 #include "vtkDGMFDeformFilter.h"
 
+#include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -41,12 +42,7 @@ void SetRotationDisplacement(
   d->Modified();
 }
 
-double Field(vtkUnstructuredGrid* mesh, const char* name, int component = 0)
-{
-  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(0, component) : NAN;
-}
+using dgmf_test::Field;
 } // namespace
 
 TEST(Bodies, RotationGivenOnlyAsDisplacementMatchesTheExplicitRotation)

@@ -2,6 +2,7 @@
 // input safety, caching, threads and bad input.
 #include "vtkDGMFDeformFilter.h"
 
+#include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
@@ -58,12 +59,7 @@ struct ErrorCatcher
   }
 };
 
-double Field(vtkUnstructuredGrid* mesh, const char* name)
-{
-  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetTuple1(0) : NAN;
-}
+using dgmf_test::Field;
 
 /// Checks that moving nodes are exactly at x' = R(angle about z)(x - c) + c + t and static ones did
 /// not move.

@@ -1,6 +1,7 @@
 // Large motions through the filter: sub-steps and the quality guard on the thin slab (issue 10).
 #include "vtkDGMFDeformFilter.h"
 
+#include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
@@ -41,12 +42,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Rotate(
   return output;
 }
 
-double Field(vtkUnstructuredGrid* mesh, const char* name)
-{
-  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetTuple1(0) : NAN;
-}
+using dgmf_test::Field;
 
 /// Boundary exactness: moving nodes at their rotated positions, static nodes where they were.
 void ExpectBoundaryExact(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, double degrees)

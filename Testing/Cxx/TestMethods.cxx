@@ -4,6 +4,7 @@
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
 
+#include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -31,12 +32,7 @@ const int AllMethods[] = { vtkDGMFDeformFilter::DGMF, vtkDGMFDeformFilter::DGM,
   vtkDGMFDeformFilter::DGRBF, vtkDGMFDeformFilter::RBF, vtkDGMFDeformFilter::IDW };
 const char* const MethodNames[] = { "DGMF", "DGM", "DGRBF", "RBF", "IDW" };
 
-double Field(vtkUnstructuredGrid* mesh, const char* name)
-{
-  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetTuple1(0) : NAN;
-}
+using dgmf_test::Field;
 
 vtkSmartPointer<vtkUnstructuredGrid> Deform(
   vtkUnstructuredGrid* mesh, int method, const double angles[3], const double translation[3])

@@ -353,28 +353,22 @@ double DeformIDW(const BoundaryMotion& boundary, const IDWParameters& parameters
   s.SafeSquared = std::max(safe * safe, std::numeric_limits<double>::min());
   const bool defaultExponents = s.ExponentA == 3.0 && s.ExponentB == 5.0;
 
-  const std::size_t blocks = (numberOfNodes + BlockSize - 1) / BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  ForEachIndex(parallelFor, numberOfNodes, BlockSize,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * BlockSize;
-      const std::size_t end = std::min(begin + BlockSize, numberOfNodes);
-      for (std::size_t i = begin; i < end; ++i)
+      const double x[3] = { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+      const double p[3] = { x[0], x[1], dim == 3 ? x[2] : 0.0 };
+      double d[3];
+      const bool done = !defaultExponents ? SumGeneral(s, p, d)
+        : dim == 3                        ? SumDefault<3>(s, p, d)
+                                          : SumDefault<2>(s, p, d);
+      if (!done)
       {
-        const double x[3] = { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
-        const double p[3] = { x[0], x[1], dim == 3 ? x[2] : 0.0 };
-        double d[3];
-        const bool done = !defaultExponents ? SumGeneral(s, p, d)
-          : dim == 3                        ? SumDefault<3>(s, p, d)
-                                            : SumDefault<2>(s, p, d);
-        if (!done)
-        {
-          SumSafe(s, p, d);
-        }
-        deformed[3 * i] = x[0] + d[0];
-        deformed[3 * i + 1] = x[1] + d[1];
-        deformed[3 * i + 2] = x[2] + (dim == 3 ? d[2] : 0.0);
+        SumSafe(s, p, d);
       }
+      deformed[3 * i] = x[0] + d[0];
+      deformed[3 * i + 1] = x[1] + d[1];
+      deformed[3 * i + 2] = x[2] + (dim == 3 ? d[2] : 0.0);
     });
   return L;
 }

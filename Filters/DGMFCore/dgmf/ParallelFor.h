@@ -10,6 +10,7 @@
 #ifndef dgmf_ParallelFor_h
 #define dgmf_ParallelFor_h
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 
@@ -35,6 +36,26 @@ void SerialFor(std::size_t begin, std::size_t end, std::size_t grain, const Rang
  */
 void ForEachBlock(const ParallelFor& parallelFor, std::size_t numberOfBlocks,
   const std::function<void(std::size_t)>& body);
+
+/**
+ * Runs `body(i)` for every index i in [0, count), in fixed blocks of `blockSize` indices that may
+ * run in parallel (the split does not depend on the number of threads, so neither does a result
+ * that depends only on i).
+ */
+template <typename Body>
+void ForEachIndex(
+  const ParallelFor& parallelFor, std::size_t count, std::size_t blockSize, Body&& body)
+{
+  ForEachBlock(parallelFor, (count + blockSize - 1) / blockSize,
+    [&](std::size_t block)
+    {
+      const std::size_t end = std::min(block * blockSize + blockSize, count);
+      for (std::size_t i = block * blockSize; i < end; ++i)
+      {
+        body(i);
+      }
+    });
+}
 
 } // namespace dgmf
 

@@ -363,21 +363,15 @@ double RBFInterpolation::GetSupportRadius() const
 void DeformRBF(const RBFInterpolation& rbf, const double* points, std::size_t numberOfNodes,
   double* deformed, const ParallelFor& parallelFor)
 {
-  const std::size_t blocks = (numberOfNodes + BlockSize - 1) / BlockSize;
-  ForEachBlock(parallelFor, blocks,
-    [&](std::size_t block)
+  ForEachIndex(parallelFor, numberOfNodes, BlockSize,
+    [&](std::size_t i)
     {
-      const std::size_t begin = block * BlockSize;
-      const std::size_t end = std::min(begin + BlockSize, numberOfNodes);
-      for (std::size_t i = begin; i < end; ++i)
+      const double x[3] = { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+      double d[3];
+      rbf.Evaluate(x, d);
+      for (int c = 0; c < 3; ++c)
       {
-        const double x[3] = { points[3 * i], points[3 * i + 1], points[3 * i + 2] };
-        double d[3];
-        rbf.Evaluate(x, d);
-        for (int c = 0; c < 3; ++c)
-        {
-          deformed[3 * i + c] = x[c] + d[c];
-        }
+        deformed[3 * i + c] = x[c] + d[c];
       }
     });
 }
