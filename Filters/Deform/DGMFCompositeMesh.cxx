@@ -4,6 +4,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellTypes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -11,6 +12,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -90,6 +92,12 @@ CompositeMesh::CompositeMesh(
     }
     Leaf leaf;
     leaf.FlatIndex = iterator->GetCurrentFlatIndex();
+    leaf.CellDimension = 0;
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    leaf.Name = metaData && metaData->Has(vtkCompositeDataSet::NAME())
+      ? metaData->Get(vtkCompositeDataSet::NAME())
+      : "";
     leaf.NodeOf.resize(static_cast<std::size_t>(block->GetNumberOfPoints()));
     std::vector<vtkDataArray*> sources(arrays.size());
     for (std::size_t a = 0; a < arrays.size(); ++a)
@@ -161,6 +169,8 @@ CompositeMesh::CompositeMesh(
         cellPoints->SetId(k, leaf.NodeOf[static_cast<std::size_t>(cellPoints->GetId(k))]);
       }
       const int type = block->GetCellType(c);
+      leaf.CellDimension =
+        std::max(leaf.CellDimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
       auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
       if (type == VTK_POLYHEDRON && grid)
       {

@@ -54,15 +54,25 @@ public:
   void Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
     const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const;
 
-private:
-  vtkCompositeDataSet* Input;
-  vtkSmartPointer<vtkUnstructuredGrid> Merged;
+  /// A leaf of the input merged into the grid.
   struct Leaf
   {
     unsigned int FlatIndex;        ///< the leaf's flat index in the input
+    std::string Name;              ///< its block name (vtkCompositeDataSet::NAME), or ""
     std::vector<vtkIdType> NodeOf; ///< merged node of each of the leaf's points
     vtkIdType FirstCell, Cells;    ///< the leaf's cells in the merged grid
+    int CellDimension;             ///< largest dimension of its cells (0 without cells)
   };
+
+  /// The merged leaves, in the input's order.
+  const std::vector<Leaf>& GetLeaves() const { return this->Leaves; }
+
+  /// The input.
+  vtkCompositeDataSet* GetInput() const { return this->Input; }
+
+private:
+  vtkCompositeDataSet* Input;
+  vtkSmartPointer<vtkUnstructuredGrid> Merged;
   std::vector<Leaf> Leaves;
   int Skipped = 0;
 };

@@ -14,6 +14,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -81,14 +82,16 @@ dgmf::DeformationProblem InputNodes::ToProblem() const
   problem.Displacement = this->Displacement;
   problem.BodyIds = this->BodyIds.empty() ? nullptr : this->BodyIds.data();
   problem.NumberOfBodies = this->NumberOfBodies;
+  problem.Slip = this->Slip;
   return problem;
 }
 
-void InputGatherer::Gather(vtkUnstructuredGrid* mesh, const SelectedArrays& arrays, int dimension,
-  bool distributed, InputNodes& nodes)
+void InputGatherer::Gather(
+  vtkUnstructuredGrid* mesh, const GatherOptions& options, InputNodes& nodes)
 {
+  const SelectedArrays& arrays = options.Arrays;
   const auto n = static_cast<std::size_t>(mesh->GetNumberOfPoints());
-  if (n == 0 && distributed)
+  if (n == 0 && options.Distributed)
   {
     return; // an empty piece: it still takes part in the exchanges
   }
@@ -100,24 +103,37 @@ void InputGatherer::Gather(vtkUnstructuredGrid* mesh, const SelectedArrays& arra
   nodes.NumberOfNodes = n;
   nodes.LocalNodes = n;
   nodes.Points = PointsAsDouble(mesh->GetPoints(), nodes.PointCopy);
-  nodes.Dimension = dimension != 0 ? dimension : DetectDimension(mesh, nodes.Points, n);
+  nodes.Dimension =
+    options.Dimension != 0 ? options.Dimension : DetectDimension(mesh, nodes.Points, n);
   if (nodes.Dimension < 0)
   {
     throw std::invalid_argument(
       "The mesh has no 3D cell but its points do not all have the same z: 2D meshes must lie in a "
       "plane z = constant.");
   }
-  dimension = nodes.Dimension;
+  if (nodes.Dimension == 3 && options.OneCellThick != OneCellThickOff && !options.Distributed)
+  {
+    nodes.Layers = dgmf::FindExtrudedLayers(nodes.Points, n);
+  }
+  if (options.OneCellThick == OneCellThickOn && !nodes.Layers.Found())
+  {
+    throw std::invalid_argument(
+      "The one-cell-thick mode is On, but the mesh is not one cell thick: its nodes do not lie on "
+      "two planes normal to x, y or z, in pairs with the same other coordinates" +
+      std::string(options.Distributed ? " (or the run is distributed)." : "."));
+  }
   vtkDataArray* displacement = arrays.Displacement.empty()
     ? nullptr
     : FindPointArray(mesh, arrays.Displacement, 3, "displacement");
-  vtkDataArray* marker =
-    arrays.Marker.empty() ? nullptr : FindPointArray(mesh, arrays.Marker, 1, "boundary-marker");
-  if (!displacement && !marker)
+  vtkDataArray* marker = arrays.Marker.empty() || options.Roles
+    ? nullptr
+    : FindPointArray(mesh, arrays.Marker, 1, "boundary-marker");
+  if (!displacement && !marker && !options.Roles)
   {
     throw std::invalid_argument(
-      "Select a boundary-marker array (0 = interior, 1 = static, 2 = moving) or a "
-      "displacement array (boundary nodes with a non-zero displacement move).");
+      "Select a boundary-marker array (0 = interior, 1 = static, 2 = moving, 3 = slip), a "
+      "displacement array (boundary nodes with a non-zero displacement move), or the moving "
+      "boundaries by name.");
   }
   if (auto* doubles = vtkDoubleArray::SafeDownCast(displacement))
   {
@@ -132,8 +148,14 @@ void InputGatherer::Gather(vtkUnstructuredGrid* mesh, const SelectedArrays& arra
     }
     nodes.Displacement = nodes.DisplacementCopy.data();
   }
-  this->GatherKinds(mesh, arrays, marker, dimension, distributed, nodes);
-  if (!arrays.BodyIds.empty())
+  this->GatherKinds(mesh, options, marker, nodes);
+  if (options.Roles)
+  {
+    nodes.BodyIds = options.Roles->BodyIds;
+    nodes.NumberOfBodies =
+      nodes.BodyIds.empty() ? 0 : *std::max_element(nodes.BodyIds.begin(), nodes.BodyIds.end());
+  }
+  else if (!arrays.BodyIds.empty())
   {
     vtkDataArray* ids = FindPointArray(mesh, arrays.BodyIds, 1, "body-id");
     std::vector<double> values(n);
@@ -152,12 +174,55 @@ void InputGatherer::Gather(vtkUnstructuredGrid* mesh, const SelectedArrays& arra
       throw std::invalid_argument("The body-id array '" + arrays.BodyIds + "' " + e.what());
     }
   }
+  this->GatherSlipPlanes(options, nodes);
 }
 
-void InputGatherer::GatherKinds(vtkUnstructuredGrid* mesh, const SelectedArrays& arrays,
-  vtkDataArray* marker, int dimension, bool distributed, InputNodes& nodes)
+void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& nodes)
+{
+  std::vector<std::vector<std::int32_t>> groups;
+  std::vector<std::string> names;
+  if (options.Roles)
+  {
+    groups = options.Roles->SlipNodes;
+    names = options.Roles->SlipNames;
+  }
+  else
+  {
+    groups.resize(1); // the marker's value 3: one plane
+    names.push_back("boundary-marker value 3");
+    for (std::size_t i = 0; i < nodes.NumberOfNodes; ++i)
+    {
+      if (nodes.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+      {
+        groups[0].push_back(static_cast<std::int32_t>(i));
+      }
+    }
+  }
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    if (groups[g].empty())
+    {
+      continue;
+    }
+    nodes.Slip.Planes.push_back(
+      dgmf::FitSlipPlane(nodes.Points, groups[g].data(), groups[g].size(), names[g]));
+    for (std::int32_t node : groups[g])
+    {
+      nodes.Slip.Nodes.push_back(node);
+      nodes.Slip.NodePlanes.push_back(static_cast<std::int32_t>(nodes.Slip.Planes.size() - 1));
+    }
+  }
+}
+
+void InputGatherer::GatherKinds(
+  vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker, InputNodes& nodes)
 {
   const std::size_t n = nodes.NumberOfNodes;
+  if (options.Roles)
+  {
+    nodes.Kinds = options.Roles->Kinds;
+    return;
+  }
   nodes.Kinds.assign(n, dgmf::NodeKind::Interior);
   if (marker && this->Marker == marker && this->MarkerMTime == marker->GetMTime() &&
     this->MarkerKinds.size() == n)
@@ -177,7 +242,8 @@ void InputGatherer::GatherKinds(vtkUnstructuredGrid* mesh, const SelectedArrays&
     }
     catch (const std::invalid_argument& e)
     {
-      throw std::invalid_argument("The boundary-marker array '" + arrays.Marker + "' " + e.what());
+      throw std::invalid_argument(
+        "The boundary-marker array '" + options.Arrays.Marker + "' " + e.what());
     }
     this->Marker = marker;
     this->MarkerMTime = marker->GetMTime();
@@ -185,23 +251,51 @@ void InputGatherer::GatherKinds(vtkUnstructuredGrid* mesh, const SelectedArrays&
     return;
   }
   // No marker: the nodes of the mesh's boundary, moving where their displacement is non-zero.
-  if (distributed && !mesh->GetCellGhostArray())
+  if (options.Distributed && !mesh->GetCellGhostArray())
   {
     throw std::invalid_argument(
       "In a distributed run without a boundary-marker array, the pieces need ghost "
       "cells (e.g. ParaView's Ghost Cells Generator), or the faces between pieces "
       "would be taken for the mesh's boundary. Add ghost cells or select a marker.");
   }
-  const std::vector<std::uint8_t> flags =
-    FlagBoundaryNodes(this->GetBoundaryFacets(mesh, dimension), static_cast<vtkIdType>(n));
+  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Dimension);
+  std::vector<std::uint8_t> flags = FlagBoundaryNodes(facets, static_cast<vtkIdType>(n));
+  if (nodes.Layers.Found())
+  {
+    // A one-cell-thick mesh: its two planes are not boundaries, only the faces across them are.
+    std::fill(flags.begin(), flags.end(), 0);
+    const dgmf::ExtrudedLayers& layers = nodes.Layers;
+    for (std::size_t f = 0; f < facets.Size(); ++f)
+    {
+      const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
+      const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
+      const auto onPlane = [&](double plane)
+      {
+        return std::all_of(
+          begin, end, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
+      };
+      if (!onPlane(layers.Low) && !onPlane(layers.High))
+      {
+        std::for_each(begin, end, [&](vtkIdType id) { flags[static_cast<std::size_t>(id)] = 1; });
+      }
+    }
+  }
+  std::size_t boundary = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
     if (flags[i])
     {
+      ++boundary;
       const double* d = nodes.Displacement + 3 * i;
       nodes.Kinds[i] = (d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0) ? dgmf::NodeKind::MovingBoundary
                                                                    : dgmf::NodeKind::StaticBoundary;
     }
+  }
+  if (boundary == n)
+  {
+    nodes.Warnings.push_back("Every node of the mesh lies on its boundary, so every node is a "
+                             "boundary node and none can follow the motion. Select a "
+                             "boundary-marker array or the boundaries by name.");
   }
 }
 

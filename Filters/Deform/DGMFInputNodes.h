@@ -9,9 +9,11 @@
 #define DGMFInputNodes_h
 
 #include "DGMFBoundaryDetection.h"
+#include "DGMFBoundaryNames.h"
 #include "DGMFContentKey.h"
 
 #include "dgmf/DeformationProblem.h"
+#include "dgmf/ExtrudedLayers.h"
 #include "dgmf/NodeKind.h"
 
 #include "vtkType.h"
@@ -62,9 +64,30 @@ struct InputNodes
   std::vector<dgmf::NodeKind> Kinds;
   std::vector<std::int32_t> BodyIds; ///< per node, when a body-id array is selected
   std::int32_t NumberOfBodies = 0;   ///< the largest body id
+  dgmf::SlipConstraint Slip;         ///< the slip boundaries' nodes and planes
+  dgmf::ExtrudedLayers Layers;       ///< the two layers of a one-cell-thick mesh, if it is one
+  std::vector<std::string> Warnings; ///< for the user
 
   /// The nodes as a core problem (one default rigid motion: the caller sets the motions).
   dgmf::DeformationProblem ToProblem() const;
+};
+
+/// How a one-cell-thick mesh (two planes of paired nodes, as OpenFOAM's 2D meshes) is deformed.
+enum OneCellThickModes
+{
+  OneCellThickDetect = 0, ///< as the 2D mesh of one layer when the mesh is one (default)
+  OneCellThickOff = 1,    ///< always as a 3D mesh
+  OneCellThickOn = 2      ///< as a 2D layer; an error when the mesh is not one cell thick
+};
+
+/// What Gather uses besides the mesh.
+struct GatherOptions
+{
+  SelectedArrays Arrays;
+  int Dimension = 0;                ///< 2 or 3; 0: found from the mesh (2 without 3D cells)
+  bool Distributed = false;         ///< one piece of a distributed mesh
+  const NodeRoles* Roles = nullptr; ///< node roles from boundary names (then no marker is read)
+  int OneCellThick = OneCellThickDetect;
 };
 
 /**
@@ -75,15 +98,17 @@ class InputGatherer
 {
 public:
   /**
-   * Fills `nodes` from `mesh`, of `dimension` (2 or 3; 0: found from the mesh: 2 without 3D cells).
-   * Throws std::invalid_argument, with the message for the user, for an empty mesh, a 2D mesh off
-   * a plane z = constant, a selected array that is missing or has the wrong number of components,
-   * no array selected, or array values the core does not allow. `distributed`: the mesh is one
-   * piece of a distributed mesh (an empty piece is allowed, and without a marker the pieces need
-   * ghost cells).
+   * Fills `nodes` from `mesh`. The kinds come from the node roles (boundary names), else the
+   * boundary marker, else the mesh's boundary (the nodes of its boundary faces, but for the two
+   * planes of a one-cell-thick mesh), moving where the displacement is not zero. Slip nodes (from
+   * the roles, or marker value 3: one plane) get their planes. Throws std::invalid_argument, with
+   * the message for the user, for an empty mesh, a 2D mesh off a plane z = constant, a selected
+   * array that is missing or has the wrong number of components, no array and no name given,
+   * array values the core does not allow, and slip boundaries that are not planar. In a
+   * distributed run an empty piece is allowed, without a marker the pieces need ghost cells, and
+   * one-cell-thick meshes are deformed as 3D meshes.
    */
-  void Gather(vtkUnstructuredGrid* mesh, const SelectedArrays& arrays, int dimension,
-    bool distributed, InputNodes& nodes);
+  void Gather(vtkUnstructuredGrid* mesh, const GatherOptions& options, InputNodes& nodes);
 
   /// The boundary facets of `mesh` (cached while its cells are unchanged).
   const BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension);
@@ -92,8 +117,9 @@ public:
   std::size_t GetMemorySize() const;
 
 private:
-  void GatherKinds(vtkUnstructuredGrid* mesh, const SelectedArrays& arrays, vtkDataArray* marker,
-    int dimension, bool distributed, InputNodes& nodes);
+  void GatherKinds(vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker,
+    InputNodes& nodes);
+  void GatherSlipPlanes(const GatherOptions& options, InputNodes& nodes);
   // The kinds of the last marker array (checked once).
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;

@@ -71,18 +71,18 @@ void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report)
   }
 }
 
-void AddMethodResults(vtkUnstructuredGrid* output, const dgmf::MethodNeeds& needs,
-  FieldArrays& fields, const dgmf::DeformationReport& report, const char* methodName,
-  bool graphReused, std::size_t localNodes)
+void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleArray* f,
+  const dgmf::DeformationReport& report, bool usedGraph, bool graphReused, const char* methodName,
+  std::size_t localNodes)
 {
   vtkPointData* pointData = output->GetPointData();
   vtkFieldData* fieldData = output->GetFieldData();
   const auto local = static_cast<vtkIdType>(localNodes);
-  for (const char* name : { dgmf::names::R, dgmf::names::F })
+  for (vtkDoubleArray* array : { r, f })
   {
-    vtkDoubleArray* array = fields.GetArray(name);
-    if ((std::strcmp(name, dgmf::names::R) == 0 ? needs.R : needs.F) && array)
+    if (array)
     {
+      const char* name = array->GetName();
       if (array->GetNumberOfTuples() > local)
       {
         vtkNew<vtkDoubleArray> kept; // this piece's nodes only
@@ -98,7 +98,7 @@ void AddMethodResults(vtkUnstructuredGrid* output, const dgmf::MethodNeeds& need
     }
   }
   AddReport(fieldData, report);
-  if (needs.Graph)
+  if (usedGraph)
   {
     AddFieldCount(fieldData, dgmf::names::GraphReused, graphReused ? 1 : 0);
   }

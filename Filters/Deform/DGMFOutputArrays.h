@@ -7,8 +7,6 @@
 #ifndef DGMFOutputArrays_h
 #define DGMFOutputArrays_h
 
-#include "DGMFOutputBuffers.h"
-
 #include "dgmf/DeformationMethod.h"
 #include "dgmf/ParallelFor.h"
 #include "dgmf/SizeSkewQuality.h"
@@ -16,6 +14,7 @@
 #include <cstddef>
 
 class vtkDataSetAttributes;
+class vtkDoubleArray;
 class vtkFieldData;
 class vtkUnstructuredGrid;
 
@@ -39,13 +38,13 @@ double GetFieldValue(vtkFieldData* fieldData, const char* name);
 void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report);
 
 /**
- * A method's results on `output`: the point arrays r and f it wrote (from `fields`, as `needs`
- * says), the values of `report`, GraphReused (graph methods) and the Method name; then the first
- * `localNodes` of them kept (a distributed run also deformed the other pieces' boundary nodes).
+ * A method's results on `output`: the point arrays `r` and `f` when not null (their first
+ * `localNodes` values: a distributed run also deformed the other pieces' boundary nodes), the
+ * values of `report`, GraphReused (when the method used the graph) and the Method name.
  */
-void AddMethodResults(vtkUnstructuredGrid* output, const dgmf::MethodNeeds& needs,
-  dgmf_vtk::FieldArrays& fields, const dgmf::DeformationReport& report, const char* methodName,
-  bool graphReused, std::size_t localNodes);
+void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleArray* f,
+  const dgmf::DeformationReport& report, bool usedGraph, bool graphReused, const char* methodName,
+  std::size_t localNodes);
 
 /**
  * The size-skew quality of `mesh`'s cells between `originalPoints` and `deformedPoints` (3 doubles

@@ -1,14 +1,14 @@
 #include "vtkDGMFDeformFilter.h"
 
+#include "DGMFBoundaryNames.h"
 #include "DGMFCompositeMesh.h"
+#include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
 #include "DGMFFilterParameters.h"
 #include "DGMFInputNodes.h"
-#include "DGMFMappingCache.h"
 #include "DGMFMemoryGuard.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFOutputArrays.h"
-#include "DGMFOutputBuffers.h"
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DeformationMethod.h"
@@ -36,18 +36,13 @@
 vtkStandardNewMacro(vtkDGMFDeformFilter);
 vtkCxxSetObjectMacro(vtkDGMFDeformFilter, Controller, vtkMultiProcessController);
 
-/// What the filter keeps between executions.
+/// What the filter keeps between executions, and the boundaries named.
 struct vtkDGMFDeformFilter::Internals
 {
-  struct Caches
-  {
-    dgmf_vtk::InputGatherer Inputs;          ///< marker kinds, boundary facets
-    dgmf_vtk::MappingCache Mapping;          ///< the graph and the node locations
-    dgmf_vtk::FieldArrays Fields;            ///< r and f, shared with the output
-    vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
-  };
-  std::unique_ptr<Caches> Cache = std::make_unique<Caches>();
-  dgmf_vtk::BodyMotionTable BodyMotions; ///< SetBodyMotion
+  std::unique_ptr<dgmf_vtk::DeformationCaches> Cache =
+    std::make_unique<dgmf_vtk::DeformationCaches>();
+  dgmf_vtk::BodyMotionTable BodyMotions;  ///< SetBodyMotion
+  dgmf_vtk::BoundarySelection Boundaries; ///< AddMovingBoundary, AddStaticBoundary, AddSlipBoundary
 };
 
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
@@ -121,6 +116,62 @@ void vtkDGMFDeformFilter::RemoveAllBodyMotions()
   }
 }
 
+namespace
+{
+/// Adds `name` to `list`; true when it changed.
+bool AddName(std::vector<std::string>& list, const char* name)
+{
+  if (!name || !*name)
+  {
+    return false;
+  }
+  list.emplace_back(name);
+  return true;
+}
+} // namespace
+
+void vtkDGMFDeformFilter::AddMovingBoundary(const char* name)
+{
+  if (AddName(this->Internal->Boundaries.Moving, name))
+  {
+    this->Modified();
+  }
+}
+
+void vtkDGMFDeformFilter::AddStaticBoundary(const char* name)
+{
+  if (AddName(this->Internal->Boundaries.Static, name))
+  {
+    this->Modified();
+  }
+}
+
+void vtkDGMFDeformFilter::AddSlipBoundary(const char* name)
+{
+  if (AddName(this->Internal->Boundaries.Slip, name))
+  {
+    this->Modified();
+  }
+}
+
+void vtkDGMFDeformFilter::RemoveAllMovingBoundaries()
+{
+  this->Internal->Boundaries.Moving.clear();
+  this->Modified();
+}
+
+void vtkDGMFDeformFilter::RemoveAllStaticBoundaries()
+{
+  this->Internal->Boundaries.Static.clear();
+  this->Modified();
+}
+
+void vtkDGMFDeformFilter::RemoveAllSlipBoundaries()
+{
+  this->Internal->Boundaries.Slip.clear();
+  this->Modified();
+}
+
 void vtkDGMFDeformFilter::SetDisplacementArrayName(const char* name)
 {
   this->SetInputArrayToProcess(
@@ -141,13 +192,13 @@ void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
 
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
 {
-  const Internals::Caches& cache = *this->Internal->Cache;
+  const dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   return cache.Inputs.GetMemorySize() + cache.Mapping.GetMemorySize();
 }
 
 void vtkDGMFDeformFilter::ReleaseCache()
 {
-  this->Internal->Cache = std::make_unique<Internals::Caches>();
+  this->Internal->Cache = std::make_unique<dgmf_vtk::DeformationCaches>();
 }
 
 int vtkDGMFDeformFilter::FillInputPortInformation(int, vtkInformation* info)
@@ -207,6 +258,13 @@ int vtkDGMFDeformFilter::RequestData(
     vtkErrorMacro("The input must be a vtkUnstructuredGrid or a composite dataset of meshes.");
     return 0;
   }
+  if (!composite && !this->Internal->Boundaries.Empty())
+  {
+    vtkErrorMacro("Boundaries chosen by name need a composite input (a multiblock, as the "
+                  "OpenFOAM, Exodus and CGNS readers give); for one unstructured grid, select a "
+                  "boundary-marker array.");
+    return 0;
+  }
 
   // 2-4. Check, deform and write the outputs, on the filter's threads (Execute); in a
   //      distributed run every process takes part, and the quality summary is made global.
@@ -214,7 +272,7 @@ int vtkDGMFDeformFilter::RequestData(
   try
   {
     dgmf_vtk::RunWithThreads(
-      this->NumberOfThreads, [&]() { status = this->Execute(input, output); });
+      this->NumberOfThreads, [&]() { status = this->Execute(input, output, composite.get()); });
   }
   catch (const std::bad_alloc&)
   {
@@ -242,31 +300,46 @@ int vtkDGMFDeformFilter::RequestData(
   return status;
 }
 
-int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
+int vtkDGMFDeformFilter::Execute(
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, const dgmf_vtk::CompositeMesh* composite)
 {
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds = 0.0;
-  Internals::Caches& cache = *this->Internal->Cache;
+  dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   const bool distributed = dgmf_vtk::IsDistributed(this->Controller);
 
-  // 2. The nodes, with the selected arrays found and of the right shape (the core checks the
-  //    values). A distributed run agrees on the dimension and fails on every process if it fails
-  //    on one (no process may wait for another in the exchanges).
-  int dimension = 0;
+  // 2. The nodes, with the selected arrays found and of the right shape or the boundaries named
+  //    (the core checks the values). A distributed run agrees on the dimension and fails on every
+  //    process if it fails on one (no process may wait for another in the exchanges).
+  dgmf_vtk::GatherOptions options;
+  options.Arrays = dgmf_vtk::GetSelectedArrays(this);
+  options.Distributed = distributed;
+  options.OneCellThick = this->OneCellThickMode;
   if (distributed)
   {
     double z = 0.0;
-    dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
+    options.Dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
   }
   dgmf_vtk::InputNodes nodes;
+  dgmf_vtk::NodeRoles roles;
   std::string error;
   try
   {
     error = dgmf_vtk::CheckDeformationMemory(static_cast<double>(input->GetNumberOfPoints()),
       static_cast<double>(input->GetNumberOfCells()));
+    if (error.empty() && composite && !this->Internal->Boundaries.Empty())
+    {
+      const auto* xyz = static_cast<const double*>(input->GetPoints()->GetVoidPointer(0));
+      const bool layered = this->OneCellThickMode != OFF && !distributed;
+      roles = dgmf_vtk::AssignRoles(*composite, this->Internal->Boundaries,
+        layered
+          ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(input->GetNumberOfPoints()))
+          : dgmf::ExtrudedLayers());
+      options.Roles = &roles;
+    }
     if (error.empty())
     {
-      cache.Inputs.Gather(input, dgmf_vtk::GetSelectedArrays(this), dimension, distributed, nodes);
+      cache.Inputs.Gather(input, options, nodes);
     }
   }
   catch (const std::exception& e)
@@ -291,6 +364,10 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     output->ShallowCopy(input); // an empty piece of a distributed mesh
     return 1;
   }
+  for (const std::string& warning : nodes.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
 
   // 3. Deform through the core's method interface: the method says what it needs.
   const auto method =
@@ -298,83 +375,39 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
   problem.Motions = this->Internal->BodyMotions.For(this, nodes.NumberOfBodies);
-  const dgmf::MethodNeeds needs = method->GetNeeds(problem);
-  dgmf::CellMesh cells;
-  if (needs.Cells)
-  {
-    if (distributed)
-    {
-      vtkErrorMacro("Sub-steps and the quality guard are not available in distributed runs.");
-      return 0;
-    }
-    cells = dgmf_vtk::ToCellMesh(input);
-    problem.Cells = &cells;
-  }
-  std::vector<double> weights;
-  if (needs.BoundaryWeights)
-  {
-    weights =
-      dgmf_vtk::ComputeBoundaryNodeWeights(cache.Inputs.GetBoundaryFacets(input, nodes.Dimension),
-        nodes.Points, static_cast<vtkIdType>(nodes.NumberOfNodes), nodes.Dimension);
-    problem.BoundaryWeights = weights.data();
-  }
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =
     dgmf_vtk::ReuseOutputPoints(cache.OutputPoints, input, output, n);
   auto* newCoordinates = vtkDoubleArray::SafeDownCast(newPoints->GetData());
-  const dgmf::ParallelFor parallel = dgmf_vtk::MakeSMPParallelFor();
   this->UpdateProgress(0.1);
-  const dgmf::DelaunayMapping* mapping = nullptr;
-  dgmf::DeformationReport report;
-  if (needs.Graph)
-  {
-    // A new graph: r and f are computed anew, and their arrays and the output points are first
-    // touched while the graph is built (on another thread), off the critical path.
-    std::vector<std::string> warnings;
-    mapping = &cache.Mapping.Update(
-      problem, input->GetPoints()->GetData(), dgmf_vtk::HintStrideOf(input),
-      [&]()
-      {
-        cache.Fields.Reset(n);
-        std::vector<vtkDoubleArray*> touched = cache.Fields.Prepare(needs.R, needs.F);
-        touched.push_back(newCoordinates);
-        return touched;
-      },
-      parallel, this->LastExecutionReusedGraph, warnings);
-    if (!this->LastExecutionReusedGraph)
+  const dgmf_vtk::CoreDeformation result = dgmf_vtk::DeformThroughCore(*method, problem, nodes,
+    input, distributed, cache, newCoordinates, dgmf_vtk::MakeSMPParallelFor(),
+    [this](double progress)
     {
-      this->LastGraphSeconds = mapping->GetGraphSeconds();
-      this->LastLocationSeconds = mapping->GetLocationSeconds();
-    }
-    report.Warnings = warnings;
-  }
-  this->UpdateProgress(0.6);
-  if (this->GetAbortExecute())
+      this->UpdateProgress(progress);
+      return !this->GetAbortExecute();
+    });
+  if (result.Aborted)
   {
     return 0;
   }
-  output->CopyStructure(input);
-  output->GetPointData()->PassData(input->GetPointData());
-  output->GetCellData()->PassData(input->GetCellData());
-  output->GetFieldData()->PassData(input->GetFieldData());
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<std::string> mappingWarnings = std::move(report.Warnings);
-  report = method->Deform(problem, mapping,
-    dgmf::DeformationOutputs{ newCoordinates->GetPointer(0), &cache.Fields }, parallel);
-  report.Warnings.insert(report.Warnings.begin(), mappingWarnings.begin(), mappingWarnings.end());
-  this->LastDeformationSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  this->LastGraphSeconds += report.GraphSeconds;
-  this->LastLocationSeconds += report.LocationSeconds;
-  for (const std::string& warning : report.Warnings)
+  this->LastExecutionReusedGraph = result.GraphReused;
+  this->LastGraphSeconds = result.GraphSeconds;
+  this->LastLocationSeconds = result.LocationSeconds;
+  this->LastDeformationSeconds = result.DeformationSeconds;
+  for (const std::string& warning : result.Report.Warnings)
   {
     vtkWarningMacro(<< warning);
   }
   this->UpdateProgress(0.8);
 
-  // 4. The outputs: the method's arrays and field data, the new points, the quality.
-  dgmf_vtk::AddMethodResults(output, needs, cache.Fields, report, method->GetInfo().Name,
-    this->LastExecutionReusedGraph, nodes.LocalNodes);
+  // 4. The outputs: the input's structure and arrays, the method's, the new points, the quality.
+  output->CopyStructure(input);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  output->GetFieldData()->PassData(input->GetFieldData());
+  dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
+    result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
   if (nodes.LocalNodes < n)
   {
     newCoordinates->Resize(static_cast<vtkIdType>(nodes.LocalNodes)); // this piece's nodes
@@ -385,8 +418,9 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   output->SetPoints(newPoints);
   if (this->ComputeQuality)
   {
-    const dgmf::QualitySummary summary = dgmf_vtk::AddCellQuality(input, nodes.Points,
-      newCoordinates->GetPointer(0), output->GetCellData(), output->GetFieldData(), parallel);
+    const dgmf::QualitySummary summary =
+      dgmf_vtk::AddCellQuality(input, nodes.Points, newCoordinates->GetPointer(0),
+        output->GetCellData(), output->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
     if (this->FailOnInvertedCells && summary.Inverted > 0)
     {
       vtkErrorMacro(
@@ -423,5 +457,9 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
      << ", passes " << this->RepairPasses << ")\n";
   os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off") << "\n";
   os << indent << "FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads
+     << ", OneCellThickMode: " << this->OneCellThickMode << "\n";
+  const dgmf_vtk::BoundarySelection& names = this->Internal->Boundaries;
+  os << indent << "Boundaries by name: " << names.Moving.size() << " moving, "
+     << names.Static.size() << " static, " << names.Slip.size() << " slip\n";
 }

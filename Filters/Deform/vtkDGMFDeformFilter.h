@@ -20,9 +20,11 @@
  * in DGMF2 mode (default) it is given at the moving boundary nodes and interpolated inside each
  * graph element (paper Eq. 7); in DGMF1 mode every node's own value is used.
  *
- * Which nodes are boundary nodes, and which of them move, comes from the optional boundary-marker
- * point array (input array 1, 1 component, values 0, 1, 2; integer or floating-point): 0 =
- * interior, 1 = static boundary, 2 = moving boundary. Without it, the boundary nodes are the nodes
+ * Which nodes are boundary nodes, and which of them move, comes from the boundary blocks named
+ * (AddMovingBoundary, AddStaticBoundary, AddSlipBoundary: composite input), else from the
+ * optional boundary-marker point array (input array 1, 1 component, values 0 to 3; integer or
+ * floating-point): 0 = interior, 1 = static boundary, 2 = moving boundary, 3 = slip boundary (the
+ * node moves within the plane of the slip nodes). Without either, the boundary nodes are the nodes
  * of the mesh's boundary faces (3D) or edges (2D), and a boundary node is moving where its
  * displacement is non-zero.
  *
@@ -77,6 +79,10 @@
 
 class vtkMultiProcessController;
 class vtkUnstructuredGrid;
+namespace dgmf_vtk
+{
+class CompositeMesh;
+}
 
 #include <cstddef> // for std::size_t
 #include <memory>  // for std::unique_ptr
@@ -344,6 +350,48 @@ public:
 
   ///@{
   /**
+   * Boundaries chosen by name, for composite input (the OpenFOAM reader's patches, Exodus side
+   * sets, any named block): a block name ("wing"; OpenFOAM region names such as "patch/wing" work
+   * too) or a selector of the input's hierarchy ("/Root/boundary/wing", as ParaView's block tree
+   * gives them). Each moving entry is one body (body 1, 2, ... in order: with several, each has its
+   * own damping field and motion, SetBodyMotion); static entries stay; the nodes of a slip entry
+   * (a plane: a symmetry plane) move only within it. The boundary blocks not named (blocks of
+   * lower dimension than the mesh) are static, but for the two planes of a one-cell-thick mesh. A
+   * node in several blocks is moving if one of them moves (the first body listed wins), else
+   * static if one is static, else slip; a node on two slip planes is static. With names, the
+   * boundary-marker and body-id arrays are not read; an unknown name is an error that lists the
+   * input's block names. Default: none (the marker or the mesh's boundary decide).
+   */
+  void AddMovingBoundary(const char* name);
+  void RemoveAllMovingBoundaries();
+  void AddStaticBoundary(const char* name);
+  void RemoveAllStaticBoundaries();
+  void AddSlipBoundary(const char* name);
+  void RemoveAllSlipBoundaries();
+  ///@}
+
+  /// How a one-cell-thick mesh (all nodes on two planes normal to x, y or z, in pairs) is deformed.
+  enum OneCellThickModes
+  {
+    DETECT = 0, ///< as a 2D mesh when it is one cell thick (default)
+    OFF = 1,    ///< always as a 3D mesh
+    ON = 2      ///< as a 2D mesh; an error when it is not one cell thick
+  };
+
+  ///@{
+  /**
+   * One-cell-thick 2D meshes (OpenFOAM's 2D cases, between two `empty` patches): deformed as the
+   * 2D mesh of one layer, whose in-plane motion both layers take bit for bit; the coordinate
+   * across the layers is kept. The two planes are not boundaries (without names or a marker, the
+   * boundary is the faces across them). The motion must stay in the plane (a rotation about the
+   * axis across the layers). Not in distributed runs (there the mesh is 3D). Default: DETECT.
+   */
+  vtkSetClampMacro(OneCellThickMode, int, DETECT, ON);
+  vtkGetMacro(OneCellThickMode, int);
+  ///@}
+
+  ///@{
+  /**
    * Convenience for SetInputArrayToProcess: the point array with the shape-deformation
    * displacement (index 0), the boundary-marker point array (index 1) and the body-id point array
    * (index 2: 0 = not on a moving body, 1, 2, ... = the moving body; DGMF only: each body gets its
@@ -414,13 +462,15 @@ protected:
   bool ComputeQuality = true;
   bool FailOnInvertedCells = false;
   int NumberOfThreads = 0;
+  int OneCellThickMode = DETECT;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
   void operator=(const vtkDGMFDeformFilter&) = delete;
 
-  int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+  int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
+    const dgmf_vtk::CompositeMesh* composite);
 
   struct Internals; ///< the caches (graph, r and f, boundary, output points) and body motions
   std::unique_ptr<Internals> Internal;

@@ -223,9 +223,8 @@ TEST(OutputArrays, ReportsSummariesAndLocalNodesUnderTheSharedNames)
   dgmf_vtk::FieldArrays fields;
   fields.Reset(6);
   fields.Store(dgmf::names::F, dgmf::FieldKey{ 1.0, 1 })[3] = 0.25;
-  dgmf::MethodNeeds needs;
-  needs.Graph = needs.F = true;
-  dgmf_vtk::AddMethodResults(grid, needs, fields, dgmf::DeformationReport(), "DGMF", true, 4);
+  dgmf_vtk::AddMethodResults(grid, nullptr, fields.GetArray(dgmf::names::F),
+    dgmf::DeformationReport(), true, true, "DGMF", 4);
   vtkDataArray* f = grid->GetPointData()->GetArray("f");
   ASSERT_TRUE(f);
   EXPECT_EQ(f->GetNumberOfTuples(), 4);
@@ -276,9 +275,10 @@ TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)
   auto grid = TwoSquares();
   dgmf_vtk::InputGatherer gatherer;
   dgmf_vtk::InputNodes nodes;
-  dgmf_vtk::SelectedArrays arrays;
-  arrays.Marker = "BoundaryMarker";
-  gatherer.Gather(grid, arrays, 0, false, nodes);
+  dgmf_vtk::GatherOptions options;
+  options.Arrays.Marker = "BoundaryMarker";
+  const dgmf_vtk::SelectedArrays arrays = options.Arrays;
+  gatherer.Gather(grid, options, nodes);
   EXPECT_EQ(nodes.NumberOfNodes, 6u);
   EXPECT_EQ(nodes.Dimension, 2);
   EXPECT_EQ(nodes.Kinds[2], dgmf::NodeKind::MovingBoundary);
@@ -288,7 +288,9 @@ TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)
     try
     {
       dgmf_vtk::InputNodes ignored;
-      gatherer.Gather(grid, selected, 0, false, ignored);
+      dgmf_vtk::GatherOptions given;
+      given.Arrays = selected;
+      gatherer.Gather(grid, given, ignored);
     }
     catch (const std::invalid_argument& e)
     {

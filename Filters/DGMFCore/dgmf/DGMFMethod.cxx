@@ -164,6 +164,12 @@ void DeformLargeMotion(const DeformationProblem& problem, const DelaunayMapping&
   parameters.RepairPasses = p.RepairPasses;
   parameters.Damping = p.Damping;
   parameters.StaticR0 = p.StaticR0;
+  if (!problem.Slip.Empty())
+  {
+    // Every step keeps the slip nodes in their planes (before the quality guard sees the step).
+    parameters.Constrain = [&problem](double* deformed)
+    { problem.Slip.Apply(problem.Points, deformed); };
+  }
   const SubStepReport steps = DeformInSubSteps(problem.Dimension, problem.Points,
     problem.NumberOfNodes, problem.Kinds, *problem.Cells, problem.Motions.front(),
     problem.Displacement, parameters, outputs.Points, parallelFor, &mapping);
@@ -197,14 +203,14 @@ public:
     return needs;
   }
 
-  DeformationReport Deform(const DeformationProblem& problem, const DelaunayMapping* mapping,
+protected:
+  DeformationReport DeformNodes(const DeformationProblem& problem, const DelaunayMapping* mapping,
     const DeformationOutputs& outputs, const ParallelFor& parallelFor) const override
   {
     DeformationReport report;
-    report.Warnings = ValidateProblem(problem, false);
-    if (!mapping || !outputs.Points || !outputs.Fields)
+    if (!outputs.Fields)
     {
-      throw std::invalid_argument("DGMF needs the Delaunay mapping, the output points and r, f");
+      throw std::invalid_argument("DGMF needs a store for r and f (DeformationOutputs::Fields)");
     }
     const MethodParameters& p = this->Parameters;
     if (p.UsesSubSteps())

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace dgmf
 {
@@ -43,6 +44,23 @@ void CheckParameters(const MethodParameters& p)
     "IDW's reference length must be >= 0 (0: automatic)");
 }
 } // namespace
+
+DeformationReport DeformationMethod::Deform(const DeformationProblem& problem,
+  const DelaunayMapping* mapping, const DeformationOutputs& outputs,
+  const ParallelFor& parallelFor) const
+{
+  const std::vector<std::string> warnings =
+    ValidateProblem(problem, !this->GetNeeds(problem).Graph);
+  if (!outputs.Points || (this->GetNeeds(problem).Graph && !mapping))
+  {
+    throw std::invalid_argument(std::string(this->GetInfo().Name) + " needs the output points" +
+      (this->GetNeeds(problem).Graph ? " and the Delaunay mapping" : ""));
+  }
+  DeformationReport report = this->DeformNodes(problem, mapping, outputs, parallelFor);
+  problem.Slip.Apply(problem.Points, outputs.Points);
+  report.Warnings.insert(report.Warnings.begin(), warnings.begin(), warnings.end());
+  return report;
+}
 
 std::unique_ptr<DeformationMethod> CreateMethod(Method method, const MethodParameters& parameters)
 {

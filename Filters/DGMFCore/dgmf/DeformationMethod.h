@@ -168,12 +168,18 @@ public:
   virtual MethodNeeds GetNeeds(const DeformationProblem& problem) const = 0;
 
   /**
-   * Checks `problem` (ValidateProblem) and moves every node: `outputs.Points` receives the new
-   * positions. `mapping` is the DelaunayMapping of the problem's points and kinds when
-   * GetNeeds().Graph (else ignored). Throws std::invalid_argument for a bad problem and
-   * std::runtime_error when the method fails (e.g. an RBF system that cannot be solved).
+   * Checks `problem` (ValidateProblem), moves every node (DeformNodes): `outputs.Points` receives
+   * the new positions; then keeps the slip nodes in their planes (DeformationProblem::Slip).
+   * `mapping` is the DelaunayMapping of the problem's points and kinds when GetNeeds().Graph
+   * (else ignored). Throws std::invalid_argument for a bad problem and std::runtime_error when
+   * the method fails (e.g. an RBF system that cannot be solved).
    */
-  virtual DeformationReport Deform(const DeformationProblem& problem,
+  DeformationReport Deform(const DeformationProblem& problem, const DelaunayMapping* mapping,
+    const DeformationOutputs& outputs, const ParallelFor& parallelFor) const;
+
+protected:
+  /// The method's own deformation of every node, of a checked problem.
+  virtual DeformationReport DeformNodes(const DeformationProblem& problem,
     const DelaunayMapping* mapping, const DeformationOutputs& outputs,
     const ParallelFor& parallelFor) const = 0;
 };

@@ -23,7 +23,8 @@ void ThrowBadMarkerValue(double value, std::size_t node)
 {
   throw std::invalid_argument("has the value " + Number(value) + " at point " +
     std::to_string(node) +
-    "; allowed values are 0 (interior), 1 (static boundary) and 2 (moving boundary)");
+    "; allowed values are 0 (interior), 1 (static boundary), 2 (moving boundary) and 3 (slip "
+    "boundary)");
 }
 
 std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints)
@@ -87,6 +88,21 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
           "): it can only rotate about z and translate in x and y. Set the rotation angles "
           "about x and y and the z translation to 0.");
       }
+    }
+  }
+  const SlipConstraint& slip = problem.Slip;
+  if (slip.NodePlanes.size() != slip.Nodes.size())
+  {
+    throw std::invalid_argument("every slip node needs its plane");
+  }
+  for (std::size_t k = 0; k < slip.Nodes.size(); ++k)
+  {
+    const auto node = static_cast<std::size_t>(slip.Nodes[k]);
+    if (slip.Nodes[k] < 0 || node >= n || problem.Kinds[node] != NodeKind::SlipBoundary ||
+      slip.NodePlanes[k] < 0 || static_cast<std::size_t>(slip.NodePlanes[k]) >= slip.Planes.size())
+    {
+      throw std::invalid_argument("slip node " + std::to_string(slip.Nodes[k]) +
+        " is not a slip boundary node, or has no plane");
     }
   }
   std::vector<std::string> warnings;

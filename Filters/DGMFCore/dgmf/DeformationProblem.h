@@ -10,6 +10,7 @@
 #include "dgmf/CellMesh.h"
 #include "dgmf/NodeKind.h"
 #include "dgmf/RigidMotion.h"
+#include "dgmf/SlipPlanes.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -39,6 +40,8 @@ struct DeformationProblem
   bool ExtractRigidMotion = false;
   const CellMesh* Cells = nullptr;         ///< the cells (MethodNeeds::Cells), or null
   const double* BoundaryWeights = nullptr; ///< per node: boundary area or length (IDW), or null
+  /// The slip (symmetry) boundaries: their SlipBoundary nodes stay in their planes.
+  SlipConstraint Slip;
 
   /// True when each moving body is handled apart: body ids are given, or the motions extracted.
   bool UsesBodies() const { return this->NumberOfBodies > 0 || this->ExtractRigidMotion; }
@@ -48,8 +51,9 @@ struct DeformationProblem
  * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
  * std::invalid_argument, with a message for the user, for: a dimension other than 2 or 3, no node,
  * missing points or kinds, a displacement that is not finite, or not in the plane of a 2D mesh,
- * too few rigid motions for the bodies, and a rigid motion that is not finite, turns beyond
- * +-720 degrees, or leaves the plane of a 2D mesh. With `checkPoints`, also non-finite point
+ * too few rigid motions for the bodies, a rigid motion that is not finite, turns beyond
+ * +-720 degrees, or leaves the plane of a 2D mesh, and slip nodes that are not SlipBoundary nodes
+ * or have no plane. With `checkPoints`, also non-finite point
  * coordinates (the graph methods check them when the graph is built: DelaunayMapping).
  */
 std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints);
@@ -62,7 +66,8 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
 BoundaryMotion GatherTotalBoundaryMotion(const DeformationProblem& problem);
 
 /**
- * Node kinds from boundary-marker values of any numeric type (0 interior, 1 static, 2 moving).
+ * Node kinds from boundary-marker values of any numeric type (0 interior, 1 static, 2 moving,
+ * 3 slip).
  * Throws std::invalid_argument naming the first other value and its node; the message continues
  * a sentence that names the array ("The boundary-marker array 'X' has the value ...").
  */
@@ -73,7 +78,7 @@ void MarkerToNodeKinds(const Values& values, NodeKind* kinds)
   for (const auto value : values)
   {
     const double v = static_cast<double>(value);
-    if (v != 0.0 && v != 1.0 && v != 2.0)
+    if (v != 0.0 && v != 1.0 && v != 2.0 && v != 3.0)
     {
       ThrowBadMarkerValue(v, i);
     }

@@ -61,17 +61,12 @@ public:
     return needs;
   }
 
-  DeformationReport Deform(const DeformationProblem& problem, const DelaunayMapping* mapping,
+protected:
+  DeformationReport DeformNodes(const DeformationProblem& problem, const DelaunayMapping* mapping,
     const DeformationOutputs& outputs, const ParallelFor& parallelFor) const override
   {
     const bool graph = this->GetInfo().UsesGraph;
     DeformationReport report;
-    report.Warnings = ValidateProblem(problem, !graph);
-    if (!outputs.Points || (graph && !mapping))
-    {
-      throw std::invalid_argument(std::string(this->GetInfo().Name) + " needs the output points" +
-        (graph ? " and the Delaunay mapping" : ""));
-    }
     BoundaryMotion boundary = GatherTotalBoundaryMotion(problem);
     const MethodParameters& p = this->Parameters;
     const std::size_t n = problem.NumberOfNodes;

@@ -16,16 +16,22 @@ enum class NodeKind : std::uint8_t
 {
   Interior = 0,       ///< moves according to the method (not a vertex of the Delaunay graph)
   StaticBoundary = 1, ///< boundary node that stays where it is (r0 = r0s)
-  MovingBoundary = 2  ///< boundary node with a prescribed motion (r0 = 0)
+  MovingBoundary = 2, ///< boundary node with a prescribed motion (r0 = 0)
+  /**
+   * Node of a slip (symmetry) boundary: it moves as an interior node does, and then only within
+   * the boundary's plane (DeformationProblem::SlipPlanes). Not a vertex of the Delaunay graph;
+   * never moved by the quality guard.
+   */
+  SlipBoundary = 3
 };
 
-/// True for both kinds of boundary node (the vertices of the Delaunay graph).
+/// True for the nodes whose motion is prescribed (static or moving): the Delaunay graph's vertices.
 inline bool IsBoundary(NodeKind kind)
 {
-  return kind != NodeKind::Interior;
+  return kind == NodeKind::StaticBoundary || kind == NodeKind::MovingBoundary;
 }
 
-/// Throws std::invalid_argument for a boundary-marker value other than 0, 1 and 2 at `node`.
+/// Throws std::invalid_argument for a boundary-marker value other than 0 to 3 at `node`.
 [[noreturn]] void ThrowBadMarkerValue(double value, std::size_t node);
 
 } // namespace dgmf

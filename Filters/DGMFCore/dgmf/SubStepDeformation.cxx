@@ -180,6 +180,10 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
         std::copy(nextPath.begin() + 3 * i, nextPath.begin() + 3 * i + 3, trial.begin() + 3 * i);
       }
     }
+    if (parameters.Constrain)
+    {
+      parameters.Constrain(trial.data());
+    }
     // The quality guard (with 0 passes it only counts the bad cells), then in automatic mode the
     // step's acceptance: a step is too long when the mesh it leaves, repaired if the guard is on,
     // still has a bad cell, and halving it is worth trying.

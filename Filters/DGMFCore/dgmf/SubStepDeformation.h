@@ -13,6 +13,7 @@
 #include "dgmf/RigidMotion.h"
 
 #include <cstddef>
+#include <functional>
 
 namespace dgmf
 {
@@ -34,6 +35,9 @@ struct SubStepParameters
   int RepairPasses = 20; ///< RepairParameters::MaximumPasses
   DampingFunction Damping = DampingFunction::U1;
   double StaticR0 = 1.0;
+  /// If set, applied to the mesh after each step's deformation, before the quality guard (e.g.
+  /// SlipConstraint::Apply: slip nodes back into their planes).
+  std::function<void(double* deformed)> Constrain;
 };
 
 /// What DeformInSubSteps did.

@@ -1,0 +1,247 @@
+#include "dgmf/ExtrudedLayers.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <unordered_map>
+
+namespace dgmf
+{
+namespace
+{
+/// The in-plane coordinates of a node as a hashable key (bit patterns; -0 and +0 alike).
+struct PlaneKey
+{
+  std::uint64_t U, V;
+  bool operator==(const PlaneKey& other) const { return this->U == other.U && this->V == other.V; }
+};
+
+struct PlaneKeyHash
+{
+  std::size_t operator()(const PlaneKey& key) const
+  {
+    std::uint64_t h = (key.U ^ 0x9e3779b97f4a7c15ull) * 0xff51afd7ed558ccdull;
+    h = (h ^ key.V ^ (h >> 29)) * 0xc4ceb9fe1a85ec53ull;
+    return static_cast<std::size_t>(h ^ (h >> 32));
+  }
+};
+
+std::uint64_t Bits(double value)
+{
+  value = value == 0.0 ? 0.0 : value;
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
+}
+
+/// Rank of a kind in a merged layer node: moving over static over slip over interior.
+int Rank(NodeKind kind)
+{
+  switch (kind)
+  {
+    case NodeKind::MovingBoundary:
+      return 3;
+    case NodeKind::StaticBoundary:
+      return 2;
+    case NodeKind::SlipBoundary:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
+void TurnMotion(int axis, RigidMotion& motion)
+{
+  double v[3];
+  for (double* vector : { motion.Translation, motion.Center, motion.AnglesDegrees, motion.Axis })
+  {
+    ToLayer(axis, vector, v);
+    std::copy(v, v + 3, vector);
+  }
+}
+} // namespace
+
+void ToLayer(int axis, const double in[3], double out[3])
+{
+  const double u = in[(axis + 1) % 3], v = in[(axis + 2) % 3], w = in[axis];
+  out[0] = u;
+  out[1] = v;
+  out[2] = w;
+}
+
+void FromLayer(int axis, const double in[3], double out[3])
+{
+  const double u = in[0], v = in[1], w = in[2];
+  out[(axis + 1) % 3] = u;
+  out[(axis + 2) % 3] = v;
+  out[axis] = w;
+}
+
+ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n)
+{
+  ExtrudedLayers layers;
+  if (n < 6 || n % 2 != 0)
+  {
+    return layers;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    // Exactly two coordinates along the axis.
+    const double first = points[axis];
+    double second = first;
+    bool two = true;
+    for (std::size_t i = 1; i < n && two; ++i)
+    {
+      const double value = points[3 * i + axis];
+      if (value != first)
+      {
+        second = second == first ? value : second;
+        two = value == second;
+      }
+    }
+    if (!two || second == first)
+    {
+      continue;
+    }
+    const double low = std::min(first, second), high = std::max(first, second);
+    // Pair the nodes of the two planes by their in-plane coordinates.
+    std::unordered_map<PlaneKey, std::int32_t, PlaneKeyHash> front;
+    front.reserve(n / 2);
+    std::vector<std::int32_t> layer(n, -1);
+    std::vector<std::int32_t> frontNodes;
+    frontNodes.reserve(n / 2);
+    bool paired = true;
+    for (std::size_t i = 0; i < n && paired; ++i)
+    {
+      if (points[3 * i + axis] == low)
+      {
+        const PlaneKey key{ Bits(points[3 * i + (axis + 1) % 3]),
+          Bits(points[3 * i + (axis + 2) % 3]) };
+        paired = front.emplace(key, static_cast<std::int32_t>(frontNodes.size())).second;
+        layer[i] = static_cast<std::int32_t>(frontNodes.size());
+        frontNodes.push_back(static_cast<std::int32_t>(i));
+      }
+    }
+    std::vector<std::uint8_t> taken(frontNodes.size(), 0);
+    for (std::size_t i = 0; i < n && paired; ++i)
+    {
+      if (points[3 * i + axis] == high)
+      {
+        const PlaneKey key{ Bits(points[3 * i + (axis + 1) % 3]),
+          Bits(points[3 * i + (axis + 2) % 3]) };
+        const auto found = front.find(key);
+        paired = found != front.end() && !taken[static_cast<std::size_t>(found->second)];
+        if (paired)
+        {
+          taken[static_cast<std::size_t>(found->second)] = 1;
+          layer[i] = found->second;
+        }
+      }
+    }
+    if (paired && frontNodes.size() * 2 == n)
+    {
+      layers.Axis = axis;
+      layers.Low = low;
+      layers.High = high;
+      layers.Front = std::move(frontNodes);
+      layers.Layer = std::move(layer);
+      return layers;
+    }
+  }
+  return layers;
+}
+
+DeformationProblem ReduceToLayer(
+  const ExtrudedLayers& layers, const DeformationProblem& problem, LayerProblemStorage& storage)
+{
+  const int axis = layers.Axis;
+  const std::size_t m = layers.Front.size();
+  const std::size_t n = problem.NumberOfNodes;
+  storage.Points.resize(3 * m);
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    ToLayer(
+      axis, problem.Points + 3 * static_cast<std::size_t>(layers.Front[k]), &storage.Points[3 * k]);
+  }
+  storage.Kinds.assign(m, NodeKind::Interior);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    NodeKind& kind = storage.Kinds[static_cast<std::size_t>(layers.Layer[i])];
+    kind = Rank(problem.Kinds[i]) > Rank(kind) ? problem.Kinds[i] : kind;
+  }
+  DeformationProblem layer = problem;
+  layer.Dimension = 2;
+  layer.NumberOfNodes = m;
+  layer.Points = storage.Points.data();
+  layer.Kinds = storage.Kinds.data();
+  layer.Cells = nullptr;
+  layer.BoundaryWeights = nullptr;
+  if (problem.Displacement)
+  {
+    storage.Displacement.resize(3 * m);
+    for (std::size_t k = 0; k < m; ++k)
+    {
+      ToLayer(axis, problem.Displacement + 3 * static_cast<std::size_t>(layers.Front[k]),
+        &storage.Displacement[3 * k]);
+    }
+    layer.Displacement = storage.Displacement.data();
+  }
+  if (problem.BodyIds)
+  {
+    storage.BodyIds.assign(m, 0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      std::int32_t& id = storage.BodyIds[static_cast<std::size_t>(layers.Layer[i])];
+      id = id != 0 ? id : problem.BodyIds[i];
+    }
+    layer.BodyIds = storage.BodyIds.data();
+  }
+  for (RigidMotion& motion : layer.Motions)
+  {
+    TurnMotion(axis, motion);
+  }
+  layer.Slip = SlipConstraint();
+  for (const SlipPlane& plane : problem.Slip.Planes)
+  {
+    SlipPlane turned;
+    ToLayer(axis, plane.Point, turned.Point);
+    ToLayer(axis, plane.Normal, turned.Normal);
+    turned.Axis = plane.Axis < 0 ? -1 : (plane.Axis - axis + 2) % 3; // u -> 0, v -> 1, w -> 2
+    layer.Slip.Planes.push_back(turned);
+  }
+  std::vector<std::uint8_t> listed(m, 0);
+  for (std::size_t s = 0; s < problem.Slip.Nodes.size(); ++s)
+  {
+    const auto k =
+      static_cast<std::size_t>(layers.Layer[static_cast<std::size_t>(problem.Slip.Nodes[s])]);
+    if (!listed[k] && storage.Kinds[k] == NodeKind::SlipBoundary)
+    {
+      listed[k] = 1;
+      layer.Slip.Nodes.push_back(static_cast<std::int32_t>(k));
+      layer.Slip.NodePlanes.push_back(problem.Slip.NodePlanes[s]);
+    }
+  }
+  return layer;
+}
+
+void ExpandFromLayer(
+  const ExtrudedLayers& layers, const double* points, const double* deformedLayer, double* deformed)
+{
+  const std::size_t n = layers.Layer.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    FromLayer(
+      layers.Axis, deformedLayer + 3 * static_cast<std::size_t>(layers.Layer[i]), deformed + 3 * i);
+    deformed[3 * i + layers.Axis] = points[3 * i + layers.Axis];
+  }
+}
+
+void ExpandValuesFromLayer(const ExtrudedLayers& layers, const double* layerValues, double* values)
+{
+  for (std::size_t i = 0; i < layers.Layer.size(); ++i)
+  {
+    values[i] = layerValues[static_cast<std::size_t>(layers.Layer[i])];
+  }
+}
+
+} // namespace dgmf

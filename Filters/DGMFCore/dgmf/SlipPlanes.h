@@ -1,0 +1,56 @@
+/**
+ * @file SlipPlanes.h
+ * @brief Slip (symmetry) boundaries: their planes, and the projection that keeps their nodes in
+ * them.
+ */
+#ifndef dgmf_SlipPlanes_h
+#define dgmf_SlipPlanes_h
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dgmf
+{
+
+/// The plane of a slip boundary: a point on it and its unit normal.
+struct SlipPlane
+{
+  double Point[3] = { 0.0, 0.0, 0.0 };
+  double Normal[3] = { 0.0, 0.0, 1.0 };
+  /// 0, 1 or 2 when the plane is normal to that coordinate axis exactly (every node has the same
+  /// coordinate there): the projection then keeps that coordinate bit for bit; -1 otherwise.
+  int Axis = -1;
+};
+
+/**
+ * The plane through the nodes `nodes[0..count)` of `points` (3 coordinates per node): their
+ * centroid and the direction of least spread (the covariance's smallest eigenvector), or exactly
+ * a coordinate axis when the nodes share that coordinate. Throws std::invalid_argument, naming the
+ * boundary `name`, when there are fewer than 3 nodes, when they lie on a line, or when a node is
+ * farther than `relativeTolerance` times the nodes' extent from the plane ("not planar").
+ */
+SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::size_t count,
+  const std::string& name, double relativeTolerance = 1e-9);
+
+/// The nodes of the slip boundaries and the plane each one stays in.
+struct SlipConstraint
+{
+  std::vector<SlipPlane> Planes;
+  std::vector<std::int32_t> Nodes;      ///< SlipBoundary nodes
+  std::vector<std::int32_t> NodePlanes; ///< the plane of each of Nodes (index into Planes)
+
+  bool Empty() const { return this->Nodes.empty(); }
+
+  /**
+   * Moves every slip node of `deformed` back into its plane: the component of its displacement
+   * (deformed - points) along the plane's normal is removed; with an axis-aligned plane the
+   * node's coordinate along the axis is its original one, bit for bit.
+   */
+  void Apply(const double* points, double* deformed) const;
+};
+
+} // namespace dgmf
+
+#endif

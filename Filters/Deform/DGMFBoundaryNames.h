@@ -1,0 +1,61 @@
+/**
+ * @file DGMFBoundaryNames.h
+ * @brief Boundaries chosen by name on composite input (the OpenFOAM reader's patches, Exodus side
+ * sets, any named block): which merged nodes move, stay or slip (private to the DGMF::Filters
+ * module).
+ */
+#ifndef DGMFBoundaryNames_h
+#define DGMFBoundaryNames_h
+
+#include "dgmf/ExtrudedLayers.h"
+#include "dgmf/NodeKind.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dgmf_vtk
+{
+class CompositeMesh;
+
+/**
+ * Blocks chosen by name: each entry is a plain block name ("wing"; an OpenFOAM region name such
+ * as "patch/wing" works too), or a selector of the input's hierarchy ("/Root/boundary/wing", or
+ * any vtkDataAssembly path query such as "//wing", as ParaView's block tree gives them).
+ */
+struct BoundarySelection
+{
+  std::vector<std::string> Moving; ///< one moving body each, in order (body 1, 2, ...)
+  std::vector<std::string> Static;
+  std::vector<std::string> Slip; ///< each a plane the nodes slide in
+
+  bool Empty() const { return this->Moving.empty() && this->Static.empty() && this->Slip.empty(); }
+};
+
+/// The role of every merged node, from the selection.
+struct NodeRoles
+{
+  std::vector<dgmf::NodeKind> Kinds;
+  std::vector<std::int32_t> BodyIds;                ///< with several moving bodies, else empty
+  std::vector<std::vector<std::int32_t>> SlipNodes; ///< per slip entry, its slip nodes
+  std::vector<std::string> SlipNames;               ///< the entries, for messages
+};
+
+/**
+ * The roles of `mesh`'s merged nodes. A node's role comes from the blocks that contain it: a
+ * moving block (the first one listed wins between two bodies), over a static one, over a slip
+ * one; a node on two slip blocks is static. Boundary blocks that are not selected (blocks whose
+ * cells are of a lower dimension than the mesh's: OpenFOAM patches, side sets) are static, except
+ * the two planes of a one-cell-thick mesh (`layers`, if Found()), which are not boundaries.
+ * Throws std::invalid_argument for an entry that matches no block; the message lists the names
+ * of the input's blocks.
+ */
+NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
+  const dgmf::ExtrudedLayers& layers);
+
+/// The names of the blocks of `mesh` (the merged leaves), for messages.
+std::string ListBlockNames(const CompositeMesh& mesh);
+
+} // namespace dgmf_vtk
+
+#endif

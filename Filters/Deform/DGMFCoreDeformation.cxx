@@ -1,0 +1,181 @@
+#include "DGMFCoreDeformation.h"
+
+#include "DGMFBoundaryDetection.h"
+#include "DGMFMeshConversion.h"
+
+#include "dgmf/ExtrudedLayers.h"
+#include "dgmf/ResultNames.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace dgmf_vtk
+{
+namespace
+{
+/// The boundary facets of a one-cell-thick mesh that lie on one of its two planes (`onPlane`) or
+/// across them (the others).
+BoundaryFacets SelectFacets(const BoundaryFacets& facets, const double* points,
+  const dgmf::ExtrudedLayers& layers, bool onPlane, double plane)
+{
+  BoundaryFacets selected;
+  for (std::size_t f = 0; f < facets.Size(); ++f)
+  {
+    const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
+    const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
+    const auto at = [&](double value)
+    {
+      return std::all_of(
+        begin, end, [&](vtkIdType id) { return points[3 * id + layers.Axis] == value; });
+    };
+    const bool planar = onPlane ? at(plane) : (at(layers.Low) || at(layers.High));
+    if (planar == onPlane)
+    {
+      selected.Ids.insert(selected.Ids.end(), begin, end);
+      selected.Offsets.push_back(static_cast<vtkIdType>(selected.Ids.size()));
+    }
+  }
+  return selected;
+}
+
+/// The 2D cells of a one-cell-thick mesh's first layer: its faces on the Low plane.
+dgmf::CellMesh LayerCells(
+  const BoundaryFacets& facets, const double* points, const dgmf::ExtrudedLayers& layers)
+{
+  const BoundaryFacets front = SelectFacets(facets, points, layers, true, layers.Low);
+  dgmf::CellMesh cells;
+  cells.NumberOfPoints = layers.Front.size();
+  cells.Offsets.push_back(0);
+  for (std::size_t f = 0; f < front.Size(); ++f)
+  {
+    const vtkIdType count = front.Offsets[f + 1] - front.Offsets[f];
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      cells.Connectivity.push_back(
+        layers.Layer[static_cast<std::size_t>(front.Ids[front.Offsets[f] + k])]);
+    }
+    cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
+    cells.Shapes.push_back(count == 4 ? dgmf::CellShape::Quad : dgmf::CellShape::Triangle);
+    cells.Covered.push_back(count == 3 || count == 4 ? 1 : 0);
+  }
+  return cells;
+}
+
+/// A new point array `name` with the layer's values for every node of both layers.
+vtkSmartPointer<vtkDoubleArray> Expanded(
+  vtkDoubleArray* layerValues, const dgmf::ExtrudedLayers& layers, const char* name)
+{
+  auto values = vtkSmartPointer<vtkDoubleArray>::New();
+  values->SetName(name);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(layers.Layer.size()));
+  dgmf::ExpandValuesFromLayer(layers, layerValues->GetPointer(0), values->GetPointer(0));
+  return values;
+}
+} // namespace
+
+CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
+  const dgmf::DeformationProblem& problem, const InputNodes& nodes, vtkUnstructuredGrid* mesh,
+  bool distributed, DeformationCaches& caches, vtkDoubleArray* deformed,
+  const dgmf::ParallelFor& parallelFor, const std::function<bool(double)>& proceed)
+{
+  CoreDeformation result;
+  const dgmf::ExtrudedLayers& layers = nodes.Layers;
+  const bool extruded = layers.Found();
+  dgmf::LayerProblemStorage storage;
+  dgmf::DeformationProblem solved =
+    extruded ? dgmf::ReduceToLayer(layers, problem, storage) : problem;
+  result.Needs = method.GetNeeds(solved);
+  const dgmf::MethodNeeds& needs = result.Needs;
+  dgmf::CellMesh cells;
+  if (needs.Cells)
+  {
+    if (distributed)
+    {
+      throw std::invalid_argument(
+        "Sub-steps and the quality guard are not available in distributed runs.");
+    }
+    cells = extruded
+      ? LayerCells(caches.Inputs.GetBoundaryFacets(mesh, nodes.Dimension), nodes.Points, layers)
+      : ToCellMesh(mesh);
+    solved.Cells = &cells;
+  }
+  std::vector<double> weights;
+  if (needs.BoundaryWeights)
+  {
+    const BoundaryFacets& facets = caches.Inputs.GetBoundaryFacets(mesh, nodes.Dimension);
+    weights = ComputeBoundaryNodeWeights(
+      extruded ? SelectFacets(facets, nodes.Points, layers, false, 0.0) : facets, nodes.Points,
+      static_cast<vtkIdType>(nodes.NumberOfNodes), nodes.Dimension);
+    if (extruded) // a layer node stands for itself and its partner
+    {
+      std::vector<double> layerWeights(layers.Front.size(), 0.0);
+      for (std::size_t i = 0; i < weights.size(); ++i)
+      {
+        layerWeights[static_cast<std::size_t>(layers.Layer[i])] += weights[i];
+      }
+      weights.swap(layerWeights);
+    }
+    solved.BoundaryWeights = weights.data();
+  }
+  std::vector<double> layerDeformed(extruded ? 3 * solved.NumberOfNodes : 0);
+  double* out = extruded ? layerDeformed.data() : deformed->GetPointer(0);
+
+  const dgmf::DelaunayMapping* mapping = nullptr;
+  if (needs.Graph)
+  {
+    // A new graph: r and f are computed anew, and their arrays and the output points are first
+    // touched while the graph is built (on another thread), off the critical path.
+    mapping = &caches.Mapping.Update(
+      solved, mesh->GetPoints()->GetData(), extruded ? 0 : HintStrideOf(mesh),
+      [&]()
+      {
+        caches.Fields.Reset(solved.NumberOfNodes);
+        std::vector<vtkDoubleArray*> touched = caches.Fields.Prepare(needs.R, needs.F);
+        touched.push_back(deformed);
+        return touched;
+      },
+      parallelFor, result.GraphReused, result.Report.Warnings);
+    if (!result.GraphReused)
+    {
+      result.GraphSeconds = mapping->GetGraphSeconds();
+      result.LocationSeconds = mapping->GetLocationSeconds();
+    }
+  }
+  if (!proceed(0.6))
+  {
+    result.Aborted = true;
+    return result;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  dgmf::DeformationReport report =
+    method.Deform(solved, mapping, dgmf::DeformationOutputs{ out, &caches.Fields }, parallelFor);
+  result.DeformationSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.GraphSeconds += report.GraphSeconds;
+  result.LocationSeconds += report.LocationSeconds;
+  report.Warnings.insert(
+    report.Warnings.begin(), result.Report.Warnings.begin(), result.Report.Warnings.end());
+  result.Report = std::move(report);
+  if (needs.R)
+  {
+    vtkDoubleArray* r = caches.Fields.GetArray(dgmf::names::R);
+    result.R = extruded ? Expanded(r, layers, dgmf::names::R) : vtkSmartPointer<vtkDoubleArray>(r);
+  }
+  if (needs.F)
+  {
+    vtkDoubleArray* f = caches.Fields.GetArray(dgmf::names::F);
+    result.F = extruded ? Expanded(f, layers, dgmf::names::F) : vtkSmartPointer<vtkDoubleArray>(f);
+  }
+  if (extruded)
+  {
+    dgmf::ExpandFromLayer(layers, nodes.Points, layerDeformed.data(), deformed->GetPointer(0));
+  }
+  return result;
+}
+
+} // namespace dgmf_vtk

@@ -1,0 +1,65 @@
+/**
+ * @file DGMFCoreDeformation.h
+ * @brief Step 3 of vtkDGMFDeformFilter: the deformation of the gathered nodes through the core's
+ * method interface, with what the method needs (graph, cells, boundary weights) and the caches
+ * kept between executions (private to the DGMF::Filters module).
+ */
+#ifndef DGMFCoreDeformation_h
+#define DGMFCoreDeformation_h
+
+#include "DGMFInputNodes.h"
+#include "DGMFMappingCache.h"
+#include "DGMFOutputBuffers.h"
+
+#include "dgmf/DeformationMethod.h"
+#include "dgmf/ParallelFor.h"
+
+#include "vtkSmartPointer.h"
+
+#include <functional>
+
+class vtkDoubleArray;
+class vtkPoints;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/// What the filter keeps between executions.
+struct DeformationCaches
+{
+  InputGatherer Inputs;                    ///< marker kinds, boundary facets
+  MappingCache Mapping;                    ///< the graph and the node locations
+  FieldArrays Fields;                      ///< r and f, kept between motions
+  vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
+};
+
+/// The outcome of DeformThroughCore.
+struct CoreDeformation
+{
+  dgmf::DeformationReport Report;
+  dgmf::MethodNeeds Needs;
+  bool GraphReused = false;
+  double GraphSeconds = 0.0;            ///< graphs built (0 when the cached one was used)
+  double LocationSeconds = 0.0;         ///< their node location
+  double DeformationSeconds = 0.0;      ///< the method's deformation
+  bool Aborted = false;                 ///< `proceed` said to stop; nothing was deformed
+  vtkSmartPointer<vtkDoubleArray> R, F; ///< r and f for the output (one value per node), if written
+};
+
+/**
+ * Deforms `problem` (the gathered `nodes` with their motions) with `method`, writing 3 coordinates
+ * per node into `deformed`. The method's graph is the cached one while the nodes' points and kinds
+ * are unchanged; a one-cell-thick mesh (nodes.Layers) is deformed as the 2D mesh of its first
+ * layer, whose in-plane motion both layers take. `proceed(fraction)` reports progress and is
+ * asked after the graph whether to go on. Throws std::invalid_argument for what the method needs
+ * but a distributed run cannot give (cells), and as the core does.
+ */
+CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
+  const dgmf::DeformationProblem& problem, const InputNodes& nodes, vtkUnstructuredGrid* mesh,
+  bool distributed, DeformationCaches& caches, vtkDoubleArray* deformed,
+  const dgmf::ParallelFor& parallelFor, const std::function<bool(double)>& proceed);
+
+} // namespace dgmf_vtk
+
+#endif
