@@ -54,7 +54,7 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
-  if (!(spread[1] > 1e-20 * spread[2]) || !(extent > 0.0) || !std::isfinite(extent))
+  if (!(spread[1] > 1e-12 * spread[2]) || !(extent > 0.0) || !std::isfinite(extent))
   {
     throw std::invalid_argument(
       "The slip boundary '" + name + "' does not span a plane (its nodes lie on a line).");

@@ -1,0 +1,240 @@
+// Slip (symmetry) boundaries and one-cell-thick meshes in the core: slip nodes stay in their
+// planes to the bit or to round-off, a plane that is not one is refused, and the two layers of an
+// extruded mesh get the same in-plane motion bit for bit.
+#include "SyntheticNodes.h"
+
+#include "dgmf/DeformationMethod.h"
+#include "dgmf/DelaunayMapping.h"
+#include "dgmf/ExtrudedLayers.h"
+#include "dgmf/ResultNames.h"
+#include "dgmf/SlipPlanes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// A half model: a unit half sphere (moving, y >= 0) on the symmetry plane y = 0 of the half box
+/// [-5, 5] x [0, 5] x [-5, 5]: the box faces static but the y = 0 face, which slips; random
+/// interior nodes.
+dgmf_test::NodeSet HalfSphereInHalfBox(int interior = 2500)
+{
+  dgmf_test::NodeSet set;
+  set.Dimension = 3;
+  set.Add(0, 0, 1, dgmf::NodeKind::MovingBoundary);
+  set.Add(0, 0, -1, dgmf::NodeKind::MovingBoundary);
+  for (int i = 1; i < 8; ++i) // the half sphere y >= 0, its rim on the plane y = 0
+  {
+    const double theta = Pi * i / 8;
+    for (int j = 0; j <= 12; ++j)
+    {
+      const double phi = Pi * j / 12;
+      const double y = j == 0 || j == 12 ? 0.0 : std::sin(theta) * std::sin(phi);
+      set.Add(std::sin(theta) * std::cos(phi), y, std::cos(theta), dgmf::NodeKind::MovingBoundary);
+    }
+  }
+  const int m = 10;
+  for (int i = 0; i <= m; ++i)
+  {
+    for (int j = 0; j <= m / 2; ++j)
+    {
+      for (int k = 0; k <= m; ++k)
+      {
+        const bool face = i == 0 || i == m || j == 0 || j == m / 2 || k == 0 || k == m;
+        if (!face)
+        {
+          continue;
+        }
+        const double x = -5.0 + 10.0 * i / m, y = 10.0 * j / m, z = -5.0 + 10.0 * k / m;
+        const bool plane = j == 0 && i > 0 && i < m && k > 0 && k < m;
+        if (plane && x * x + z * z < 1.2 * 1.2)
+        {
+          continue; // the sphere's footprint
+        }
+        set.Add(x, y, z, plane ? dgmf::NodeKind::SlipBoundary : dgmf::NodeKind::StaticBoundary);
+      }
+    }
+  }
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-4.9, 4.9);
+  int added = 0;
+  while (added < interior)
+  {
+    const double x = coordinate(random), y = 0.5 * (coordinate(random) + 4.9),
+                 z = coordinate(random);
+    if (x * x + y * y + z * z > 1.15 * 1.15 && y > 0.01)
+    {
+      set.Add(x, y, z, dgmf::NodeKind::Interior);
+      ++added;
+    }
+  }
+  return set;
+}
+
+dgmf::SlipConstraint SlipOf(const dgmf_test::NodeSet& set)
+{
+  dgmf::SlipConstraint slip;
+  std::vector<std::int32_t> nodes;
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (set.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+    {
+      nodes.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  slip.Planes.push_back(dgmf::FitSlipPlane(set.Points.data(), nodes.data(), nodes.size(), "plane"));
+  slip.Nodes = nodes;
+  slip.NodePlanes.assign(nodes.size(), 0);
+  return slip;
+}
+
+template <typename Call>
+std::string Message(const Call& call)
+{
+  try
+  {
+    call();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    return e.what();
+  }
+  return "no error";
+}
+} // namespace
+
+TEST(SlipPlanes, AnAxisPlaneIsExactAndATiltedOneIsFitted)
+{
+  // Nodes on y = 0: the normal is exactly y.
+  std::vector<double> points = { 0, 0, 0, 1, 0, 0, 0, 0, 1, 2, 0, 3 };
+  const std::vector<std::int32_t> nodes = { 0, 1, 2, 3 };
+  dgmf::SlipPlane plane = dgmf::FitSlipPlane(points.data(), nodes.data(), 4, "y0");
+  EXPECT_EQ(plane.Axis, 1);
+  EXPECT_EQ(plane.Normal[1], 1.0);
+  // A tilted plane x + y + z = 1.
+  points = { 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0, 0.2, 0.3, 0.5 };
+  const std::vector<std::int32_t> five = { 0, 1, 2, 3, 4 };
+  plane = dgmf::FitSlipPlane(points.data(), five.data(), 5, "tilted");
+  EXPECT_EQ(plane.Axis, -1);
+  EXPECT_NEAR(std::abs(plane.Normal[0]), 1.0 / std::sqrt(3.0), 1e-15);
+  // A curved surface and a line are refused, with the boundary's name.
+  points[3 * 4 + 2] += 0.01;
+  EXPECT_NE(Message([&]() { dgmf::FitSlipPlane(points.data(), five.data(), 5, "wall"); })
+              .find("The slip boundary 'wall' is not planar"),
+    std::string::npos);
+  const std::vector<double> line = { 0, 0, 0, 1, 1, 1, 2, 2, 2 };
+  EXPECT_NE(Message([&]() { dgmf::FitSlipPlane(line.data(), nodes.data(), 3, "edge"); })
+              .find("does not span a plane"),
+    std::string::npos);
+}
+
+TEST(SlipPlanes, SlipNodesStayInTheirPlaneAndSlideWithTheBody)
+{
+  const dgmf_test::NodeSet set = HalfSphereInHalfBox();
+  const dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), dgmf::SerialFor);
+  dgmf::DeformationProblem problem;
+  problem.Dimension = 3;
+  problem.NumberOfNodes = set.Size();
+  problem.Points = set.Points.data();
+  problem.Kinds = set.Kinds.data();
+  problem.Motions[0].AnglesDegrees[1] = 30.0; // pitching about the plane's normal
+  problem.Slip = SlipOf(set);
+  ASSERT_EQ(problem.Slip.Planes[0].Axis, 1);
+  for (dgmf::Method method : { dgmf::Method::DGMF, dgmf::Method::DGM, dgmf::Method::IDW })
+  {
+    std::vector<double> deformed(set.Points.size());
+    dgmf::VectorFieldStore fields(set.Size());
+    dgmf::CreateMethod(method, dgmf::MethodParameters())
+      ->Deform(
+        problem, &mapping, dgmf::DeformationOutputs{ deformed.data(), &fields }, dgmf::SerialFor);
+    double slid = 0.0;
+    for (std::int32_t node : problem.Slip.Nodes)
+    {
+      const auto i = static_cast<std::size_t>(node);
+      ASSERT_EQ(deformed[3 * i + 1], set.Points[3 * i + 1]) << "node " << i; // y kept, bit for bit
+      slid = std::max(slid,
+        std::hypot(
+          deformed[3 * i] - set.Points[3 * i], deformed[3 * i + 2] - set.Points[3 * i + 2]));
+    }
+    EXPECT_GT(slid, 0.05) << dgmf::GetMethodInfo(method).Name; // they follow the body in the plane
+  }
+  // A tilted plane: the projection leaves them on it to round-off.
+  dgmf::SlipConstraint tilted;
+  dgmf::SlipPlane plane;
+  plane.Normal[0] = plane.Normal[1] = plane.Normal[2] = 1.0 / std::sqrt(3.0);
+  tilted.Planes.push_back(plane);
+  const std::vector<double> points = { 1, 0, 0 };
+  std::vector<double> moved = { 1.3, 0.2, -0.1 };
+  tilted.Nodes = { 0 };
+  tilted.NodePlanes = { 0 };
+  tilted.Apply(points.data(), moved.data());
+  EXPECT_NEAR((moved[0] + moved[1] + moved[2]) / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 1e-15);
+}
+
+TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
+{
+  // The circle in a square, extruded along x from -0.5 to 0.25: a one-cell-thick mesh.
+  const dgmf_test::NodeSet flat = dgmf_test::CircleInSquare(32, 10, 400);
+  dgmf_test::NodeSet layered;
+  layered.Dimension = 3;
+  for (double x : { -0.5, 0.25 })
+  {
+    for (std::size_t i = 0; i < flat.Size(); ++i)
+    {
+      // The 2D point (u, v) sits at (y, z) = (u, v): axis x, layer coordinates (y, z, x).
+      layered.Add(x, flat.Points[3 * i], flat.Points[3 * i + 1], flat.Kinds[i]);
+    }
+  }
+  const dgmf::ExtrudedLayers layers =
+    dgmf::FindExtrudedLayers(layered.Points.data(), layered.Size());
+  ASSERT_TRUE(layers.Found());
+  EXPECT_EQ(layers.Axis, 0);
+  EXPECT_EQ(layers.Low, -0.5);
+  EXPECT_EQ(layers.High, 0.25);
+  ASSERT_EQ(layers.Front.size(), flat.Size());
+  EXPECT_EQ(layers.Layer[flat.Size() + 7], 7); // node 7's partner on the other plane
+  // Not one cell thick: a node off the two planes.
+  dgmf_test::NodeSet broken = layered;
+  broken.Points[3 * 5] = 0.0;
+  EXPECT_FALSE(dgmf::FindExtrudedLayers(broken.Points.data(), broken.Size()).Found());
+
+  // A rotation about x of the layered mesh, through the layer: the same in-plane motion as the 2D
+  // mesh rotated about z, both layers alike, x kept.
+  dgmf::DeformationProblem problem;
+  problem.Dimension = 3;
+  problem.NumberOfNodes = layered.Size();
+  problem.Points = layered.Points.data();
+  problem.Kinds = layered.Kinds.data();
+  problem.Motions[0].AnglesDegrees[0] = 40.0;
+  dgmf::LayerProblemStorage storage;
+  const dgmf::DeformationProblem layer = dgmf::ReduceToLayer(layers, problem, storage);
+  EXPECT_EQ(layer.Dimension, 2);
+  EXPECT_EQ(layer.Motions[0].AnglesDegrees[2], 40.0);
+  const dgmf::DelaunayMapping mapping(
+    2, layer.Points, layer.NumberOfNodes, layer.Kinds, dgmf::SerialFor);
+  std::vector<double> layerDeformed(3 * layer.NumberOfNodes), deformed(layered.Points.size());
+  dgmf::VectorFieldStore fields(layer.NumberOfNodes);
+  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
+    ->Deform(
+      layer, &mapping, dgmf::DeformationOutputs{ layerDeformed.data(), &fields }, dgmf::SerialFor);
+  dgmf::ExpandFromLayer(layers, layered.Points.data(), layerDeformed.data(), deformed.data());
+  const std::size_t m = flat.Size();
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    ASSERT_EQ(deformed[3 * i], -0.5);
+    ASSERT_EQ(deformed[3 * (m + i)], 0.25);
+    ASSERT_EQ(std::memcmp(&deformed[3 * i + 1], &deformed[3 * (m + i) + 1], 2 * sizeof(double)), 0);
+  }
+  // The moving circle turned by 40 degrees about x (y towards z).
+  const double y = deformed[3 * 0 + 1], z = deformed[3 * 0 + 2];
+  EXPECT_NEAR(y, std::cos(40.0 * Pi / 180.0), 1e-12);
+  EXPECT_NEAR(z, std::sin(40.0 * Pi / 180.0), 1e-12);
+}
