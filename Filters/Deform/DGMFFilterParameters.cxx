@@ -1,8 +1,10 @@
 #include "DGMFFilterParameters.h"
 
+#include "DGMFInputNodes.h"
 #include "vtkDGMFDeformFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 // The filter's enumerations are the core's values.
@@ -67,17 +69,44 @@ bool BodyMotionTable::Clear()
 }
 
 std::vector<dgmf::RigidMotion> BodyMotionTable::For(
-  vtkDGMFDeformFilter* filter, std::int32_t bodies) const
+  vtkDGMFDeformFilter* filter, const InputNodes& nodes) const
 {
   dgmf::RigidMotion properties;
   filter->GetTranslation(properties.Translation);
   filter->GetRotationCenter(properties.Center);
   filter->GetRotationAngles(properties.AnglesDegrees);
+  const std::int32_t bodies = std::max<std::int32_t>(nodes.NumberOfBodies, 1);
+  // With BODY_CENTROID: the centroid of each body's moving nodes (this piece's).
+  std::vector<std::array<double, 4>> sums(static_cast<std::size_t>(bodies), { 0, 0, 0, 0 });
+  if (filter->GetRotationCenterMode() == vtkDGMFDeformFilter::BODY_CENTROID)
+  {
+    for (std::size_t i = 0; i < nodes.LocalNodes; ++i)
+    {
+      if (nodes.Kinds[i] == dgmf::NodeKind::MovingBoundary)
+      {
+        const std::int32_t body = nodes.BodyIds.empty() ? 1 : std::max(nodes.BodyIds[i], 1);
+        std::array<double, 4>& sum = sums[static_cast<std::size_t>(body - 1)];
+        for (int c = 0; c < 3; ++c)
+        {
+          sum[static_cast<std::size_t>(c)] += nodes.Points[3 * i + static_cast<std::size_t>(c)];
+        }
+        sum[3] += 1.0;
+      }
+    }
+  }
   std::vector<dgmf::RigidMotion> motions;
-  for (int k = 1; k <= std::max<std::int32_t>(bodies, 1); ++k)
+  for (int k = 1; k <= bodies; ++k)
   {
     const auto found = this->Motions.find(k);
     motions.push_back(found != this->Motions.end() ? found->second : properties);
+    const std::array<double, 4>& sum = sums[static_cast<std::size_t>(k - 1)];
+    if (found == this->Motions.end() && sum[3] > 0.0)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        motions.back().Center[c] = sum[static_cast<std::size_t>(c)] / sum[3];
+      }
+    }
   }
   return motions;
 }

@@ -17,6 +17,7 @@ class vtkDGMFDeformFilter;
 
 namespace dgmf_vtk
 {
+struct InputNodes;
 
 /// The filter's method (its Method property).
 dgmf::Method MethodOf(vtkDGMFDeformFilter* filter);
@@ -36,10 +37,11 @@ public:
   /// Number of bodies with a motion.
   std::size_t Size() const { return this->Motions.size(); }
   /**
-   * The rigid motion of bodies 1..max(bodies, 1): the one set for the body, else the filter's
-   * motion properties (Translation, RotationCenter, RotationAngles).
+   * The rigid motion of bodies 1..max(bodies, 1) of `nodes`: the one set for the body, else the
+   * filter's motion properties (Translation, RotationCenter, RotationAngles), centred on the
+   * centroid of the body's moving nodes with RotationCenterMode BODY_CENTROID.
    */
-  std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, std::int32_t bodies) const;
+  std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, const InputNodes& nodes) const;
 
 private:
   std::map<int, dgmf::RigidMotion> Motions;

@@ -374,7 +374,7 @@ int vtkDGMFDeformFilter::Execute(
     dgmf::CreateMethod(dgmf_vtk::MethodOf(this), dgmf_vtk::MethodParametersOf(this));
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
-  problem.Motions = this->Internal->BodyMotions.For(this, nodes.NumberOfBodies);
+  problem.Motions = this->Internal->BodyMotions.For(this, nodes);
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =
     dgmf_vtk::ReuseOutputPoints(cache.OutputPoints, input, output, n);

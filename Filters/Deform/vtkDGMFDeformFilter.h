@@ -189,10 +189,27 @@ public:
 
   ///@{
   /**
-   * Centre c of the rigid rotation. Default: (0, 0, 0).
+   * Centre c of the rigid rotation, used when RotationCenterMode is GIVEN. Default: (0, 0, 0).
    */
   vtkSetVector3Macro(RotationCenter, double);
   vtkGetVector3Macro(RotationCenter, double);
+  ///@}
+
+  /// Where the centre of the rigid rotation is.
+  enum RotationCenterModes
+  {
+    GIVEN = 0,        ///< RotationCenter
+    BODY_CENTROID = 1 ///< the centroid of the moving body's boundary nodes (each body's own)
+  };
+
+  ///@{
+  /**
+   * Where the rotation centre is: RotationCenter (GIVEN), or the centroid of the moving body's
+   * boundary nodes (BODY_CENTROID: each body its own; a body given SetBodyMotion keeps its centre).
+   * Default: GIVEN.
+   */
+  vtkSetClampMacro(RotationCenterMode, int, GIVEN, BODY_CENTROID);
+  vtkGetMacro(RotationCenterMode, int);
   ///@}
 
   ///@{
@@ -463,6 +480,7 @@ protected:
   bool FailOnInvertedCells = false;
   int NumberOfThreads = 0;
   int OneCellThickMode = DETECT;
+  int RotationCenterMode = GIVEN;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
