@@ -44,6 +44,16 @@ enum Rank : int
 };
 } // namespace
 
+NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
+  vtkUnstructuredGrid* merged, bool findLayers)
+{
+  const auto* xyz = static_cast<const double*>(merged->GetPoints()->GetVoidPointer(0));
+  return AssignRoles(mesh, selection,
+    findLayers
+      ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()))
+      : dgmf::ExtrudedLayers());
+}
+
 std::string ListBlockNames(const CompositeMesh& mesh)
 {
   std::string names;

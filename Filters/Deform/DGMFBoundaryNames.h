@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+class vtkUnstructuredGrid;
+
 namespace dgmf_vtk
 {
 class CompositeMesh;
@@ -30,6 +32,17 @@ struct BoundarySelection
   std::vector<std::string> Slip; ///< each a plane the nodes slide in
 
   bool Empty() const { return this->Moving.empty() && this->Static.empty() && this->Slip.empty(); }
+
+  /// Appends `name` to `list` (one of the three above); false (no change) for null or empty.
+  static bool Add(std::vector<std::string>& list, const char* name)
+  {
+    if (!name || !*name)
+    {
+      return false;
+    }
+    list.emplace_back(name);
+    return true;
+  }
 };
 
 /// The role of every merged node, from the selection.
@@ -52,6 +65,13 @@ struct NodeRoles
  */
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
   const dgmf::ExtrudedLayers& layers);
+
+/**
+ * The roles of the merged nodes of `mesh` (whose merged grid is `merged`), with the planes of a
+ * one-cell-thick mesh found in `merged`'s points when `findLayers` is on.
+ */
+NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
+  vtkUnstructuredGrid* merged, bool findLayers);
 
 /// The names of the blocks of `mesh` (the merged leaves), for messages.
 std::string ListBlockNames(const CompositeMesh& mesh);

@@ -1,6 +1,7 @@
 #include "DGMFCoreDeformation.h"
 
 #include "DGMFBoundaryDetection.h"
+#include "DGMFMemoryGuard.h"
 #include "DGMFMeshConversion.h"
 
 #include "dgmf/ExtrudedLayers.h"
@@ -176,6 +177,32 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
     dgmf::ExpandFromLayer(layers, nodes.Points, layerDeformed.data(), deformed->GetPointer(0));
   }
   return result;
+}
+
+std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* composite,
+  const BoundarySelection& boundaries, bool findLayers, GatherOptions& options,
+  DeformationCaches& caches, NodeRoles& roles, InputNodes& nodes)
+{
+  try
+  {
+    std::string error = CheckDeformationMemory(static_cast<double>(input->GetNumberOfPoints()),
+      static_cast<double>(input->GetNumberOfCells()));
+    if (!error.empty())
+    {
+      return error;
+    }
+    if (composite && !boundaries.Empty())
+    {
+      roles = AssignRoles(*composite, boundaries, input, findLayers);
+      options.Roles = &roles;
+    }
+    caches.Inputs.Gather(input, options, nodes);
+    return std::string();
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
 }
 
 } // namespace dgmf_vtk

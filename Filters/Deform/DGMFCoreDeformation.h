@@ -7,6 +7,7 @@
 #ifndef DGMFCoreDeformation_h
 #define DGMFCoreDeformation_h
 
+#include "DGMFBoundaryNames.h"
 #include "DGMFInputNodes.h"
 #include "DGMFMappingCache.h"
 #include "DGMFOutputBuffers.h"
@@ -24,6 +25,7 @@ class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
 {
+class CompositeMesh;
 
 /// What the filter keeps between executions.
 struct DeformationCaches
@@ -33,6 +35,17 @@ struct DeformationCaches
   FieldArrays Fields;                      ///< r and f, kept between motions
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
 };
+
+/**
+ * Step 2 of vtkDGMFDeformFilter: checks that the deformation fits in memory, gives the nodes the
+ * roles of the boundaries named in `boundaries` (if any; `composite` is then the input's blocks
+ * and `input` their merged grid, with the planes of a one-cell-thick mesh looked for when
+ * `findLayers` is on) and gathers `nodes` with `options` (whose Roles then point into `roles`).
+ * Returns the error, empty on success; nothing is thrown.
+ */
+std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* composite,
+  const BoundarySelection& boundaries, bool findLayers, GatherOptions& options,
+  DeformationCaches& caches, NodeRoles& roles, InputNodes& nodes);
 
 /// The outcome of DeformThroughCore.
 struct CoreDeformation

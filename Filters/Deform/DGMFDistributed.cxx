@@ -9,7 +9,9 @@
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -53,6 +55,15 @@ int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid*
   const int dimension = static_cast<int>(globalMaxima[0]);
   z = globalMinimum;
   return dimension == 2 && globalMinimum != globalMaxima[1] ? -1 : dimension;
+}
+
+void RequestOneGhostLevel(vtkInformation* inputInformation)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int requested = inputInformation->Has(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    ? inputInformation->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
+  inputInformation->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(requested, 1));
 }
 
 bool AllProcessesAgree(vtkMultiProcessController* controller, bool ok)

@@ -15,6 +15,7 @@
 #include <vector>
 
 class vtkFieldData;
+class vtkInformation;
 class vtkMultiProcessController;
 class vtkUnstructuredGrid;
 
@@ -32,6 +33,13 @@ int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid*
 
 /// True on every process when `ok` is true on every process. Collective.
 bool AllProcessesAgree(vtkMultiProcessController* controller, bool ok);
+
+/**
+ * Asks upstream for at least one layer of ghost cells in `inputInformation` (an input's pipeline
+ * information), so that the faces between the pieces of a distributed mesh are not taken for its
+ * boundary (e.g. from a Ghost Cells Generator).
+ */
+void RequestOneGhostLevel(vtkInformation* inputInformation);
 
 /// One boundary node as it travels between processes.
 struct RemoteBoundaryNode

@@ -4,6 +4,7 @@
 
 #include "dgmf/ResultNames.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -11,6 +12,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -69,6 +71,24 @@ void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report)
     }
     fieldData->AddArray(array);
   }
+}
+
+void SetDeformedGrid(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
+  vtkPoints* deformedPoints, std::size_t localNodes)
+{
+  output->CopyStructure(input);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  output->GetFieldData()->PassData(input->GetFieldData());
+  vtkDataArray* coordinates = deformedPoints->GetData();
+  if (static_cast<std::size_t>(coordinates->GetNumberOfTuples()) > localNodes)
+  {
+    coordinates->Resize(static_cast<vtkIdType>(localNodes)); // this piece's nodes
+    coordinates->SetNumberOfTuples(static_cast<vtkIdType>(localNodes));
+  }
+  coordinates->Modified();
+  deformedPoints->Modified();
+  output->SetPoints(deformedPoints);
 }
 
 void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleArray* f,

@@ -16,6 +16,7 @@
 class vtkDataSetAttributes;
 class vtkDoubleArray;
 class vtkFieldData;
+class vtkPoints;
 class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
@@ -36,6 +37,14 @@ double GetFieldValue(vtkFieldData* fieldData, const char* name);
 /// Adds every value of a method's report to `fieldData` (counts as vtkIdTypeArray, values as
 /// vtkDoubleArray, one tuple per body for per-body values).
 void AddReport(vtkFieldData* fieldData, const dgmf::DeformationReport& report);
+
+/**
+ * The deformed grid: `output` gets `input`'s cells and point, cell and field arrays, and
+ * `deformedPoints` (double coordinates), cut to their first `localNodes` (a distributed run also
+ * deformed the other pieces' boundary nodes).
+ */
+void SetDeformedGrid(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
+  vtkPoints* deformedPoints, std::size_t localNodes);
 
 /**
  * A method's results on `output`: the point arrays `r` and `f` when not null (their first

@@ -1,18 +1,13 @@
 #include "vtkDGMFDeformFilter.h"
 
-#include "DGMFBoundaryNames.h"
 #include "DGMFCompositeMesh.h"
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
 #include "DGMFFilterParameters.h"
-#include "DGMFInputNodes.h"
-#include "DGMFMemoryGuard.h"
-#include "DGMFMeshConversion.h"
 #include "DGMFOutputArrays.h"
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DeformationMethod.h"
-#include "dgmf/ResultNames.h"
 
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
@@ -23,13 +18,9 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 
-#include <algorithm>
-#include <chrono>
 #include <exception>
 #include <new>
 
@@ -58,20 +49,14 @@ vtkDGMFDeformFilter::~vtkDGMFDeformFilter()
 
 const char* vtkDGMFDeformFilter::GetMethodName(int method)
 {
-  for (const dgmf::MethodInfo& info : dgmf::GetMethods())
-  {
-    if (static_cast<int>(info.Id) == method)
-    {
-      return info.Name;
-    }
-  }
-  return nullptr;
+  const dgmf::MethodInfo* info = dgmf::FindMethod(method);
+  return info ? info->Name : nullptr;
 }
 
 const char* vtkDGMFDeformFilter::GetMethodKey(int method)
 {
-  const char* name = GetMethodName(method);
-  return name ? dgmf::FindMethod(name)->Key : nullptr;
+  const dgmf::MethodInfo* info = dgmf::FindMethod(method);
+  return info ? info->Key : nullptr;
 }
 
 int vtkDGMFDeformFilter::GetMethodFromName(const char* name)
@@ -116,23 +101,9 @@ void vtkDGMFDeformFilter::RemoveAllBodyMotions()
   }
 }
 
-namespace
-{
-/// Adds `name` to `list`; true when it changed.
-bool AddName(std::vector<std::string>& list, const char* name)
-{
-  if (!name || !*name)
-  {
-    return false;
-  }
-  list.emplace_back(name);
-  return true;
-}
-} // namespace
-
 void vtkDGMFDeformFilter::AddMovingBoundary(const char* name)
 {
-  if (AddName(this->Internal->Boundaries.Moving, name))
+  if (dgmf_vtk::BoundarySelection::Add(this->Internal->Boundaries.Moving, name))
   {
     this->Modified();
   }
@@ -140,7 +111,7 @@ void vtkDGMFDeformFilter::AddMovingBoundary(const char* name)
 
 void vtkDGMFDeformFilter::AddStaticBoundary(const char* name)
 {
-  if (AddName(this->Internal->Boundaries.Static, name))
+  if (dgmf_vtk::BoundarySelection::Add(this->Internal->Boundaries.Static, name))
   {
     this->Modified();
   }
@@ -148,7 +119,7 @@ void vtkDGMFDeformFilter::AddStaticBoundary(const char* name)
 
 void vtkDGMFDeformFilter::AddSlipBoundary(const char* name)
 {
-  if (AddName(this->Internal->Boundaries.Slip, name))
+  if (dgmf_vtk::BoundarySelection::Add(this->Internal->Boundaries.Slip, name))
   {
     this->Modified();
   }
@@ -213,16 +184,10 @@ int vtkDGMFDeformFilter::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  // A distributed mesh without a boundary marker needs one layer of ghost cells, so that the faces
-  // between pieces are not taken for the boundary: ask upstream (e.g. Ghost Cells Generator).
+  // A distributed mesh without a boundary marker needs one layer of ghost cells.
   if (dgmf_vtk::IsDistributed(this->Controller) && dgmf_vtk::GetSelectedArrays(this).Marker.empty())
   {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    using SDDP = vtkStreamingDemandDrivenPipeline;
-    const int requested = inInfo->Has(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
-      ? inInfo->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
-      : 0;
-    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(requested, 1));
+    dgmf_vtk::RequestOneGhostLevel(inputVector[0]->GetInformationObject(0));
   }
   return 1;
 }
@@ -322,30 +287,8 @@ int vtkDGMFDeformFilter::Execute(
   }
   dgmf_vtk::InputNodes nodes;
   dgmf_vtk::NodeRoles roles;
-  std::string error;
-  try
-  {
-    error = dgmf_vtk::CheckDeformationMemory(static_cast<double>(input->GetNumberOfPoints()),
-      static_cast<double>(input->GetNumberOfCells()));
-    if (error.empty() && composite && !this->Internal->Boundaries.Empty())
-    {
-      const auto* xyz = static_cast<const double*>(input->GetPoints()->GetVoidPointer(0));
-      const bool layered = this->OneCellThickMode != OFF && !distributed;
-      roles = dgmf_vtk::AssignRoles(*composite, this->Internal->Boundaries,
-        layered
-          ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(input->GetNumberOfPoints()))
-          : dgmf::ExtrudedLayers());
-      options.Roles = &roles;
-    }
-    if (error.empty())
-    {
-      cache.Inputs.Gather(input, options, nodes);
-    }
-  }
-  catch (const std::exception& e)
-  {
-    error = e.what();
-  }
+  const std::string error = dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
+    this->OneCellThickMode != OFF && !distributed, options, cache, roles, nodes);
   bool ok = error.empty();
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {
@@ -401,21 +344,11 @@ int vtkDGMFDeformFilter::Execute(
   }
   this->UpdateProgress(0.8);
 
-  // 4. The outputs: the input's structure and arrays, the method's, the new points, the quality.
-  output->CopyStructure(input);
-  output->GetPointData()->PassData(input->GetPointData());
-  output->GetCellData()->PassData(input->GetCellData());
-  output->GetFieldData()->PassData(input->GetFieldData());
+  // 4. The outputs: the input's cells and arrays, the new points, the method's results, the
+  // quality.
+  dgmf_vtk::SetDeformedGrid(input, output, newPoints, nodes.LocalNodes);
   dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
-  if (nodes.LocalNodes < n)
-  {
-    newCoordinates->Resize(static_cast<vtkIdType>(nodes.LocalNodes)); // this piece's nodes
-    newCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(nodes.LocalNodes));
-  }
-  newCoordinates->Modified();
-  newPoints->Modified();
-  output->SetPoints(newPoints);
   if (this->ComputeQuality)
   {
     const dgmf::QualitySummary summary =
@@ -447,16 +380,15 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "RigidMotionMode: " << (this->RigidMotionMode == EXTRACTED ? "Extracted" : "Properties")
      << " (" << this->Internal->BodyMotions.Size() << " body motions set)\n";
-  os << indent << "SupportRadius: " << this->SupportRadius << "\n";
-  os << indent << "RBFGreedy: " << (this->RBFGreedy ? "on" : "off") << " (tolerance "
+  os << indent << "SupportRadius: " << this->SupportRadius
+     << ", RBFGreedy: " << (this->RBFGreedy ? "on" : "off") << " (tolerance "
      << this->RBFGreedyTolerance << ", at most " << this->RBFGreedyMaximumPoints << " points)\n";
   os << indent << "IDWAlpha: " << this->IDWAlpha
      << ", IDWReferenceLength: " << this->IDWReferenceLength << "\n";
-  os << indent << "SubSteps: " << this->SubSteps << "\n";
-  os << indent << "RepairThreshold: " << this->RepairThreshold << " (layers " << this->RepairLayers
-     << ", passes " << this->RepairPasses << ")\n";
-  os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off") << "\n";
-  os << indent << "FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
+  os << indent << "SubSteps: " << this->SubSteps << ", RepairThreshold: " << this->RepairThreshold
+     << " (layers " << this->RepairLayers << ", passes " << this->RepairPasses << ")\n";
+  os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off")
+     << ", FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads
      << ", OneCellThickMode: " << this->OneCellThickMode << "\n";
   const dgmf_vtk::BoundarySelection& names = this->Internal->Boundaries;

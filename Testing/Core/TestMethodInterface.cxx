@@ -90,12 +90,14 @@ TEST(MethodTable, NamesKeysAndValuesAreOneConsistentTable)
     keys.insert(methods[k].Key);
     EXPECT_EQ(dgmf::FindMethod(methods[k].Name), &methods[k]);
     EXPECT_EQ(dgmf::FindMethod(methods[k].Key), &methods[k]);
+    EXPECT_EQ(dgmf::FindMethod(static_cast<int>(methods[k].Id)), &methods[k]);
     EXPECT_EQ(&dgmf::GetMethodInfo(methods[k].Id), &methods[k]);
   }
   EXPECT_EQ(names.size(), methods.size());
   EXPECT_EQ(keys.size(), methods.size());
   EXPECT_STREQ(dgmf::FindMethod("dGrBf")->Name, "DGRBF");
   EXPECT_EQ(dgmf::FindMethod("laplace"), nullptr);
+  EXPECT_EQ(dgmf::FindMethod(99), nullptr);
   EXPECT_EQ(dgmf::ListMethodKeys(", "), "dgmf, dgm, dgrbf, rbf, idw");
   EXPECT_TRUE(dgmf::GetMethodInfo(dgmf::Method::DGM).UsesGraph);
   EXPECT_FALSE(dgmf::GetMethodInfo(dgmf::Method::IDW).UsesGraph);

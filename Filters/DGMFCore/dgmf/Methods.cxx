@@ -31,6 +31,18 @@ const MethodInfo& GetMethodInfo(Method method)
     "unknown deformation method " + std::to_string(static_cast<int>(method)));
 }
 
+const MethodInfo* FindMethod(int value)
+{
+  for (const MethodInfo& info : GetMethods())
+  {
+    if (static_cast<int>(info.Id) == value)
+    {
+      return &info;
+    }
+  }
+  return nullptr;
+}
+
 const MethodInfo* FindMethod(const std::string& name)
 {
   const auto lower = [](std::string text)

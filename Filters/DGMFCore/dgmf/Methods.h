@@ -36,6 +36,9 @@ const std::vector<MethodInfo>& GetMethods();
 /// The entry of `method`.
 const MethodInfo& GetMethodInfo(Method method);
 
+/// The method whose value is `value` (the filter's Method property), or null.
+const MethodInfo* FindMethod(int value);
+
 /// The method named `name` (its Name or Key, any case), or null.
 const MethodInfo* FindMethod(const std::string& name);
 
