@@ -1,31 +1,39 @@
 /**
- * dgmf-deform: deforms a mesh file with vtkDGMFDeformFilter from the command line.
+ * dgmf-deform: deforms a mesh file or an OpenFOAM case with vtkDGMFDeformFilter from the command
+ * line.
  *
  *   dgmf-deform INPUT OUTPUT.vtu [options]
+ *   dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [--static ...] [--slip ...] [options]
  *
- * INPUT is a .vtu (XML) or .vtk (legacy) unstructured grid. The output is written as an XML
- * unstructured grid in inline binary mode. The quality summary is printed on one line. The exit
- * code is 0 on success, 1 on a filter or I/O error, 2 on a usage error.
+ * INPUT is a .vtu (XML) or .vtk (legacy) unstructured grid; the output is written as an XML
+ * unstructured grid in inline binary mode. CASE_DIR is an OpenFOAM case (its directory or a .foam
+ * file); the deformed points are written into OUT_CASE_DIR (vtkDGMFOpenFOAMWriter: a new
+ * directory gets a copy of the case; OUT_CASE_DIR may be CASE_DIR itself). The quality summary
+ * is printed on one line. The exit code is 0 on success, 1 on a filter or I/O error, 2 on a usage
+ * error.
  */
+#include "DGMFCommandData.h"
+
 #include "vtkDGMFDeformFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkUnstructuredGridReader.h"
-#include "vtkXMLUnstructuredGridReader.h"
-#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -33,9 +41,20 @@ std::string Usage()
 {
   std::string usage =
     "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
+    "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
     "  INPUT                   .vtu or .vtk unstructured grid\n"
+    "  CASE_DIR                OpenFOAM case (directory or .foam file); OUT_CASE_DIR gets the\n"
+    "                          deformed points (a copy of the case if new; may be CASE_DIR)\n"
+    "  --moving NAMES          moving boundaries by name (patches), comma-separated: one body "
+    "each\n"
+    "  --static NAMES          static boundaries by name (unselected patches are static anyway)\n"
+    "  --slip NAMES            planar boundaries whose nodes slide in their plane (symmetry)\n"
+    "  --time T                OpenFOAM: write T/polyMesh/points (default constant)\n"
+    "  --decompose-polyhedra   OpenFOAM: read polyhedra as tetrahedra and pyramids\n"
+    "  --one-cell-thick MODE   detect, on or off: a one-cell-thick 2D mesh (default detect)\n"
     "  --rotate AX AY AZ       rotation angles in degrees about x, y, z (2D: AZ)\n"
-    "  --center X Y Z          rotation centre (default 0 0 0)\n"
+    "  --center X Y Z          rotation centre (default 0 0 0); --center moving: the centroid\n"
+    "                          of each moving boundary\n"
     "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
     "  --marker NAME           boundary-marker point array (default "
     "BoundaryMarker if present)\n"
@@ -58,12 +77,6 @@ std::string Usage()
   return usage;
 }
 
-bool EndsWith(const std::string& s, const std::string& suffix)
-{
-  return s.size() >= suffix.size() &&
-    s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)
 {
   if (i + count >= argc)
@@ -82,30 +95,23 @@ bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)
   return true;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(const std::string& path)
+/// The comma-separated names of `list`.
+std::vector<std::string> SplitNames(const std::string& list)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> mesh;
-  if (EndsWith(path, ".vtk"))
+  std::vector<std::string> names;
+  std::stringstream stream(list);
+  std::string name;
+  while (std::getline(stream, name, ','))
   {
-    vtkNew<vtkUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->ReadAllScalarsOn();
-    reader->ReadAllVectorsOn();
-    reader->ReadAllFieldsOn();
-    reader->Update();
-    mesh = reader->GetOutput();
+    if (!name.empty())
+    {
+      names.push_back(name);
+    }
   }
-  else
-  {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  return mesh;
+  return names;
 }
 
-double FieldValue(vtkUnstructuredGrid* mesh, const char* name)
+double FieldValue(vtkDataObject* mesh, const char* name)
 {
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
   return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : 0.0;
@@ -132,6 +138,9 @@ int main(int argc, char* argv[])
   std::string displacement = "Displacement";
   bool markerGiven = false;
   bool displacementGiven = false;
+  std::string time = "constant";
+  bool decomposePolyhedra = false;
+  bool byName = false;
   for (int i = 3; i < argc; ++i)
   {
     const std::string option = argv[i];
@@ -140,9 +149,41 @@ int main(int argc, char* argv[])
     {
       filter->SetRotationAngles(v);
     }
+    else if (option == "--center" && i + 1 < argc && std::strcmp(argv[i + 1], "moving") == 0)
+    {
+      filter->SetRotationCenterMode(vtkDGMFDeformFilter::BODY_CENTROID);
+      ++i;
+    }
     else if (option == "--center" && ReadDoubles(argc, argv, i, 3, v))
     {
       filter->SetRotationCenter(v);
+    }
+    else if ((option == "--moving" || option == "--static" || option == "--slip") && i + 1 < argc)
+    {
+      for (const std::string& name : SplitNames(argv[++i]))
+      {
+        option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
+          : option == "--static" ? filter->AddStaticBoundary(name.c_str())
+                                 : filter->AddSlipBoundary(name.c_str());
+        byName = true;
+      }
+    }
+    else if (option == "--time" && i + 1 < argc)
+    {
+      time = argv[++i];
+    }
+    else if (option == "--decompose-polyhedra")
+    {
+      decomposePolyhedra = true;
+    }
+    else if (option == "--one-cell-thick" && i + 1 < argc &&
+      (std::strcmp(argv[i + 1], "detect") == 0 || std::strcmp(argv[i + 1], "on") == 0 ||
+        std::strcmp(argv[i + 1], "off") == 0))
+    {
+      const std::string mode = argv[++i];
+      filter->SetOneCellThickMode(mode == "on" ? vtkDGMFDeformFilter::ON
+          : mode == "off"                      ? vtkDGMFDeformFilter::OFF
+                                               : vtkDGMFDeformFilter::DETECT);
     }
     else if (option == "--translate" && ReadDoubles(argc, argv, i, 3, v))
     {
@@ -206,18 +247,41 @@ int main(int argc, char* argv[])
     }
   }
 
-  vtkSmartPointer<vtkUnstructuredGrid> mesh = ReadMesh(inputPath);
-  if (!mesh || mesh->GetNumberOfPoints() == 0)
+  // The input: a mesh file, or an OpenFOAM case read with its patches (selected by name).
+  const bool openFOAM = dgmf_cli::IsOpenFOAMCase(inputPath);
+  vtkSmartPointer<vtkAlgorithm> caseReader;
+  vtkSmartPointer<vtkUnstructuredGrid> mesh;
+  if (openFOAM)
   {
-    std::cerr << "dgmf-deform: could not read a mesh with points from " << inputPath << "\n";
-    return 1;
+    caseReader = dgmf_cli::ReadOpenFOAMCase(inputPath, decomposePolyhedra);
+    if (!caseReader)
+    {
+      return 1;
+    }
+    if (!byName && !markerGiven)
+    {
+      std::cerr << "dgmf-deform: name the moving patches with --moving (the case has: "
+                << dgmf_cli::ListPatchNames(caseReader) << ")\n";
+      return 2;
+    }
+    filter->SetInputConnection(caseReader->GetOutputPort());
+  }
+  else
+  {
+    mesh = dgmf_cli::ReadMeshFile(inputPath);
+    if (!mesh || mesh->GetNumberOfPoints() == 0)
+    {
+      std::cerr << "dgmf-deform: could not read a mesh with points from " << inputPath << "\n";
+      return 1;
+    }
+    filter->SetInputData(mesh);
   }
   // Defaults: use the conventional array names when the input has them.
-  if (markerGiven || mesh->GetPointData()->GetArray(marker.c_str()))
+  if (markerGiven || (mesh && mesh->GetPointData()->GetArray(marker.c_str())))
   {
     filter->SetBoundaryMarkerArrayName(marker.c_str());
   }
-  if (displacementGiven || mesh->GetPointData()->GetArray(displacement.c_str()))
+  if (displacementGiven || (mesh && mesh->GetPointData()->GetArray(displacement.c_str())))
   {
     filter->SetDisplacementArrayName(displacement.c_str());
   }
@@ -227,30 +291,41 @@ int main(int argc, char* argv[])
   onError->SetCallback(CountError);
   onError->SetClientData(&errors);
   filter->AddObserver(vtkCommand::ErrorEvent, onError);
-  filter->SetInputData(mesh);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   filter->Update();
   timer->StopTimer();
-  vtkUnstructuredGrid* deformed = filter->GetOutput();
-  if (errors > 0 || deformed->GetNumberOfPoints() == 0)
+  vtkDataObject* deformed = filter->GetOutputDataObject(0);
+  if (errors > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
   {
+    if (openFOAM && byName)
+    {
+      std::cerr << "dgmf-deform: the case's patches: " << dgmf_cli::ListPatchNames(caseReader)
+                << "\n";
+    }
     std::cerr << "dgmf-deform: the deformation failed (see the error above)\n";
     return 1;
   }
 
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(outputPath.c_str());
-  writer->SetInputData(deformed);
-  writer->SetDataModeToBinary(); // inline binary: appended mode breaks with Debian 12's expat
-  if (!writer->Write())
+  std::string written = outputPath;
+  if (openFOAM)
+  {
+    written = dgmf_cli::WriteOpenFOAMPoints(filter, outputPath, time);
+    if (written.empty())
+    {
+      std::cerr << "dgmf-deform: could not write the points into " << outputPath << "\n";
+      return 1;
+    }
+  }
+  else if (!dgmf_cli::WriteMeshFile(filter->GetOutput(), outputPath))
   {
     std::cerr << "dgmf-deform: could not write " << outputPath << "\n";
     return 1;
   }
 
-  std::cout << "dgmf-deform: " << deformed->GetNumberOfPoints() << " points, "
-            << deformed->GetNumberOfCells() << " cells, " << timer->GetElapsedTime() << " s";
+  std::cout << "dgmf-deform: " << deformed->GetNumberOfElements(vtkDataObject::POINT) << " points, "
+            << deformed->GetNumberOfElements(vtkDataObject::CELL) << " cells, "
+            << timer->GetElapsedTime() << " s";
   if (filter->GetComputeQuality())
   {
     std::cout << "; SizeSkew mean " << FieldValue(deformed, "SizeSkewMean") << ", minimum "
@@ -265,6 +340,6 @@ int main(int argc, char* argv[])
               << ", left unrepaired "
               << static_cast<long long>(FieldValue(deformed, "UnrepairedCellCount"));
   }
-  std::cout << "; wrote " << outputPath << std::endl;
+  std::cout << "; wrote " << written << std::endl;
   return 0;
 }

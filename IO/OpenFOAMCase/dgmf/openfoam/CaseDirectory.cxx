@@ -1,0 +1,228 @@
+#include "dgmf/openfoam/CaseDirectory.h"
+
+#include "dgmf/openfoam/FoamFileText.h"
+#include "dgmf/openfoam/PointsFile.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+
+namespace dgmf
+{
+namespace openfoam
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+/// The value of a time name, or false for other names.
+bool TimeValue(const std::string& name, double& value)
+{
+  if (name.empty())
+  {
+    return false;
+  }
+  const char* end = name.data() + name.size();
+  const std::from_chars_result read = std::from_chars(name.data(), end, value);
+  return read.ec == std::errc() && read.ptr == end && std::isfinite(value);
+}
+
+bool IsEmptyDirectory(const fs::path& directory)
+{
+  std::error_code error;
+  return fs::is_directory(directory, error) && fs::is_empty(directory, error);
+}
+
+/// The name to show for `path` in messages.
+std::string Quoted(const fs::path& path)
+{
+  return "'" + path.string() + "'";
+}
+} // namespace
+
+bool IsCase(const fs::path& directory)
+{
+  std::error_code error;
+  return fs::is_regular_file(directory / "system" / "controlDict", error);
+}
+
+fs::path CaseDirectoryOf(const fs::path& path)
+{
+  const std::string extension = path.extension().string();
+  if (extension == ".foam" || extension == ".OpenFOAM")
+  {
+    return path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  }
+  if (path.filename() == "controlDict" && path.parent_path().filename() == "system")
+  {
+    return path.parent_path().parent_path();
+  }
+  return path;
+}
+
+bool IsTimeName(const std::string& time)
+{
+  double value = 0.0;
+  return time == "constant" || (TimeValue(time, value) && value >= 0.0);
+}
+
+fs::path PolyMeshDirectory(const fs::path& caseDirectory, const std::string& time)
+{
+  return caseDirectory / time / "polyMesh";
+}
+
+std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
+{
+  const fs::path polyMesh = PolyMeshDirectory(caseDirectory, "constant");
+  std::error_code error;
+  const fs::path file = fs::exists(polyMesh / "boundary", error) ? polyMesh / "boundary"
+                                                                 : polyMesh / "boundary.gz";
+  const std::string text = ReadFoamText(file);
+  const FoamHeader header = ParseFoamHeader(text);
+  std::size_t at = SkipSpaceAndComments(text, header.Found ? header.End : 0);
+  while (at < text.size() && text[at] != '(') // the count
+  {
+    ++at;
+  }
+  std::vector<std::string> names;
+  ++at;
+  while ((at = SkipSpaceAndComments(text, at)) < text.size() && text[at] != ')')
+  {
+    const std::size_t nameEnd = text.find_first_of(" \t\r\n{", at);
+    if (nameEnd == std::string::npos)
+    {
+      break;
+    }
+    names.push_back(text.substr(at, nameEnd - at));
+    const std::size_t close = text.find('}', nameEnd);
+    if (close == std::string::npos)
+    {
+      break;
+    }
+    at = close + 1;
+  }
+  return names;
+}
+
+void CopyCase(const fs::path& source, const fs::path& target)
+{
+  if (!IsCase(source))
+  {
+    throw std::runtime_error(Quoted(source) + " is not an OpenFOAM case (no system/controlDict)");
+  }
+  std::error_code error;
+  if (fs::exists(target, error) && !IsEmptyDirectory(target))
+  {
+    throw std::runtime_error(
+      Quoted(target) + " already holds files and is not an OpenFOAM case: give a new directory");
+  }
+  // The first time directory holds the fields a solver starts from; later ones are results.
+  double first = HUGE_VAL;
+  for (const fs::directory_entry& entry : fs::directory_iterator(source))
+  {
+    double value = 0.0;
+    if (entry.is_directory() && TimeValue(entry.path().filename().string(), value))
+    {
+      first = std::min(first, value);
+    }
+  }
+  fs::create_directories(target, error);
+  if (error)
+  {
+    throw std::runtime_error(Quoted(target) + " cannot be created: " + error.message());
+  }
+  for (const fs::directory_entry& entry : fs::directory_iterator(source))
+  {
+    const std::string name = entry.path().filename().string();
+    double value = 0.0;
+    const bool laterTime = entry.is_directory() && TimeValue(name, value) && value != first;
+    if (laterTime || name.rfind("processor", 0) == 0 || name == "postProcessing")
+    {
+      continue;
+    }
+    fs::copy(entry.path(), target / name,
+      fs::copy_options::recursive | fs::copy_options::copy_symlinks, error);
+    if (error)
+    {
+      throw std::runtime_error("cannot copy " + Quoted(entry.path()) + " to " +
+        Quoted(target / name) + ": " + error.message());
+    }
+  }
+}
+
+fs::path WriteDeformedPoints(const fs::path& source, const fs::path& target,
+  const std::string& time, const double* reference, const double* deformed,
+  std::size_t numberOfPoints)
+{
+  if (!IsTimeName(time))
+  {
+    throw std::runtime_error("the time directory must be 'constant' or a time such as 1 or 0.5 "
+                             "(got '" +
+      time + "')");
+  }
+  const fs::path sourceFile = FindPointsFile(PolyMeshDirectory(source, "constant"));
+  if (sourceFile.empty())
+  {
+    throw std::runtime_error(Quoted(source) +
+      " is not an OpenFOAM case with a mesh: no constant/polyMesh/points or points.gz");
+  }
+  const PointsFile original = ReadPointsFile(sourceFile);
+  const std::size_t n = original.NumberOfPoints();
+  if (numberOfPoints < n)
+  {
+    throw std::runtime_error("the mesh has " + std::to_string(numberOfPoints) +
+      " points, but the case " + Quoted(source) + " has " + std::to_string(n) +
+      ": is it the mesh read from this case (its internalMesh)?");
+  }
+
+  // The reference must be the case's points, up to the reader's rounding to single precision.
+  double largest = 0.0;
+  for (std::size_t k = 0; k < 3 * n; ++k)
+  {
+    largest = std::max(largest, std::abs(original.Points[k]));
+  }
+  const double tolerance = 1e-6 * std::max(largest, 1e-300);
+  std::vector<double> points(original.Points);
+  for (std::size_t k = 0; k < 3 * n; ++k)
+  {
+    const double p = original.Points[k];
+    if (!(std::abs(reference[k] - p) <= tolerance))
+    {
+      throw std::runtime_error("point " + std::to_string(k / 3) + " of the undeformed mesh (" +
+        std::to_string(reference[k]) + " in coordinate " + std::to_string(k % 3) +
+        ") is not the case's (" + std::to_string(p) + " in " + sourceFile.string() +
+        "): give the case the mesh was read from, with its mesh at the time it was read");
+    }
+    points[k] = p + (deformed[k] - reference[k]);
+    if (!std::isfinite(points[k]))
+    {
+      throw std::runtime_error(
+        "deformed point " + std::to_string(k / 3) + " is not finite: nothing was written");
+    }
+  }
+
+  fs::path out = target;
+  std::error_code error;
+  if (!fs::equivalent(source, target, error))
+  {
+    if (IsCase(target))
+    {
+      const fs::path existing = FindPointsFile(PolyMeshDirectory(target, "constant"));
+      if (!existing.empty() && ReadPointsFile(existing).NumberOfPoints() != n)
+      {
+        throw std::runtime_error(Quoted(target) + " is an OpenFOAM case with another mesh");
+      }
+    }
+    else
+    {
+      CopyCase(source, target);
+    }
+  }
+  return WritePointsFile(
+    PolyMeshDirectory(out, time), original, points.data(), n, time + "/polyMesh");
+}
+
+} // namespace openfoam
+} // namespace dgmf

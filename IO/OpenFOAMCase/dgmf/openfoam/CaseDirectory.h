@@ -1,0 +1,71 @@
+/**
+ * @file CaseDirectory.h
+ * @brief An OpenFOAM case on disk: where its mesh's points are, a new case made from it, and
+ * deformed points written into it (VTK-free; namespace dgmf::openfoam).
+ */
+#ifndef dgmf_openfoam_CaseDirectory_h
+#define dgmf_openfoam_CaseDirectory_h
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dgmf
+{
+namespace openfoam
+{
+
+/// True when `directory` holds an OpenFOAM case (a `system/controlDict` file).
+bool IsCase(const std::filesystem::path& directory);
+
+/**
+ * `directory` itself, or the directory of a file inside a case: a `.foam` or `.OpenFOAM` file
+ * (what ParaView opens), or `system/controlDict`.
+ */
+std::filesystem::path CaseDirectoryOf(const std::filesystem::path& path);
+
+/// True for "constant" and for an OpenFOAM time name (a number such as "0", "1", "0.05").
+bool IsTimeName(const std::string& time);
+
+/// `caseDirectory`/constant/polyMesh for "constant", else `caseDirectory`/`time`/polyMesh.
+std::filesystem::path PolyMeshDirectory(
+  const std::filesystem::path& caseDirectory, const std::string& time);
+
+/// The names of the patches in `caseDirectory`/constant/polyMesh/boundary, in order.
+std::vector<std::string> ReadPatchNames(const std::filesystem::path& caseDirectory);
+
+/**
+ * Copies the case `source` into `target` (created; it must not hold anything yet): every file and
+ * directory of the case except the time directories after the first one (the fields to start
+ * from are kept), `processor*` directories and `postProcessing`. Throws std::runtime_error.
+ */
+void CopyCase(const std::filesystem::path& source, const std::filesystem::path& target);
+
+/**
+ * Writes deformed points into an OpenFOAM case.
+ *
+ * The case's own points P (`source`/constant/polyMesh) are read in double precision, and the
+ * deformation is added to them: P + (deformed - reference), where `reference` are the undeformed
+ * points the deformation started from (VTK's OpenFOAM reader gives them rounded to single
+ * precision). Points that did not move are written exactly as they were, and the rounding of the
+ * reader does not reach the case. Only the first P.size() points of `reference` and `deformed`
+ * are used (the reader appends one point per polyhedron when it decomposes polyhedra).
+ *
+ * `target` is `source` itself (the case is then modified on purpose), an existing case made from
+ * it, or a new or empty directory, which gets a copy of `source` (CopyCase). The points go into
+ * `target`/`time`/polyMesh ("constant", or a time name: OpenFOAM then takes the faces from
+ * constant), in the format of the case's points file (ascii or binary, compressed or not).
+ *
+ * Throws std::runtime_error when the counts differ, when `reference` is not the case's points
+ * (another case, or another time), when a deformed point is not finite, or when a file cannot be
+ * read or written; nothing is written then. Returns the file written.
+ */
+std::filesystem::path WriteDeformedPoints(const std::filesystem::path& source,
+  const std::filesystem::path& target, const std::string& time, const double* reference,
+  const double* deformed, std::size_t numberOfPoints);
+
+} // namespace openfoam
+} // namespace dgmf
+
+#endif
