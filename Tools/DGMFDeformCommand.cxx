@@ -117,10 +117,15 @@ double FieldValue(vtkDataObject* mesh, const char* name)
   return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : 0.0;
 }
 
-/// Counts the error events of the filter, so a failure gives a non-zero exit code.
-void CountError(vtkObject*, unsigned long, void* clientData, void*)
+/// Counts the error events of the filter, so a failure gives a non-zero exit code, and prints
+/// their message (an observer of ErrorEvent takes the message from VTK's output window).
+void CountError(vtkObject*, unsigned long, void* clientData, void* callData)
 {
   ++*static_cast<int*>(clientData);
+  if (callData)
+  {
+    std::cerr << "dgmf-deform: " << static_cast<const char*>(callData) << "\n";
+  }
 }
 } // namespace
 

@@ -80,30 +80,25 @@ void FromLayer(int axis, const double in[3], double out[3])
 ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n)
 {
   ExtrudedLayers layers;
-  if (n < 6 || n % 2 != 0)
+  if (n < 6)
   {
     return layers;
   }
   for (int axis = 0; axis < 3; ++axis)
   {
-    // Exactly two coordinates along the axis.
-    const double first = points[axis];
-    double second = first;
-    bool two = true;
-    for (std::size_t i = 1; i < n && two; ++i)
+    double low = points[axis], high = low;
+    for (std::size_t i = 1; i < n; ++i)
     {
-      const double value = points[3 * i + axis];
-      if (value != first)
-      {
-        second = second == first ? value : second;
-        two = value == second;
-      }
+      low = std::min(low, points[3 * i + axis]);
+      high = std::max(high, points[3 * i + axis]);
     }
-    if (!two || second == first)
+    if (!(low < high))
     {
       continue;
     }
-    const double low = std::min(first, second), high = std::max(first, second);
+    const auto key = [&](std::size_t i) {
+      return PlaneKey{ Bits(points[3 * i + (axis + 1) % 3]), Bits(points[3 * i + (axis + 2) % 3]) };
+    };
     // Pair the nodes of the two planes by their in-plane coordinates.
     std::unordered_map<PlaneKey, std::int32_t, PlaneKeyHash> front;
     front.reserve(n / 2);
@@ -115,35 +110,46 @@ ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n)
     {
       if (points[3 * i + axis] == low)
       {
-        const PlaneKey key{ Bits(points[3 * i + (axis + 1) % 3]),
-          Bits(points[3 * i + (axis + 2) % 3]) };
-        paired = front.emplace(key, static_cast<std::int32_t>(frontNodes.size())).second;
+        paired = front.emplace(key(i), static_cast<std::int32_t>(frontNodes.size())).second;
         layer[i] = static_cast<std::int32_t>(frontNodes.size());
         frontNodes.push_back(static_cast<std::int32_t>(i));
       }
     }
-    std::vector<std::uint8_t> taken(frontNodes.size(), 0);
+    const std::size_t pairs = frontNodes.size();
+    std::size_t highNodes = 0;
+    std::vector<std::uint8_t> taken(pairs, 0);
     for (std::size_t i = 0; i < n && paired; ++i)
     {
-      if (points[3 * i + axis] == high)
+      const double value = points[3 * i + axis];
+      if (value == low)
       {
-        const PlaneKey key{ Bits(points[3 * i + (axis + 1) % 3]),
-          Bits(points[3 * i + (axis + 2) % 3]) };
-        const auto found = front.find(key);
+        continue;
+      }
+      const auto found = front.find(key(i));
+      if (value == high)
+      {
         paired = found != front.end() && !taken[static_cast<std::size_t>(found->second)];
         if (paired)
         {
           taken[static_cast<std::size_t>(found->second)] = 1;
           layer[i] = found->second;
+          ++highNodes;
         }
       }
+      else // an inner node; one above a plane node would be a layer of a thicker mesh
+      {
+        paired = found == front.end();
+        layer[i] = static_cast<std::int32_t>(frontNodes.size());
+        frontNodes.push_back(static_cast<std::int32_t>(i));
+      }
     }
-    if (paired && frontNodes.size() * 2 == n)
+    if (paired && highNodes == pairs && pairs * 2 > n - pairs) // the inner nodes are a minority
     {
       layers.Axis = axis;
       layers.Low = low;
       layers.High = high;
       layers.Front = std::move(frontNodes);
+      layers.Pairs = pairs;
       layers.Layer = std::move(layer);
       return layers;
     }
@@ -162,6 +168,7 @@ DeformationProblem ReduceToLayer(
   {
     ToLayer(
       axis, problem.Points + 3 * static_cast<std::size_t>(layers.Front[k]), &storage.Points[3 * k]);
+    storage.Points[3 * k + 2] = layers.Low; // inner nodes too
   }
   storage.Kinds.assign(m, NodeKind::Interior);
   for (std::size_t i = 0; i < n; ++i)

@@ -19,14 +19,19 @@ namespace dgmf
 /**
  * The two layers of a one-cell-thick mesh: every node lies on one of two planes normal to a
  * coordinate axis (the extrusion axis), and each node of one plane has exactly one partner on the
- * other with the same two other coordinates (bit for bit).
+ * other with the same two other coordinates (bit for bit). Nodes strictly between the planes whose
+ * in-plane coordinates are no plane node's (the cell centres VTK's OpenFOAM reader adds when it
+ * decomposes polyhedra) are inner nodes: each is a layer node of its own, and keeps its coordinate
+ * along the axis.
  */
 struct ExtrudedLayers
 {
   int Axis = -1;     ///< the extrusion axis (0 x, 1 y, 2 z); -1: the mesh is not one cell thick
   double Low = 0.0;  ///< the coordinate of the first plane along Axis
   double High = 0.0; ///< and of the second
-  std::vector<std::int32_t> Front; ///< the nodes on the Low plane, in increasing order
+  /// The layer nodes: the nodes on the Low plane in increasing order, then the inner nodes.
+  std::vector<std::int32_t> Front;
+  std::size_t Pairs = 0;           ///< the number of nodes on each plane (the first of Front)
   std::vector<std::int32_t> Layer; ///< per node: the index in Front of itself or of its partner
 
   bool Found() const { return this->Axis >= 0; }
@@ -36,8 +41,9 @@ struct ExtrudedLayers
 
 /**
  * Finds the layers of a one-cell-thick mesh among `n` nodes (3 coordinates each): the first axis
- * along which every node has one of exactly two coordinates, with every node paired. Not Found()
- * when there is none. O(n) with a hash of the in-plane coordinates.
+ * along which the nodes' coordinates lie between two values, every node at those two values
+ * paired, and the nodes between them (if any) inner nodes (see ExtrudedLayers). Not Found() when
+ * there is none. O(n) with a hash of the in-plane coordinates.
  */
 ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n);
 
@@ -51,7 +57,7 @@ void ToLayer(int axis, const double in[3], double out[3]);
 void FromLayer(int axis, const double in[3], double out[3]);
 
 /**
- * The 2D problem of an extruded mesh's front layer (in the coordinates of ToLayer, all at
+ * The 2D problem of an extruded mesh's layer nodes (in the coordinates of ToLayer, all at
  * w = Low): its nodes' points, kinds (a node and its partner are the same 2D node: moving wins
  * over static, static over slip, slip over interior), displacements, body ids (the first
  * non-zero), motions and slip planes, all turned by ToLayer. `storage` keeps the arrays the

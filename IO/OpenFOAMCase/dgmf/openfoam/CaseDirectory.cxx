@@ -77,8 +77,8 @@ std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
 {
   const fs::path polyMesh = PolyMeshDirectory(caseDirectory, "constant");
   std::error_code error;
-  const fs::path file = fs::exists(polyMesh / "boundary", error) ? polyMesh / "boundary"
-                                                                 : polyMesh / "boundary.gz";
+  const fs::path file =
+    fs::exists(polyMesh / "boundary", error) ? polyMesh / "boundary" : polyMesh / "boundary.gz";
   const std::string text = ReadFoamText(file);
   const FoamHeader header = ParseFoamHeader(text);
   std::size_t at = SkipSpaceAndComments(text, header.Found ? header.End : 0);

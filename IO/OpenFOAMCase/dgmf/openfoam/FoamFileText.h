@@ -48,8 +48,8 @@ std::string FoamHeaderEntry(const std::string& text, const std::string& keyword)
  * An entry that is absent is added at the end of the header. `text` without a header is returned
  * unchanged.
  */
-std::string SetHeaderEntry(const std::string& text, const std::string& keyword,
-  const std::string& value);
+std::string SetHeaderEntry(
+  const std::string& text, const std::string& keyword, const std::string& value);
 
 /// A binary file's `arch` entry ("LSB;label=32;scalar=64").
 struct ArchInfo

@@ -103,7 +103,8 @@ void WriteAll(const fs::path& file, const std::string& bytes, bool compressed)
   bool ok = true;
   while (ok && done < bytes.size())
   {
-    const unsigned chunk = static_cast<unsigned>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
+    const unsigned chunk =
+      static_cast<unsigned>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
     ok = gzwrite(out, bytes.data() + done, chunk) == static_cast<int>(chunk);
     done += chunk;
   }
