@@ -238,3 +238,82 @@ TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
   EXPECT_NEAR(y, std::cos(40.0 * Pi / 180.0), 1e-12);
   EXPECT_NEAR(z, std::sin(40.0 * Pi / 180.0), 1e-12);
 }
+
+TEST(ExtrudedLayers, CellCentresBetweenThePlanesAreInnerNodesAThirdLayerIsNot)
+{
+  // The reader's decomposed polyhedra add their cell centres between the planes: inner nodes,
+  // deformed as 2D interior nodes at their in-plane point, keeping their own coordinate.
+  const dgmf_test::NodeSet flat = dgmf_test::CircleInSquare(32, 10, 400);
+  dgmf_test::NodeSet layered;
+  layered.Dimension = 3;
+  for (double z : { 0.1, 0.15 })
+  {
+    for (std::size_t i = 0; i < flat.Size(); ++i)
+    {
+      layered.Add(flat.Points[3 * i], flat.Points[3 * i + 1], z, flat.Kinds[i]);
+    }
+  }
+  const std::size_t m = flat.Size();
+  layered.Add(1.7, 0.3, 0.125, dgmf::NodeKind::Interior);  // not above any plane node
+  layered.Add(-2.2, 1.1, 0.125, dgmf::NodeKind::Interior); // and another
+  const dgmf::ExtrudedLayers layers =
+    dgmf::FindExtrudedLayers(layered.Points.data(), layered.Size());
+  ASSERT_TRUE(layers.Found());
+  EXPECT_EQ(layers.Axis, 2);
+  EXPECT_EQ(layers.Pairs, m);
+  ASSERT_EQ(layers.Front.size(), m + 2);
+  EXPECT_EQ(layers.Front[m], static_cast<std::int32_t>(2 * m));
+  EXPECT_EQ(layers.Layer[2 * m + 1], static_cast<std::int32_t>(m + 1));
+
+  dgmf::DeformationProblem problem;
+  problem.Dimension = 3;
+  problem.NumberOfNodes = layered.Size();
+  problem.Points = layered.Points.data();
+  problem.Kinds = layered.Kinds.data();
+  problem.Motions[0].AnglesDegrees[2] = 25.0;
+  dgmf::LayerProblemStorage storage;
+  const dgmf::DeformationProblem layer = dgmf::ReduceToLayer(layers, problem, storage);
+  const dgmf::DelaunayMapping mapping(
+    2, layer.Points, layer.NumberOfNodes, layer.Kinds, dgmf::SerialFor);
+  std::vector<double> layerDeformed(3 * layer.NumberOfNodes), deformed(layered.Points.size());
+  dgmf::VectorFieldStore fields(layer.NumberOfNodes);
+  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
+    ->Deform(
+      layer, &mapping, dgmf::DeformationOutputs{ layerDeformed.data(), &fields }, dgmf::SerialFor);
+  dgmf::ExpandFromLayer(layers, layered.Points.data(), layerDeformed.data(), deformed.data());
+  // The inner nodes moved in the plane, as the same point of the 2D mesh does, and kept z.
+  dgmf_test::NodeSet flatWithCentres = flat;
+  flatWithCentres.Add(1.7, 0.3, 0.0, dgmf::NodeKind::Interior);
+  flatWithCentres.Add(-2.2, 1.1, 0.0, dgmf::NodeKind::Interior);
+  const dgmf::DelaunayMapping flatMapping(2, flatWithCentres.Points.data(), flatWithCentres.Size(),
+    flatWithCentres.Kinds.data(), dgmf::SerialFor);
+  dgmf::DeformationProblem flatProblem = problem;
+  flatProblem.Dimension = 2;
+  flatProblem.NumberOfNodes = flatWithCentres.Size();
+  flatProblem.Points = flatWithCentres.Points.data();
+  flatProblem.Kinds = flatWithCentres.Kinds.data();
+  std::vector<double> flatDeformed(flatWithCentres.Points.size());
+  dgmf::VectorFieldStore flatFields(flatWithCentres.Size());
+  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
+    ->Deform(flatProblem, &flatMapping,
+      dgmf::DeformationOutputs{ flatDeformed.data(), &flatFields }, dgmf::SerialFor);
+  for (std::size_t c = 0; c < 2; ++c)
+  {
+    EXPECT_EQ(deformed[3 * (2 * m + c)], flatDeformed[3 * (m + c)]);
+    EXPECT_EQ(deformed[3 * (2 * m + c) + 1], flatDeformed[3 * (m + c) + 1]);
+    EXPECT_EQ(deformed[3 * (2 * m + c) + 2], 0.125);
+    EXPECT_NE(deformed[3 * (2 * m + c)], layered.Points[3 * (2 * m + c)]);
+  }
+
+  // Two cells thick: a middle plane of nodes above the others' is a layer, not inner nodes.
+  dgmf_test::NodeSet thick;
+  thick.Dimension = 3;
+  for (double z : { 0.1, 0.125, 0.15 })
+  {
+    for (std::size_t i = 0; i < flat.Size(); ++i)
+    {
+      thick.Add(flat.Points[3 * i], flat.Points[3 * i + 1], z, flat.Kinds[i]);
+    }
+  }
+  EXPECT_FALSE(dgmf::FindExtrudedLayers(thick.Points.data(), thick.Size()).Found());
+}

@@ -195,7 +195,8 @@ fs::path WriteDeformedPoints(const fs::path& source, const fs::path& target,
         ") is not the case's (" + std::to_string(p) + " in " + sourceFile.string() +
         "): give the case the mesh was read from, with its mesh at the time it was read");
     }
-    points[k] = p + (deformed[k] - reference[k]);
+    const double motion = deformed[k] - reference[k];
+    points[k] = motion == 0.0 ? p : p + motion; // an unmoved point keeps its bits (and -0)
     if (!std::isfinite(points[k]))
     {
       throw std::runtime_error(

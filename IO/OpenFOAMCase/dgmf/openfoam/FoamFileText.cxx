@@ -39,6 +39,24 @@ void FindHeader(const std::string& text, std::size_t& open, std::size_t& close)
   }
 }
 
+/// The first ';' from `at` that is not inside double quotes (arch "LSB;label=32;scalar=64";).
+std::size_t FindEntryEnd(const std::string& text, std::size_t at)
+{
+  bool quoted = false;
+  for (; at < text.size(); ++at)
+  {
+    if (text[at] == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (text[at] == ';' && !quoted)
+    {
+      return at;
+    }
+  }
+  return std::string::npos;
+}
+
 /// The entries "keyword value;" between `begin` and `end`.
 std::map<std::string, std::string> ParseEntries(
   const std::string& text, std::size_t begin, std::size_t end)
@@ -47,7 +65,7 @@ std::map<std::string, std::string> ParseEntries(
   std::size_t at = begin;
   while (at < end)
   {
-    const std::size_t semicolon = text.find(';', at);
+    const std::size_t semicolon = FindEntryEnd(text, at);
     if (semicolon == std::string::npos || semicolon > end)
     {
       break;
@@ -181,7 +199,7 @@ std::string SetHeaderEntry(
       std::isspace(static_cast<unsigned char>(text[wordStart + keyword.size()])))
     {
       const std::size_t valueStart = text.find_first_not_of(" \t", wordStart + keyword.size());
-      const std::size_t semicolon = text.find(';', valueStart);
+      const std::size_t semicolon = FindEntryEnd(text, valueStart);
       if (semicolon != std::string::npos && semicolon < close)
       {
         return text.substr(0, valueStart) + value + text.substr(semicolon);
