@@ -73,7 +73,9 @@ std::string Usage()
     "(default 2)\n"
     "  --repair-passes N       most repair passes per step (default 20)\n"
     "  --threads N             number of threads, 0 = all (default 0)\n"
-    "  --no-quality            skip the SizeSkew quality metric\n";
+    "  --no-quality            skip the SizeSkew quality metric\n"
+    "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
+    "                          (on for OpenFOAM cases)\n";
   return usage;
 }
 
@@ -241,6 +243,10 @@ int main(int argc, char* argv[])
       displacement = argv[++i];
       displacementGiven = true;
     }
+    else if (option == "--non-orthogonality")
+    {
+      filter->ComputeNonOrthogonalityOn();
+    }
     else if (option == "--no-quality")
     {
       filter->ComputeQualityOff();
@@ -270,6 +276,7 @@ int main(int argc, char* argv[])
       return 2;
     }
     filter->SetInputConnection(caseReader->GetOutputPort());
+    filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
   }
   else
   {
@@ -335,7 +342,14 @@ int main(int argc, char* argv[])
   {
     std::cout << "; SizeSkew mean " << FieldValue(deformed, "SizeSkewMean") << ", minimum "
               << FieldValue(deformed, "SizeSkewMinimum") << ", inverted cells "
-              << static_cast<long long>(FieldValue(deformed, "InvertedCellCount"));
+              << static_cast<long long>(FieldValue(deformed, "InvertedCellCount"))
+              << " (invalid in the input: "
+              << static_cast<long long>(FieldValue(deformed, "InputInvalidCellCount")) << ")";
+  }
+  if (filter->GetComputeNonOrthogonality())
+  {
+    std::cout << "; non-orthogonality max " << FieldValue(deformed, "MaximumNonOrthogonality")
+              << " (input " << FieldValue(deformed, "InputMaximumNonOrthogonality") << ")";
   }
   if (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0)
   {

@@ -2,6 +2,9 @@
 
 #include "DGMFMeshConversion.h"
 
+#include "dgmf/CellFaces.h"
+#include "dgmf/DecomposedSizeSkew.h"
+
 #include "vtkPoints.h"
 
 #include "vtkCellArray.h"
@@ -19,17 +22,81 @@
 
 namespace dgmf_vtk
 {
+namespace
+{
+/// The corners of a cell judged through its faces, and its face stream in local corner numbers.
+struct FacedCell
+{
+  std::vector<double> Original, Deformed;
+  std::vector<std::int64_t> Faces;
+
+  /// Gathers the corners `ids` (count of them) of the two point arrays.
+  void Gather(const vtkIdType* ids, vtkIdType count, const double* original, const double* deformed)
+  {
+    this->Original.resize(3 * static_cast<std::size_t>(count));
+    this->Deformed.resize(3 * static_cast<std::size_t>(count));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      const auto p = static_cast<std::size_t>(ids[k]);
+      std::copy(original + 3 * p, original + 3 * p + 3, &this->Original[3 * k]);
+      std::copy(deformed + 3 * p, deformed + 3 * p + 3, &this->Deformed[3 * k]);
+    }
+  }
+
+  /// A polyhedron's face stream (VTK's, without the number of faces) in local corner numbers.
+  bool SetPolyhedronFaces(
+    const vtkIdType* ids, vtkIdType count, vtkIdType faces, const vtkIdType* stream)
+  {
+    this->Faces.assign(1, faces);
+    for (vtkIdType f = 0, at = 0; f < faces; ++f)
+    {
+      const vtkIdType n = stream[at++];
+      this->Faces.push_back(n);
+      for (vtkIdType k = 0; k < n; ++k, ++at)
+      {
+        const vtkIdType* local = std::find(ids, ids + count, stream[at]);
+        if (local == ids + count)
+        {
+          return false;
+        }
+        this->Faces.push_back(local - ids);
+      }
+    }
+    return faces > 0;
+  }
+
+  /// A polygon: one face, its corners in order.
+  void SetPolygon(vtkIdType count)
+  {
+    this->Faces.assign({ 1, count });
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      this->Faces.push_back(k);
+    }
+  }
+
+  dgmf::CellQuality Quality() const
+  {
+    return dgmf::ComputeDecomposedSizeSkew(static_cast<int>(this->Original.size() / 3),
+      this->Original.data(), this->Deformed.data(), this->Faces.data());
+  }
+};
+} // namespace
+
 dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
-  const dgmf::ParallelFor& parallelFor)
+  vtkUnsignedCharArray* inputInvalid, const dgmf::ParallelFor& parallelFor)
 {
   const vtkIdType numberOfCells = mesh->GetNumberOfCells();
   sizeSkew->SetNumberOfComponents(1);
   sizeSkew->SetNumberOfTuples(numberOfCells);
   inverted->SetNumberOfComponents(1);
   inverted->SetNumberOfTuples(numberOfCells);
+  inputInvalid->SetNumberOfComponents(1);
+  inputInvalid->SetNumberOfTuples(numberOfCells);
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
+  unsigned char* invalid = inputInvalid->GetPointer(0);
   vtkCellArray* cells = mesh->GetCells();
   const unsigned char* types = mesh->GetCellTypesArray()->GetPointer(0);
 
@@ -37,6 +104,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
     [&](std::size_t begin, std::size_t end)
     {
       vtkNew<vtkIdList> scratch;
+      FacedCell faced;
       // Hexahedra go by two (ComputeHexSizeSkewPair, the same bits): `pending` is one waiting
       // for its partner, its corners in the second half of the buffers.
       double original[2][8 * 3];
@@ -49,20 +117,40 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         const int* order;
         vtkIdType npts;
         const vtkIdType* pts;
-        if (!CellShapeOf(types[c], shape, order))
-        {
-          values[c] = std::numeric_limits<double>::quiet_NaN();
-          flags[c] = 0;
-          continue;
-        }
+        invalid[c] = 0;
+        const bool standard = CellShapeOf(types[c], shape, order);
         cells->GetCellAtId(cellId, npts, pts, scratch);
-        const int corners = dgmf::GetNumberOfCorners(shape);
-        if (npts < corners)
+        if (!standard || npts < dgmf::GetNumberOfCorners(shape))
         {
-          values[c] = std::numeric_limits<double>::quiet_NaN();
-          flags[c] = 0;
+          // Polyhedra and polygons through their faces; other cells (quadratic) are not covered.
+          vtkIdType faces = 0;
+          const vtkIdType* stream = nullptr;
+          bool covered = false;
+          if (types[c] == VTK_POLYHEDRON)
+          {
+            mesh->GetFaceStream(cellId, faces, stream);
+            covered = faced.SetPolyhedronFaces(pts, npts, faces, stream);
+          }
+          else if (types[c] == VTK_POLYGON && npts >= 3)
+          {
+            faced.SetPolygon(npts);
+            covered = true;
+          }
+          if (covered)
+          {
+            faced.Gather(pts, npts, originalPoints, deformedPoints);
+            const dgmf::CellQuality quality = faced.Quality();
+            values[c] = quality.SizeSkew;
+            flags[c] = quality.Inverted ? 1 : 0;
+          }
+          else
+          {
+            values[c] = std::numeric_limits<double>::quiet_NaN();
+            flags[c] = 0;
+          }
           continue;
         }
+        const int corners = dgmf::GetNumberOfCorners(shape);
         const bool hexahedron = shape == dgmf::CellShape::Hexahedron;
         const int slot = hexahedron && pending == end ? 1 : 0;
         for (int k = 0; k < corners; ++k)
@@ -75,7 +163,14 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           }
         }
         dgmf::CellQuality quality;
-        if (!hexahedron)
+        if (dgmf::IsInvalidInputCell(shape, original[slot]))
+        {
+          // Non-convex, warped or inverted before the deformation: judged through its faces.
+          invalid[c] = 1;
+          quality = dgmf::ComputeDecomposedSizeSkew(
+            corners, original[slot], deformed[slot], dgmf::GetShapeFaceStream(shape));
+        }
+        else if (!hexahedron)
         {
           quality = dgmf::ComputeSizeSkew(shape, original[0], deformed[0]);
         }
@@ -115,8 +210,8 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0 ? 1 : 0;
     }
   }
-  return dgmf::SummarizeQuality(
-    values, flags, static_cast<std::size_t>(numberOfCells), ghost.empty() ? nullptr : ghost.data());
+  return dgmf::SummarizeQuality(values, flags, static_cast<std::size_t>(numberOfCells),
+    ghost.empty() ? nullptr : ghost.data(), invalid);
 }
 
 } // namespace dgmf_vtk

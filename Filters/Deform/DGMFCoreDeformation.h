@@ -10,6 +10,7 @@
 #include "DGMFBoundaryNames.h"
 #include "DGMFInputNodes.h"
 #include "DGMFMappingCache.h"
+#include "DGMFNonOrthogonality.h"
 #include "DGMFOutputBuffers.h"
 
 #include "dgmf/DeformationMethod.h"
@@ -34,6 +35,7 @@ struct DeformationCaches
   MappingCache Mapping;                    ///< the graph and the node locations
   FieldArrays Fields;                      ///< r and f, kept between motions
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
+  InternalFacesCache Faces;                ///< for the non-orthogonality
 };
 
 /**

@@ -129,11 +129,11 @@ std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
 void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::QualitySummary& summary,
   std::size_t& outsideNodes)
 {
-  double sums[6] = { ok ? 0.0 : 1.0, summary.Sum, static_cast<double>(summary.Evaluated),
+  double sums[7] = { ok ? 0.0 : 1.0, summary.Sum, static_cast<double>(summary.Evaluated),
     static_cast<double>(summary.Inverted), static_cast<double>(summary.NotComputed),
-    static_cast<double>(outsideNodes) };
-  double total[6];
-  controller->AllReduce(sums, total, 6, vtkCommunicator::SUM_OP);
+    static_cast<double>(outsideNodes), static_cast<double>(summary.InputInvalid) };
+  double total[7];
+  controller->AllReduce(sums, total, 7, vtkCommunicator::SUM_OP);
   double minimum =
     summary.Evaluated > 0 ? summary.Minimum : std::numeric_limits<double>::infinity();
   double globalMinimum = 0.0;
@@ -146,6 +146,7 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
   summary.Mean = summary.Evaluated > 0 ? summary.Sum / static_cast<double>(summary.Evaluated) : 0.0;
   summary.Minimum = summary.Evaluated > 0 ? globalMinimum : 0.0;
   outsideNodes = static_cast<std::size_t>(total[5]);
+  summary.InputInvalid = static_cast<std::size_t>(total[6]);
 }
 
 void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)
@@ -226,7 +227,8 @@ void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes
   nodes.NumberOfNodes = n + remote.size();
 }
 
-void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData)
+void ReduceFieldData(
+  vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData, bool nonOrthogonality)
 {
   namespace names = dgmf::names;
   dgmf::QualitySummary summary;
@@ -236,8 +238,17 @@ void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldDa
     GetFieldValue(fieldData, names::SizeSkewMean) * static_cast<double>(summary.Evaluated);
   summary.Minimum = GetFieldValue(fieldData, names::SizeSkewMinimum);
   summary.Inverted = static_cast<std::size_t>(GetFieldValue(fieldData, names::InvertedCellCount));
+  summary.InputInvalid =
+    static_cast<std::size_t>(GetFieldValue(fieldData, names::InputInvalidCellCount));
   std::size_t outside = static_cast<std::size_t>(GetFieldValue(fieldData, names::OutsideNodeCount));
   ReduceSummary(controller, ok, summary, outside);
+  double angles[2] = { GetFieldValue(fieldData, names::MaximumNonOrthogonality),
+    GetFieldValue(fieldData, names::InputMaximumNonOrthogonality) };
+  double largest[2] = { 0.0, 0.0 };
+  if (nonOrthogonality) // the same on every process: the collective is called by all or none
+  {
+    controller->AllReduce(angles, largest, 2, vtkCommunicator::MAX_OP);
+  }
   if (!ok)
   {
     return;
@@ -253,7 +264,10 @@ void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldDa
   set(names::SizeSkewMinimum, summary.Minimum);
   set(names::InvertedCellCount, static_cast<double>(summary.Inverted));
   set(names::SizeSkewEvaluatedCells, static_cast<double>(summary.Evaluated));
+  set(names::InputInvalidCellCount, static_cast<double>(summary.InputInvalid));
   set(names::OutsideNodeCount, static_cast<double>(outside));
+  set(names::MaximumNonOrthogonality, largest[0]);
+  set(names::InputMaximumNonOrthogonality, largest[1]);
 }
 
 } // namespace dgmf_vtk

@@ -67,10 +67,13 @@ void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes
 
 /**
  * The field data of a distributed result made global: the quality summary (SizeSkewMean,
- * SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) and OutsideNodeCount over all
- * processes. `ok` false on any process makes it false on all. Collective.
+ * SizeSkewMinimum, InvertedCellCount, InputInvalidCellCount, SizeSkewEvaluatedCells),
+ * OutsideNodeCount and, with `nonOrthogonality`, the largest MaximumNonOrthogonality and
+ * InputMaximumNonOrthogonality (of the faces inside the pieces) over all processes. `ok` false on
+ * any process makes it false on all. Collective.
  */
-void ReduceFieldData(vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData);
+void ReduceFieldData(
+  vtkMultiProcessController* controller, bool& ok, vtkFieldData* fieldData, bool nonOrthogonality);
 
 /**
  * The quality summary over all processes (each process's summary leaves out its ghost cells),

@@ -131,6 +131,7 @@ void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summ
   AddFieldValue(fieldData, dgmf::names::SizeSkewMinimum, summary.Minimum);
   AddFieldCount(fieldData, dgmf::names::InvertedCellCount, summary.Inverted);
   AddFieldCount(fieldData, dgmf::names::SizeSkewEvaluatedCells, summary.Evaluated);
+  AddFieldCount(fieldData, dgmf::names::InputInvalidCellCount, summary.InputInvalid);
 }
 
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
@@ -141,10 +142,13 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
   sizeSkew->SetName(dgmf::names::SizeSkew);
   vtkNew<vtkUnsignedCharArray> inverted;
   inverted->SetName(dgmf::names::Inverted);
-  const dgmf::QualitySummary summary =
-    ComputeCellQuality(mesh, originalPoints, deformedPoints, sizeSkew, inverted, parallelFor);
+  vtkNew<vtkUnsignedCharArray> inputInvalid;
+  inputInvalid->SetName(dgmf::names::InputInvalid);
+  const dgmf::QualitySummary summary = ComputeCellQuality(
+    mesh, originalPoints, deformedPoints, sizeSkew, inverted, inputInvalid, parallelFor);
   cellData->AddArray(sizeSkew);
   cellData->AddArray(inverted);
+  cellData->AddArray(inputInvalid);
   SetQualitySummary(fieldData, summary);
   return summary;
 }

@@ -251,7 +251,8 @@ int vtkDGMFDeformFilter::RequestData(
   if (dgmf_vtk::IsDistributed(this->Controller))
   {
     bool ok = status != 0;
-    dgmf_vtk::ReduceFieldData(this->Controller, ok, output->GetFieldData());
+    dgmf_vtk::ReduceFieldData(
+      this->Controller, ok, output->GetFieldData(), this->ComputeNonOrthogonality);
     status = ok ? 1 : 0;
   }
   if (!status)
@@ -354,6 +355,11 @@ int vtkDGMFDeformFilter::Execute(
     const dgmf::QualitySummary summary =
       dgmf_vtk::AddCellQuality(input, nodes.Points, newCoordinates->GetPointer(0),
         output->GetCellData(), output->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
+    if (this->ComputeNonOrthogonality)
+    {
+      dgmf_vtk::AddNonOrthogonality(input, nodes.Points, newCoordinates->GetPointer(0),
+        output->GetCellData(), output->GetFieldData(), cache.Faces, dgmf_vtk::MakeSMPParallelFor());
+    }
     if (this->FailOnInvertedCells && summary.Inverted > 0)
     {
       vtkErrorMacro(

@@ -41,10 +41,14 @@
  *
  * Output: the deformed grid, with every input point, cell and field array passed through, plus
  * - point arrays `r` and `f`;
- * - cell arrays `SizeSkew` (Knupp's size-skew metric relative to the same input cell; NaN for
- *   cell types it does not cover) and `Inverted` (1 for an inverted cell), when ComputeQuality is
- * on;
- * - field data `SizeSkewMean`, `SizeSkewMinimum`, `InvertedCellCount`, `OutsideNodeCount`.
+ * - cell arrays `SizeSkew` (Knupp's size-skew metric relative to the same input cell; polyhedra,
+ *   polygons and cells non-convex in the input through their faces; NaN for quadratic cells),
+ *   `Inverted` (1 for a cell the deformation inverted) and `InputInvalid` (1 for a cell already
+ *   non-convex, inverted or degenerate in the input), when ComputeQuality is on;
+ * - field data `SizeSkewMean`, `SizeSkewMinimum`, `InvertedCellCount` (cells made invalid by the
+ *   deformation), `InputInvalidCellCount`, `OutsideNodeCount`;
+ * - with ComputeNonOrthogonality: the cell array `NonOrthogonality` and the field data
+ *   `MaximumNonOrthogonality` and `InputMaximumNonOrthogonality` (degrees, as checkMesh).
  * Output points are always double precision. The input is never modified.
  *
  * The Delaunay graph and the node locations are kept between executions while the input's
@@ -348,6 +352,19 @@ public:
 
   ///@{
   /**
+   * Compute the face non-orthogonality of the 3D cells as OpenFOAM's checkMesh defines it (the
+   * angle between the line joining two cell centres and their face's area vector): the cell array
+   * NonOrthogonality (degrees, the largest over the cell's internal faces) and the field data
+   * MaximumNonOrthogonality and InputMaximumNonOrthogonality. The internal faces are kept while the
+   * cells are unchanged. Default: off (it costs about as much as the deformation).
+   */
+  vtkSetMacro(ComputeNonOrthogonality, bool);
+  vtkGetMacro(ComputeNonOrthogonality, bool);
+  vtkBooleanMacro(ComputeNonOrthogonality, bool);
+  ///@}
+
+  ///@{
+  /**
    * Fail (error message, empty output) when the deformed mesh has an inverted cell, instead of
    * producing it with the cells flagged in the Inverted array. Needs ComputeQuality. Default: off.
    */
@@ -478,6 +495,7 @@ protected:
   int RepairPasses = 20;
   bool ComputeQuality = true;
   bool FailOnInvertedCells = false;
+  bool ComputeNonOrthogonality = false;
   int NumberOfThreads = 0;
   int OneCellThickMode = DETECT;
   int RotationCenterMode = GIVEN;

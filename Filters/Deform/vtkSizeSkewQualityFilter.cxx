@@ -1,8 +1,11 @@
 #include "vtkSizeSkewQualityFilter.h"
 
 #include "DGMFMeshConversion.h"
+#include "DGMFNonOrthogonality.h"
 #include "DGMFOutputArrays.h"
+
 #include "DGMFSMPTools.h"
+#include "dgmf/ResultNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -19,6 +22,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -66,7 +70,8 @@ bool SameCells(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
  * have the same points and cells.
  */
 bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
-  dgmf::QualitySummary& summary, std::string& error)
+  dgmf::QualitySummary& summary, dgmf_vtk::InternalFacesCache* faces, double angles[2],
+  std::string& error)
 {
   const vtkSmartPointer<vtkUnstructuredGrid> grid = dgmf_vtk::AsUnstructuredGrid(mesh);
   const vtkSmartPointer<vtkUnstructuredGrid> original = dgmf_vtk::AsUnstructuredGrid(reference);
@@ -88,14 +93,32 @@ bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
   const double* undeformed = dgmf_vtk::PointsAsDouble(reference->GetPoints(), originalCopy);
   summary = dgmf_vtk::AddCellQuality(original, undeformed, deformed, result->GetCellData(),
     result->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
+  if (faces)
+  {
+    dgmf_vtk::AddNonOrthogonality(original, undeformed, deformed, result->GetCellData(),
+      result->GetFieldData(), *faces, dgmf_vtk::MakeSMPParallelFor());
+    angles[0] = std::max(angles[0],
+      dgmf_vtk::GetFieldValue(result->GetFieldData(), dgmf::names::MaximumNonOrthogonality));
+    angles[1] = std::max(angles[1],
+      dgmf_vtk::GetFieldValue(result->GetFieldData(), dgmf::names::InputMaximumNonOrthogonality));
+  }
   return true;
 }
 } // namespace
 
+/// The internal faces of the last mesh measured, kept while its cells are unchanged.
+struct vtkSizeSkewQualityFilter::Internals
+{
+  dgmf_vtk::InternalFacesCache Faces;
+};
+
 vtkSizeSkewQualityFilter::vtkSizeSkewQualityFilter()
+  : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
 }
+
+vtkSizeSkewQualityFilter::~vtkSizeSkewQualityFilter() = default;
 
 vtkUnstructuredGrid* vtkSizeSkewQualityFilter::GetOutput()
 {
@@ -123,6 +146,9 @@ int vtkSizeSkewQualityFilter::RequestData(
   vtkDataObject* outputObject = vtkDataObject::GetData(outputVector, 0);
   std::string error;
   bool ok = true;
+  dgmf_vtk::InternalFacesCache* faces =
+    this->ComputeNonOrthogonality ? &this->Internal->Faces : nullptr;
+  double angles[2] = { 0.0, 0.0 }; // the largest non-orthogonality, deformed and input
   dgmf_vtk::RunWithThreads(this->NumberOfThreads,
     [&]()
     {
@@ -136,7 +162,7 @@ int vtkSizeSkewQualityFilter::RequestData(
         fieldData->PassData(mesh->GetFieldData());
         output->SetFieldData(fieldData);
         dgmf::QualitySummary summary;
-        ok = Measure(mesh, reference, output, summary, error);
+        ok = Measure(mesh, reference, output, summary, faces, angles, error);
         return;
       }
       auto* meshes = vtkCompositeDataSet::SafeDownCast(meshObject);
@@ -177,13 +203,18 @@ int vtkSizeSkewQualityFilter::RequestData(
         blockFieldData->PassData(block->GetFieldData());
         result->SetFieldData(blockFieldData);
         dgmf::QualitySummary summary;
-        ok = Measure(block, original, result, summary, error);
+        ok = Measure(block, original, result, summary, faces, angles, error);
         total = dgmf::MergeQualitySummaries(total, summary);
         outputs->SetDataSet(iterator, result);
       }
       vtkNew<vtkFieldData> fieldData;
       fieldData->PassData(meshes->GetFieldData());
       dgmf_vtk::SetQualitySummary(fieldData, total);
+      if (faces)
+      {
+        dgmf_vtk::AddFieldValue(fieldData, dgmf::names::MaximumNonOrthogonality, angles[0]);
+        dgmf_vtk::AddFieldValue(fieldData, dgmf::names::InputMaximumNonOrthogonality, angles[1]);
+      }
       outputs->SetFieldData(fieldData);
     });
   if (!ok)
@@ -198,5 +229,6 @@ int vtkSizeSkewQualityFilter::RequestData(
 void vtkSizeSkewQualityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads
+     << ", ComputeNonOrthogonality: " << (this->ComputeNonOrthogonality ? "on" : "off") << "\n";
 }

@@ -11,9 +11,11 @@
  *
  * The output is input 0 with every array passed through, plus the cell arrays `SizeSkew` (1 =
  * ideal shape and unchanged size, 0 = degenerate or inverted; NaN for cell types the metric does
- * not cover) and `Inverted`, and the field data `SizeSkewMean`, `SizeSkewMinimum`,
- * `InvertedCellCount` and `SizeSkewEvaluatedCells` (over all blocks): the same names and values
- * vtkDGMFDeformFilter writes for its own output.
+ * not cover), `Inverted` and `InputInvalid`, and the field data `SizeSkewMean`,
+ * `SizeSkewMinimum`, `InvertedCellCount`, `InputInvalidCellCount` and `SizeSkewEvaluatedCells`
+ * (over all blocks), and with ComputeNonOrthogonality the cell array `NonOrthogonality` and the
+ * field data `MaximumNonOrthogonality` and `InputMaximumNonOrthogonality`: the same names and
+ * values vtkDGMFDeformFilter writes for its own output.
  *
  * This is the metric vtkDGMFDeformFilter computes, available for any pair of meshes, e.g. to
  * compare deformations made by other tools. The definition for every cell type is in
@@ -27,6 +29,8 @@
 
 #include "DGMFFiltersModule.h" // for export macro
 #include "vtkPassInputTypeAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
 
 class vtkUnstructuredGrid;
 
@@ -57,14 +61,28 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
+  ///@{
+  /**
+   * Also compute the face non-orthogonality as OpenFOAM's checkMesh defines it (see
+   * vtkDGMFDeformFilter::SetComputeNonOrthogonality). Default: off.
+   */
+  vtkSetMacro(ComputeNonOrthogonality, bool);
+  vtkGetMacro(ComputeNonOrthogonality, bool);
+  vtkBooleanMacro(ComputeNonOrthogonality, bool);
+  ///@}
+
 protected:
   vtkSizeSkewQualityFilter();
-  ~vtkSizeSkewQualityFilter() override = default;
+  ~vtkSizeSkewQualityFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfThreads = 0;
+  bool ComputeNonOrthogonality = false;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
 
 private:
   vtkSizeSkewQualityFilter(const vtkSizeSkewQualityFilter&) = delete;

@@ -11,6 +11,7 @@ Runs `dgmf-deform SRC DIR/NAME OPTIONS`, then `checkMesh` on the written case, a
 - the points on the outer box of the domain did not move, bit for bit;
 - one-cell-thick meshes (--one-cell-thick): each front/back pair of points keeps one (x, y),
   and every point keeps its z, bit for bit.
+--expect-failure expects checkMesh to fail (an unguarded large motion), with the same predictions.
 Optional: --solver N runs simpleFoam for N iterations on the result; --convert binary|compressed
 first converts a copy of the source with foamFormatConvert; --in-place writes into a copy of the
 source itself (OUT = CASE, with --time); --same-as OTHER compares the written points with another
@@ -125,6 +126,7 @@ def main():
     parser.add_argument("--name", required=True)
     parser.add_argument("--baseline")
     parser.add_argument("--mesh-ok", action="store_true")
+    parser.add_argument("--expect-failure", action="store_true")
     parser.add_argument("--one-cell-thick", action="store_true")
     parser.add_argument("--solver", type=int, default=0)
     parser.add_argument("--convert", choices=["binary", "compressed"])
@@ -237,6 +239,38 @@ def main():
     for line in check_log.splitlines():
         if "non-orthogonality Max" in line:
             print(line.strip())
+    # What dgmf-deform predicted: the same maximum non-orthogonality (checkMesh's definition,
+    # within 0.5 degree: the reader gives the points in single precision), and no cell inverted
+    # when checkMesh finds no negative volume. Decomposed polyhedra are other cells: not compared.
+    if "--decompose-polyhedra" not in options:
+        predicted = re.search(r"non-orthogonality max (\S+) \(input (\S+)\)", log)
+        measured = re.search(r"Mesh non-orthogonality Max: (\S+)", check_log)
+        if not predicted or not measured:
+            fail("no non-orthogonality to compare")
+        difference = abs(float(predicted.group(1)) - float(measured.group(1)))
+        print("non-orthogonality: dgmf-deform %s, checkMesh %s (difference %.4f)" % (
+            predicted.group(1), measured.group(1), difference))
+        if difference > 0.5:
+            fail("dgmf-deform's non-orthogonality is not checkMesh's")
+        if args.baseline:
+            with open(args.baseline) as handle:
+                before = re.search(r"Mesh non-orthogonality Max: (\S+)", handle.read())
+            if abs(float(predicted.group(2)) - float(before.group(1))) > 0.5:
+                fail("the input's non-orthogonality %s is not checkMesh's %s" % (
+                    predicted.group(2), before.group(1)))
+        inverted = int(re.search(r"inverted cells (\d+)", log).group(1))
+        negative = re.search(r"Number of negative volume cells: (\d+)", check_log)
+        negative = int(negative.group(1)) if negative else 0
+        # Inverted means a corner (or a face-centre tetrahedron) turned inside out: every cell of
+        # negative volume, and possibly more.
+        if (negative == 0 and inverted != 0) or inverted < negative:
+            fail("%d cells said inverted, checkMesh finds %d of negative volume" % (
+                inverted, negative))
+        print("inverted cells: %d; checkMesh's negative volumes: %d" % (inverted, negative))
+    if args.expect_failure:
+        if verdict == "Mesh OK." or not failures:
+            fail("checkMesh should fail this mesh")
+        print("checkMesh fails it, as expected, and as dgmf-deform predicted")
     if args.mesh_ok and verdict != "Mesh OK.":
         fail("checkMesh should say Mesh OK")
     if args.baseline:

@@ -44,7 +44,8 @@ std::string AsciiPoints(const std::vector<double>& xyz)
   {
     body << "(" << xyz[k] << " " << xyz[k + 1] << " " << xyz[k + 2] << ")\n";
   }
-  body << ")\n\n\n// ************************************************************************* //\n";
+  body
+    << ")\n\n\n// ************************************************************************* //\n";
   return body.str();
 }
 
@@ -75,7 +76,8 @@ std::string BinaryPoints(const std::vector<double>& xyz, bool bigEndian, bool fl
     }
     body.append(bytes, width);
   }
-  return body + ")\n\n\n// ************************************************************************* //\n";
+  return body +
+    ")\n\n\n// ************************************************************************* //\n";
 }
 
 void WriteText(const fs::path& file, const std::string& text, bool gzip = false)
@@ -158,10 +160,8 @@ TEST(PointsFile, WritesEveryFormItReadsAndReadsBackTheSameBits)
 {
   const fs::path dir = Scratch("write");
   const std::vector<double> moved = { 1.0 / 7, -2.5e-17, 0.1, 1e300, -0.0, 3.0, 4.5, 2.0, -1.0 };
-  const std::vector<std::pair<std::string, std::string>> forms = {
-    { "ascii", AsciiPoints(Sample) }, { "lsb", BinaryPoints(Sample, false, false) },
-    { "msb", BinaryPoints(Sample, true, false) }
-  };
+  const std::vector<std::pair<std::string, std::string>> forms = { { "ascii", AsciiPoints(Sample) },
+    { "lsb", BinaryPoints(Sample, false, false) }, { "msb", BinaryPoints(Sample, true, false) } };
   for (const auto& form : forms)
   {
     for (bool gzip : { false, true })
@@ -178,7 +178,8 @@ TEST(PointsFile, WritesEveryFormItReadsAndReadsBackTheSameBits)
       EXPECT_EQ(back.BodyFormat, like.BodyFormat);
       EXPECT_EQ(back.Compressed, gzip);
       EXPECT_EQ(of::FoamHeaderEntry(back.Preamble, "location"), "1/polyMesh");
-      EXPECT_EQ(of::FoamHeaderEntry(back.Preamble, "arch"), of::FoamHeaderEntry(like.Preamble, "arch"));
+      EXPECT_EQ(
+        of::FoamHeaderEntry(back.Preamble, "arch"), of::FoamHeaderEntry(like.Preamble, "arch"));
       EXPECT_EQ(back.Epilogue, like.Epilogue);
       for (const fs::directory_entry& entry : fs::directory_iterator(out))
       {
@@ -349,10 +350,10 @@ TEST(CaseDirectory, WrongInputsWriteNothingAndSayWhy)
     return std::string("no error");
   };
   EXPECT_NE(message(out, "constant", good.data(), good.data(), 2).find("has 3"), std::string::npos);
-  EXPECT_NE(message(out, "constant", shifted.data(), good.data(), 3).find("point 1"),
-    std::string::npos);
-  EXPECT_NE(message(out, "constant", good.data(), nan.data(), 3).find("not finite"),
-    std::string::npos);
+  EXPECT_NE(
+    message(out, "constant", shifted.data(), good.data(), 3).find("point 1"), std::string::npos);
+  EXPECT_NE(
+    message(out, "constant", good.data(), nan.data(), 3).find("not finite"), std::string::npos);
   EXPECT_NE(message(out, "../x", good.data(), good.data(), 3).find("time"), std::string::npos);
   EXPECT_FALSE(fs::exists(out)) << "nothing is written when the input is wrong";
   // A directory that holds something else is not overwritten.

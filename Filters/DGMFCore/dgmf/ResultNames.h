@@ -18,12 +18,19 @@ constexpr const char* F = "f"; ///< damping factor f
 // Cell arrays (the quality metric).
 constexpr const char* SizeSkew = "SizeSkew"; ///< Knupp's size-skew relative to the input cell
 constexpr const char* Inverted = "Inverted"; ///< 1 for a cell the deformation inverted
+/// 1 for a cell non-convex, inverted or degenerate in the input (judged through its faces)
+constexpr const char* InputInvalid = "InputInvalid";
+/// degrees: the largest face non-orthogonality of the cell (OpenFOAM's checkMesh definition)
+constexpr const char* NonOrthogonality = "NonOrthogonality";
 
 // Field data: the quality summary.
 constexpr const char* SizeSkewMean = "SizeSkewMean";
 constexpr const char* SizeSkewMinimum = "SizeSkewMinimum";
 constexpr const char* InvertedCellCount = "InvertedCellCount";
 constexpr const char* SizeSkewEvaluatedCells = "SizeSkewEvaluatedCells";
+constexpr const char* InputInvalidCellCount = "InputInvalidCellCount";
+constexpr const char* MaximumNonOrthogonality = "MaximumNonOrthogonality";           ///< degrees
+constexpr const char* InputMaximumNonOrthogonality = "InputMaximumNonOrthogonality"; ///< degrees
 
 // Field data: every method.
 constexpr const char* Method = "Method"; ///< the method's name (MethodTable.def)

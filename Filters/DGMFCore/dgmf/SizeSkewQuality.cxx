@@ -521,6 +521,7 @@ QualitySummary MergeQualitySummaries(const QualitySummary& a, const QualitySumma
   merged.Sum = a.Sum + b.Sum;
   merged.Evaluated = a.Evaluated + b.Evaluated;
   merged.Inverted = a.Inverted + b.Inverted;
+  merged.InputInvalid = a.InputInvalid + b.InputInvalid;
   merged.NotComputed = a.NotComputed + b.NotComputed;
   if (merged.Evaluated > 0)
   {
@@ -532,8 +533,8 @@ QualitySummary MergeQualitySummaries(const QualitySummary& a, const QualitySumma
   return merged;
 }
 
-QualitySummary SummarizeQuality(
-  const double* sizeSkew, const std::uint8_t* inverted, std::size_t count, const std::uint8_t* skip)
+QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
+  std::size_t count, const std::uint8_t* skip, const std::uint8_t* inputInvalid)
 {
   QualitySummary summary;
   if (sizeSkew == nullptr)
@@ -562,6 +563,10 @@ QualitySummary SummarizeQuality(
     if (inverted != nullptr && inverted[i] != 0)
     {
       ++summary.Inverted;
+    }
+    if (inputInvalid != nullptr && inputInvalid[i] != 0)
+    {
+      ++summary.InputInvalid;
     }
   }
   summary.Sum = sum;

@@ -60,22 +60,24 @@ void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
 /// Mean, minimum and inverted count over a set of cells.
 struct QualitySummary
 {
-  double Mean = 0.0;           ///< mean SizeSkew over the evaluated cells (0 if none)
-  double Minimum = 0.0;        ///< minimum SizeSkew over the evaluated cells (0 if none)
-  std::size_t Inverted = 0;    ///< number of inverted cells
-  std::size_t Evaluated = 0;   ///< cells with a supported shape
-  std::size_t NotComputed = 0; ///< cells of other types (their value is NaN)
-  double Sum = 0.0;            ///< sum of SizeSkew over the evaluated cells (to combine summaries)
+  double Mean = 0.0;            ///< mean SizeSkew over the evaluated cells (0 if none)
+  double Minimum = 0.0;         ///< minimum SizeSkew over the evaluated cells (0 if none)
+  std::size_t Inverted = 0;     ///< number of cells the deformation inverted
+  std::size_t InputInvalid = 0; ///< cells already non-convex, inverted or degenerate in the input
+  std::size_t Evaluated = 0;    ///< cells with a supported shape
+  std::size_t NotComputed = 0;  ///< cells of other types (their value is NaN)
+  double Sum = 0.0;             ///< sum of SizeSkew over the evaluated cells (to combine summaries)
 };
 
 /**
  * Summary of per-cell values; NaN values are counted as not computed. `inverted` (may be null)
- * flags inverted cells. Cells with a non-zero `skip` flag (may be null; e.g. ghost cells, counted
- * by another process) are left out. The sum is taken in a fixed order, so the result is
- * reproducible.
+ * flags inverted cells, `inputInvalid` (may be null) cells invalid in the input. Cells with a
+ * non-zero `skip` flag (may be null; e.g. ghost cells, counted by another process) are left out.
+ * The sum is taken in a fixed order, so the result is reproducible.
  */
 QualitySummary SummarizeQuality(const double* sizeSkew, const std::uint8_t* inverted,
-  std::size_t count, const std::uint8_t* skip = nullptr);
+  std::size_t count, const std::uint8_t* skip = nullptr,
+  const std::uint8_t* inputInvalid = nullptr);
 
 /// The summary of two disjoint sets of cells (e.g. two blocks of a composite mesh).
 QualitySummary MergeQualitySummaries(const QualitySummary& a, const QualitySummary& b);

@@ -1,0 +1,140 @@
+// The quality OpenFOAM users act on, through the VTK filters: polyhedra get a SizeSkew, cells
+// invalid in the input are counted apart, and the face non-orthogonality is checkMesh's.
+#include "vtkDGMFDeformFilter.h"
+#include "vtkSizeSkewQualityFilter.h"
+
+#include "FieldValue.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using dgmf_test::Field;
+
+namespace
+{
+/// Two unit cubes along x sharing the face x = 1: the first a hexahedron, the second a
+/// hexahedron or the same cell as a polyhedron (OpenFOAM's cells, as its reader gives them).
+vtkSmartPointer<vtkUnstructuredGrid> TwoCubes(bool polyhedron)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (double x : { 0.0, 1.0, 2.0 })
+  {
+    for (double z : { 0.0, 1.0 })
+    {
+      for (double y : { 0.0, 1.0 })
+      {
+        points->InsertNextPoint(x, y, z);
+      }
+    }
+  }
+  const auto id = [](int i, int y, int z) { return static_cast<vtkIdType>(4 * i + 2 * z + y); };
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  mesh->SetPoints(points);
+  for (int i = 0; i < 2; ++i)
+  {
+    const vtkIdType hex[8] = { id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0), id(i, 1, 0),
+      id(i, 0, 1), id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1) };
+    if (i == 1 && polyhedron)
+    {
+      const int faces[6][4] = { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 },
+        { 0, 3, 2, 1 }, { 4, 5, 6, 7 } };
+      vtkNew<vtkIdList> stream;
+      stream->InsertNextId(6);
+      for (const auto& face : faces)
+      {
+        stream->InsertNextId(4);
+        for (int k : face)
+        {
+          stream->InsertNextId(hex[k]);
+        }
+      }
+      mesh->InsertNextCell(VTK_POLYHEDRON, stream);
+    }
+    else
+    {
+      mesh->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+    }
+  }
+  return mesh;
+}
+
+/// `mesh` with the points of the face x = 2 moved by `dy` along y.
+vtkSmartPointer<vtkUnstructuredGrid> Sheared(vtkUnstructuredGrid* mesh, double dy)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->DeepCopy(mesh);
+  for (vtkIdType p = 8; p < 12; ++p)
+  {
+    double x[3];
+    out->GetPoint(p, x);
+    x[1] += dy;
+    out->GetPoints()->SetPoint(p, x);
+  }
+  return out;
+}
+
+vtkUnstructuredGrid* Measure(vtkSizeSkewQualityFilter* quality, vtkUnstructuredGrid* mesh,
+  vtkUnstructuredGrid* reference)
+{
+  quality->SetInputData(mesh);
+  quality->SetReferenceData(reference);
+  quality->ComputeNonOrthogonalityOn();
+  quality->Update();
+  return quality->GetOutput();
+}
+} // namespace
+
+TEST(FaceQualityFilters, APolyhedronGetsASizeSkewAndTheSameNonOrthogonalityAsAHexahedron)
+{
+  for (bool polyhedron : { false, true })
+  {
+    SCOPED_TRACE(polyhedron ? "polyhedron" : "hexahedron");
+    const vtkSmartPointer<vtkUnstructuredGrid> mesh = TwoCubes(polyhedron);
+    vtkNew<vtkSizeSkewQualityFilter> quality;
+    vtkUnstructuredGrid* same = Measure(quality, mesh, mesh);
+    EXPECT_EQ(Field(same, "SizeSkewEvaluatedCells"), 2.0);
+    EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(1), 1.0, 1e-12);
+    EXPECT_EQ(Field(same, "MaximumNonOrthogonality"), 0.0);
+    // Sheared by 2: the neighbour's centre moves by 1 along y, 45 degrees.
+    vtkUnstructuredGrid* sheared = Measure(quality, Sheared(mesh, 2.0), mesh);
+    EXPECT_EQ(Field(sheared, "SizeSkewEvaluatedCells"), 2.0);
+    const double sizeSkew = sheared->GetCellData()->GetArray("SizeSkew")->GetTuple1(1);
+    EXPECT_GT(sizeSkew, 0.0);
+    EXPECT_LT(sizeSkew, 1.0);
+    EXPECT_NEAR(Field(sheared, "MaximumNonOrthogonality"), 45.0, 1e-10);
+    EXPECT_NEAR(Field(sheared, "InputMaximumNonOrthogonality"), 0.0, 1e-12);
+    EXPECT_NEAR(sheared->GetCellData()->GetArray("NonOrthogonality")->GetTuple1(0), 45.0, 1e-10);
+    EXPECT_EQ(Field(sheared, "InvertedCellCount"), 0.0);
+  }
+}
+
+TEST(FaceQualityFilters, CellsInvalidInTheInputAreCountedApartFromCellsTheMotionInverts)
+{
+  // The second cube dented (corner 6 below its mid-plane): OpenFOAM accepts it, the corner
+  // metric calls it inverted.
+  vtkSmartPointer<vtkUnstructuredGrid> dented = TwoCubes(false);
+  dented->GetPoints()->SetPoint(10, 1.6, 0.6, 0.3);
+  vtkNew<vtkSizeSkewQualityFilter> quality;
+  vtkUnstructuredGrid* same = Measure(quality, dented, dented);
+  EXPECT_EQ(Field(same, "InputInvalidCellCount"), 1.0);
+  EXPECT_EQ(Field(same, "InvertedCellCount"), 0.0);
+  EXPECT_EQ(same->GetCellData()->GetArray("InputInvalid")->GetTuple1(1), 1.0);
+  EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(1), 1.0, 1e-12);
+  // The dent pushed through the bottom: made invalid by the deformation.
+  vtkNew<vtkUnstructuredGrid> through;
+  through->DeepCopy(dented);
+  through->GetPoints()->SetPoint(10, 1.6, 0.6, -0.5);
+  vtkUnstructuredGrid* inverted = Measure(quality, through, dented);
+  EXPECT_EQ(Field(inverted, "InvertedCellCount"), 1.0);
+  EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
+}
