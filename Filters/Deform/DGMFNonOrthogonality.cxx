@@ -56,7 +56,8 @@ public:
     }
     dgmf::CellShape shape;
     const int* order = nullptr;
-    if (type == VTK_EMPTY_CELL || vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3 ||
+    if (type == VTK_EMPTY_CELL ||
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3 ||
       !CellShapeOf(type, shape, order))
     {
       return;
@@ -127,8 +128,8 @@ double AddNonOrthogonality(vtkUnstructuredGrid* mesh, const double* originalPoin
 {
   const VTKFaceCells cells(mesh);
   const dgmf::InputOrientation& orientation = cache.Orient(mesh, originalPoints, parallelFor);
-  const dgmf::NonOrthogonalityResult result = dgmf::ComputeNonOrthogonality(
-    cells, cache.Get(mesh), orientation, deformedPoints, parallelFor);
+  const dgmf::NonOrthogonalityResult result =
+    dgmf::ComputeNonOrthogonality(cells, cache.Get(mesh), orientation, deformedPoints, parallelFor);
   vtkNew<vtkDoubleArray> perCell;
   perCell->SetName(dgmf::names::NonOrthogonality);
   perCell->SetNumberOfTuples(static_cast<vtkIdType>(result.CellMaximum.size()));

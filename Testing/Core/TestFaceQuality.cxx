@@ -19,8 +19,8 @@ const double Pi = 3.14159265358979323846;
 /// The unit cube, VTK hexahedron corner order.
 std::vector<double> Cube(double x0 = 0.0)
 {
-  return { x0, 0, 0, x0 + 1, 0, 0, x0 + 1, 1, 0, x0, 1, 0, x0, 0, 1, x0 + 1, 0, 1, x0 + 1, 1, 1,
-    x0, 1, 1 };
+  return { x0, 0, 0, x0 + 1, 0, 0, x0 + 1, 1, 0, x0, 1, 0, x0, 0, 1, x0 + 1, 0, 1, x0 + 1, 1, 1, x0,
+    1, 1 };
 }
 
 /// A rigid motion of every point: rotation by `degrees` about z, then a translation.
@@ -37,8 +37,8 @@ std::vector<double> Moved(std::vector<double> points, double degrees)
   return points;
 }
 
-dgmf::CellQuality Decomposed(const std::vector<double>& original, const std::vector<double>& deformed,
-  const std::int64_t* faces)
+dgmf::CellQuality Decomposed(const std::vector<double>& original,
+  const std::vector<double>& deformed, const std::int64_t* faces)
 {
   return dgmf::ComputeDecomposedSizeSkew(
     static_cast<int>(original.size() / 3), original.data(), deformed.data(), faces);
@@ -102,8 +102,8 @@ TEST(DecomposedSizeSkew, ANonConvexInputCellIsJudgedByWhatTheDeformationDoes)
   dented[3 * 6 + 0] = 0.6;
   dented[3 * 6 + 1] = 0.6;
   ASSERT_TRUE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, dented.data()));
-  ASSERT_TRUE(dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data())
-                .Inverted);
+  ASSERT_TRUE(
+    dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data()).Inverted);
   EXPECT_FALSE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, Cube().data()));
   // Unchanged or moved rigidly: valid, score 1.
   const dgmf::CellQuality same = Decomposed(dented, Moved(dented, 40.0), HexFaces());

@@ -83,8 +83,8 @@ vtkSmartPointer<vtkUnstructuredGrid> Sheared(vtkUnstructuredGrid* mesh, double d
   return out;
 }
 
-vtkUnstructuredGrid* Measure(vtkSizeSkewQualityFilter* quality, vtkUnstructuredGrid* mesh,
-  vtkUnstructuredGrid* reference)
+vtkUnstructuredGrid* Measure(
+  vtkSizeSkewQualityFilter* quality, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* reference)
 {
   quality->SetInputData(mesh);
   quality->SetReferenceData(reference);

@@ -1,5 +1,6 @@
 #include "dgmf/DecomposedSizeSkew.h"
 
+#include "dgmf/CellFaces.h"
 #include "dgmf/CellGeometry.h"
 
 #include <algorithm>
@@ -77,6 +78,14 @@ CellQuality ComputeDecomposedSizeSkew(
     cell.SizeSkew = 0.0;
   }
   return cell;
+}
+
+CellQuality ComputeCellSizeSkew(
+  CellShape shape, bool inputInvalid, const double* original, const double* deformed)
+{
+  return inputInvalid ? ComputeDecomposedSizeSkew(
+                          GetNumberOfCorners(shape), original, deformed, GetShapeFaceStream(shape))
+                      : ComputeSizeSkew(shape, original, deformed);
 }
 
 bool IsInvalidInputCell(CellShape shape, const double* original)

@@ -41,6 +41,14 @@ CellQuality ComputeDecomposedSizeSkew(
  */
 bool IsInvalidInputCell(CellShape shape, const double* original);
 
+/**
+ * The size-skew the metric and the quality guard give a cell of a standard shape: Knupp's corner
+ * metric (ComputeSizeSkew), or for a cell invalid in the input (`inputInvalid`, from
+ * IsInvalidInputCell) its face decomposition (ComputeDecomposedSizeSkew).
+ */
+CellQuality ComputeCellSizeSkew(
+  CellShape shape, bool inputInvalid, const double* original, const double* deformed);
+
 } // namespace dgmf
 
 #endif

@@ -4,6 +4,7 @@
 // max-min SizeSkew smoothing (Freitag's smart Laplacian with an optimisation step) elsewhere.
 #include "dgmf/LocalRepair.h"
 
+#include "dgmf/DecomposedSizeSkew.h"
 #include "dgmf/NodeRepairer.h"
 
 #include <algorithm>
@@ -192,7 +193,8 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
         {
           GatherCorners(mesh, c, originalPoints, original);
           GatherCorners(mesh, c, points, deformed);
-          const CellQuality q = ComputeSizeSkew(mesh.Shapes[c], original, deformed);
+          const CellQuality q = ComputeCellSizeSkew(
+            mesh.Shapes[c], IsInvalidInputCell(mesh.Shapes[c], original), original, deformed);
           quality[c] = q.SizeSkew;
           inverted[c] = q.Inverted ? 1 : 0;
         }

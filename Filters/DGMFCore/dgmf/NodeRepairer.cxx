@@ -1,6 +1,8 @@
 // The quality guard's node steps, without the moves themselves (RepairMoves.cxx).
 #include "dgmf/NodeRepairer.h"
 
+#include "dgmf/DecomposedSizeSkew.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -40,6 +42,7 @@ void NodeRepairer::InitializeCell(
   GatherCorners(this->Mesh, c, this->OriginalPoints, cell.Original);
   const CellQuality self = ComputeSizeSkew(cell.Shape, cell.Original, cell.Original);
   cell.Degenerate = self.SizeSkew == 0.0 && !self.Inverted;
+  cell.InputInvalid = self.Inverted; // non-convex or inverted before the motion
   cell.Quality = quality;
   cell.Inverted = inverted;
   if (cell.Tables.Dimension == 2)
@@ -152,7 +155,8 @@ double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position,
       continue;
     }
     this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality = ComputeSizeSkew(cell.Shape, cell.Original, corners);
+    const CellQuality quality =
+      ComputeCellSizeSkew(cell.Shape, cell.InputInvalid, cell.Original, corners);
     inverted = inverted || quality.Inverted;
     minimum = std::min(minimum, quality.SizeSkew);
     if (qualities != nullptr)
@@ -318,7 +322,8 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
   {
     ActiveCell& cell = this->Cells[this->Incident[i]];
     this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality = ComputeSizeSkew(cell.Shape, cell.Original, corners);
+    const CellQuality quality =
+      ComputeCellSizeSkew(cell.Shape, cell.InputInvalid, cell.Original, corners);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; k < cell.NumberOfNodes; ++k)

@@ -54,7 +54,8 @@ FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t 
 }
 
 /// The face `face` of a face stream: its first id and its number of ids.
-const std::int64_t* FaceAt(const std::vector<std::int64_t>& stream, std::int32_t face, std::int64_t& n)
+const std::int64_t* FaceAt(
+  const std::vector<std::int64_t>& stream, std::int32_t face, std::int64_t& n)
 {
   std::int64_t at = 1;
   for (std::int32_t f = 0; f < face; ++f)
@@ -67,7 +68,8 @@ const std::int64_t* FaceAt(const std::vector<std::int64_t>& stream, std::int32_t
 /// The centre of a cell as OpenFOAM computes it (primitiveMeshCellCentresAndVols), with the
 /// pyramid volumes taken positive whatever the orientation of the cell's faces; `signedVolume`
 /// gets 3 x the volume the faces give as they are oriented.
-Vec3 CellCentreOf(const double* points, const std::vector<std::int64_t>& stream, double& signedVolume)
+Vec3 CellCentreOf(
+  const double* points, const std::vector<std::int64_t>& stream, double& signedVolume)
 {
   thread_local std::vector<FaceGeometry> geometry;
   const std::int64_t faces = stream.empty() ? 0 : stream[0];
@@ -108,7 +110,8 @@ void CellCentres(const FaceCells& cells, const double* points, std::vector<doubl
       for (std::size_t c = begin; c < end; ++c)
       {
         cells.GetFaces(c, stream);
-        Store(CellCentreOf(points, stream, volumes[c]), centres.data(), static_cast<std::int64_t>(c));
+        Store(
+          CellCentreOf(points, stream, volumes[c]), centres.data(), static_cast<std::int64_t>(c));
       }
     });
 }
@@ -244,7 +247,8 @@ InternalFaces FindInternalFaces(const FaceCells& cells, std::size_t numberOfPoin
   {
     order[f] = f;
   }
-  std::sort(order.begin(), order.end(), [&faces](std::size_t a, std::size_t b)
+  std::sort(order.begin(), order.end(),
+    [&faces](std::size_t a, std::size_t b)
     { return std::tie(faces.Owner[a], faces.Face[a]) < std::tie(faces.Owner[b], faces.Face[b]); });
   InternalFaces sorted;
   for (std::size_t f : order)
@@ -272,9 +276,8 @@ InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
   return orientation;
 }
 
-NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells,
-  const InternalFaces& faces, const InputOrientation& orientation, const double* points,
-  const ParallelFor& parallelFor)
+NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells, const InternalFaces& faces,
+  const InputOrientation& orientation, const double* points, const ParallelFor& parallelFor)
 {
   std::vector<double> centres, volumes;
   CellCentres(cells, points, centres, volumes, parallelFor);

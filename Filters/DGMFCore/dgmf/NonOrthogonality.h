@@ -76,9 +76,8 @@ struct NonOrthogonalityResult
  * of the owner as its faces do in the input (`orientation`), so a face whose neighbour centre
  * passes behind it scores over 90 degrees.
  */
-NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells,
-  const InternalFaces& faces, const InputOrientation& orientation, const double* points,
-  const ParallelFor& parallelFor);
+NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells, const InternalFaces& faces,
+  const InputOrientation& orientation, const double* points, const ParallelFor& parallelFor);
 
 } // namespace dgmf
 
