@@ -214,6 +214,35 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
   }
 }
 
+std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
+  vtkUnstructuredGrid* mesh, const InputNodes& nodes)
+{
+  const std::size_t n = nodes.NumberOfNodes;
+  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Dimension);
+  std::vector<std::uint8_t> flags = FlagBoundaryNodes(facets, static_cast<vtkIdType>(n));
+  if (nodes.Layers.Found())
+  {
+    // A one-cell-thick mesh: its two planes are not boundaries, only the faces across them are.
+    std::fill(flags.begin(), flags.end(), 0);
+    const dgmf::ExtrudedLayers& layers = nodes.Layers;
+    for (std::size_t f = 0; f < facets.Size(); ++f)
+    {
+      const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
+      const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
+      const auto onPlane = [&](double plane)
+      {
+        return std::all_of(
+          begin, end, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
+      };
+      if (!onPlane(layers.Low) && !onPlane(layers.High))
+      {
+        std::for_each(begin, end, [&](vtkIdType id) { flags[static_cast<std::size_t>(id)] = 1; });
+      }
+    }
+  }
+  return flags;
+}
+
 void InputGatherer::GatherKinds(
   vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker, InputNodes& nodes)
 {
@@ -221,6 +250,19 @@ void InputGatherer::GatherKinds(
   if (options.Roles)
   {
     nodes.Kinds = options.Roles->Kinds;
+    // The mesh's own boundary where no block was read (a reader asked for the moving patch only)
+    // is static: it must not follow the body. Pieces of a distributed mesh need ghost cells.
+    if (!options.Distributed || mesh->GetCellGhostArray())
+    {
+      const std::vector<std::uint8_t> flags = this->FlagMeshBoundary(mesh, nodes);
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        if (flags[i] && nodes.Kinds[i] == dgmf::NodeKind::Interior)
+        {
+          nodes.Kinds[i] = dgmf::NodeKind::StaticBoundary;
+        }
+      }
+    }
     return;
   }
   nodes.Kinds.assign(n, dgmf::NodeKind::Interior);
@@ -258,28 +300,7 @@ void InputGatherer::GatherKinds(
       "cells (e.g. ParaView's Ghost Cells Generator), or the faces between pieces "
       "would be taken for the mesh's boundary. Add ghost cells or select a marker.");
   }
-  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Dimension);
-  std::vector<std::uint8_t> flags = FlagBoundaryNodes(facets, static_cast<vtkIdType>(n));
-  if (nodes.Layers.Found())
-  {
-    // A one-cell-thick mesh: its two planes are not boundaries, only the faces across them are.
-    std::fill(flags.begin(), flags.end(), 0);
-    const dgmf::ExtrudedLayers& layers = nodes.Layers;
-    for (std::size_t f = 0; f < facets.Size(); ++f)
-    {
-      const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
-      const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
-      const auto onPlane = [&](double plane)
-      {
-        return std::all_of(
-          begin, end, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
-      };
-      if (!onPlane(layers.Low) && !onPlane(layers.High))
-      {
-        std::for_each(begin, end, [&](vtkIdType id) { flags[static_cast<std::size_t>(id)] = 1; });
-      }
-    }
-  }
+  const std::vector<std::uint8_t> flags = this->FlagMeshBoundary(mesh, nodes);
   std::size_t boundary = 0;
   for (std::size_t i = 0; i < n; ++i)
   {

@@ -120,6 +120,9 @@ private:
   void GatherKinds(vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker,
     InputNodes& nodes);
   void GatherSlipPlanes(const GatherOptions& options, InputNodes& nodes);
+  // 1 for the nodes on the mesh's boundary faces (for a one-cell-thick mesh, the faces across
+  // its two planes).
+  std::vector<std::uint8_t> FlagMeshBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes);
   // The kinds of the last marker array (checked once).
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;

@@ -390,7 +390,9 @@ public:
    * gives them). Each moving entry is one body (body 1, 2, ... in order: with several, each has its
    * own damping field and motion, SetBodyMotion); static entries stay; the nodes of a slip entry
    * (a plane: a symmetry plane) move only within it. The boundary blocks not named (blocks of
-   * lower dimension than the mesh) are static, but for the two planes of a one-cell-thick mesh. A
+   * lower dimension than the mesh), and the nodes of the mesh's own boundary that no block holds
+   * (a reader asked for the moving patch only), are static, but for the two planes of a
+   * one-cell-thick mesh. A
    * node in several blocks is moving if one of them moves (the first body listed wins), else
    * static if one is static, else slip; a node on two slip planes is static. With names, the
    * boundary-marker and body-id arrays are not read; an unknown name is an error that lists the

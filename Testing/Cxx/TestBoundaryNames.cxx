@@ -355,3 +355,49 @@ TEST(BoundaryNames, AOneCellThickMeshMovesAsItsLayerBothLayersAlike)
   ASSERT_NE(VolumeOf(stiff), nullptr);
   EXPECT_GT(stiff->GetFieldData()->GetArray("InvertedCellCount")->GetTuple1(0), 0.0);
 }
+
+TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
+{
+  // A reader asked for the internal mesh and the moving patch only (ParaView's OpenFOAM reader
+  // with one patch ticked): the square's sides are no block, but they are the mesh's boundary and
+  // must stay. The result is the marker's, bit for bit.
+  auto circle = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints);
+  vtkNew<vtkDGMFDeformFilter> marked;
+  marked->SetInputData(circle);
+  marked->SetBoundaryMarkerArrayName("BoundaryMarker");
+  marked->SetRotationAngles(0, 0, 60);
+  marked->Update();
+
+  auto all = NamedBlocks(circle);
+  auto* patches = vtkMultiBlockDataSet::SafeDownCast(all->GetBlock(1));
+  ASSERT_NE(patches, nullptr);
+  vtkNew<vtkMultiBlockDataSet> onlyCircle;
+  for (unsigned int k = 0; k < patches->GetNumberOfBlocks(); ++k)
+  {
+    if (std::string(patches->GetMetaData(k)->Get(vtkCompositeDataSet::NAME())) == "circle")
+    {
+      onlyCircle->SetBlock(0, patches->GetBlock(k));
+      Name(onlyCircle, 0, "circle");
+    }
+  }
+  ASSERT_EQ(onlyCircle->GetNumberOfBlocks(), 1u);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, all->GetBlock(0));
+  Name(blocks, 0, "internalMesh");
+  blocks->SetBlock(1, onlyCircle);
+  Name(blocks, 1, "boundary");
+
+  vtkNew<vtkDGMFDeformFilter> named;
+  named->SetInputData(blocks);
+  named->AddMovingBoundary("circle");
+  named->SetRotationAngles(0, 0, 60);
+  named->Update();
+  vtkUnstructuredGrid* volume = VolumeOf(named->GetOutputDataObject(0));
+  ASSERT_NE(volume, nullptr);
+  vtkUnstructuredGrid* reference = marked->GetOutput();
+  for (vtkIdType i = 0; i < CirclePoints; ++i)
+  {
+    ASSERT_EQ(std::memcmp(volume->GetPoint(i), reference->GetPoint(i), 3 * sizeof(double)), 0)
+      << "node " << i;
+  }
+}
