@@ -179,6 +179,46 @@ TEST(SlipPlanes, SlipNodesStayInTheirPlaneAndSlideWithTheBody)
   EXPECT_NEAR((moved[0] + moved[1] + moved[2]) / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 1e-15);
 }
 
+namespace
+{
+/// The problem of `nodes` (3D) turned by `degrees` about `axis`.
+dgmf::DeformationProblem Turned(const dgmf_test::NodeSet& nodes, int axis, double degrees)
+{
+  dgmf::DeformationProblem problem;
+  problem.Dimension = nodes.Dimension;
+  problem.NumberOfNodes = nodes.Size();
+  problem.Points = nodes.Points.data();
+  problem.Kinds = nodes.Kinds.data();
+  problem.Motions[0].AnglesDegrees[axis] = degrees;
+  return problem;
+}
+
+/// `problem` deformed with DGMF: 3 coordinates per node.
+std::vector<double> DeformWithDGMF(const dgmf::DeformationProblem& problem)
+{
+  const dgmf::DelaunayMapping mapping(
+    problem.Dimension, problem.Points, problem.NumberOfNodes, problem.Kinds, dgmf::SerialFor);
+  std::vector<double> deformed(3 * problem.NumberOfNodes);
+  dgmf::VectorFieldStore fields(problem.NumberOfNodes);
+  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
+    ->Deform(
+      problem, &mapping, dgmf::DeformationOutputs{ deformed.data(), &fields }, dgmf::SerialFor);
+  return deformed;
+}
+
+/// `problem` deformed with DGMF through the 2D problem of its `layers`: 3 coordinates per node.
+std::vector<double> DeformThroughLayer(
+  const dgmf::ExtrudedLayers& layers, const dgmf::DeformationProblem& problem)
+{
+  dgmf::LayerProblemStorage storage;
+  const std::vector<double> layerDeformed =
+    DeformWithDGMF(dgmf::ReduceToLayer(layers, problem, storage));
+  std::vector<double> deformed(3 * problem.NumberOfNodes);
+  dgmf::ExpandFromLayer(layers, problem.Points, layerDeformed.data(), deformed.data());
+  return deformed;
+}
+} // namespace
+
 TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
 {
   // The circle in a square, extruded along x from -0.5 to 0.25: a one-cell-thick mesh.
@@ -208,24 +248,12 @@ TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
 
   // A rotation about x of the layered mesh, through the layer: the same in-plane motion as the 2D
   // mesh rotated about z, both layers alike, x kept.
-  dgmf::DeformationProblem problem;
-  problem.Dimension = 3;
-  problem.NumberOfNodes = layered.Size();
-  problem.Points = layered.Points.data();
-  problem.Kinds = layered.Kinds.data();
-  problem.Motions[0].AnglesDegrees[0] = 40.0;
+  const dgmf::DeformationProblem problem = Turned(layered, 0, 40.0);
   dgmf::LayerProblemStorage storage;
   const dgmf::DeformationProblem layer = dgmf::ReduceToLayer(layers, problem, storage);
   EXPECT_EQ(layer.Dimension, 2);
   EXPECT_EQ(layer.Motions[0].AnglesDegrees[2], 40.0);
-  const dgmf::DelaunayMapping mapping(
-    2, layer.Points, layer.NumberOfNodes, layer.Kinds, dgmf::SerialFor);
-  std::vector<double> layerDeformed(3 * layer.NumberOfNodes), deformed(layered.Points.size());
-  dgmf::VectorFieldStore fields(layer.NumberOfNodes);
-  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
-    ->Deform(
-      layer, &mapping, dgmf::DeformationOutputs{ layerDeformed.data(), &fields }, dgmf::SerialFor);
-  dgmf::ExpandFromLayer(layers, layered.Points.data(), layerDeformed.data(), deformed.data());
+  const std::vector<double> deformed = DeformThroughLayer(layers, problem);
   const std::size_t m = flat.Size();
   for (std::size_t i = 0; i < m; ++i)
   {
@@ -265,38 +293,18 @@ TEST(ExtrudedLayers, CellCentresBetweenThePlanesAreInnerNodesAThirdLayerIsNot)
   EXPECT_EQ(layers.Front[m], static_cast<std::int32_t>(2 * m));
   EXPECT_EQ(layers.Layer[2 * m + 1], static_cast<std::int32_t>(m + 1));
 
-  dgmf::DeformationProblem problem;
-  problem.Dimension = 3;
-  problem.NumberOfNodes = layered.Size();
-  problem.Points = layered.Points.data();
-  problem.Kinds = layered.Kinds.data();
-  problem.Motions[0].AnglesDegrees[2] = 25.0;
-  dgmf::LayerProblemStorage storage;
-  const dgmf::DeformationProblem layer = dgmf::ReduceToLayer(layers, problem, storage);
-  const dgmf::DelaunayMapping mapping(
-    2, layer.Points, layer.NumberOfNodes, layer.Kinds, dgmf::SerialFor);
-  std::vector<double> layerDeformed(3 * layer.NumberOfNodes), deformed(layered.Points.size());
-  dgmf::VectorFieldStore fields(layer.NumberOfNodes);
-  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
-    ->Deform(
-      layer, &mapping, dgmf::DeformationOutputs{ layerDeformed.data(), &fields }, dgmf::SerialFor);
-  dgmf::ExpandFromLayer(layers, layered.Points.data(), layerDeformed.data(), deformed.data());
+  const dgmf::DeformationProblem problem = Turned(layered, 2, 25.0);
+  const std::vector<double> deformed = DeformThroughLayer(layers, problem);
   // The inner nodes moved in the plane, as the same point of the 2D mesh does, and kept z.
   dgmf_test::NodeSet flatWithCentres = flat;
   flatWithCentres.Add(1.7, 0.3, 0.0, dgmf::NodeKind::Interior);
   flatWithCentres.Add(-2.2, 1.1, 0.0, dgmf::NodeKind::Interior);
-  const dgmf::DelaunayMapping flatMapping(2, flatWithCentres.Points.data(), flatWithCentres.Size(),
-    flatWithCentres.Kinds.data(), dgmf::SerialFor);
   dgmf::DeformationProblem flatProblem = problem;
   flatProblem.Dimension = 2;
   flatProblem.NumberOfNodes = flatWithCentres.Size();
   flatProblem.Points = flatWithCentres.Points.data();
   flatProblem.Kinds = flatWithCentres.Kinds.data();
-  std::vector<double> flatDeformed(flatWithCentres.Points.size());
-  dgmf::VectorFieldStore flatFields(flatWithCentres.Size());
-  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
-    ->Deform(flatProblem, &flatMapping,
-      dgmf::DeformationOutputs{ flatDeformed.data(), &flatFields }, dgmf::SerialFor);
+  const std::vector<double> flatDeformed = DeformWithDGMF(flatProblem);
   for (std::size_t c = 0; c < 2; ++c)
   {
     EXPECT_EQ(deformed[3 * (2 * m + c)], flatDeformed[3 * (m + c)]);

@@ -189,6 +189,17 @@ vtkUnstructuredGrid* VolumeOf(vtkDataObject* output)
   return blocks ? vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(0)) : nullptr;
 }
 
+/// The circle rotated by 60 degrees with its boundary-marker array: what names must reproduce.
+vtkSmartPointer<vtkUnstructuredGrid> MarkedReference(vtkUnstructuredGrid* circle)
+{
+  vtkNew<vtkDGMFDeformFilter> marked;
+  marked->SetInputData(circle);
+  marked->SetBoundaryMarkerArrayName("BoundaryMarker");
+  marked->SetRotationAngles(0, 0, 60);
+  marked->Update();
+  return marked->GetOutput();
+}
+
 /// Collects the filter's error messages.
 struct Errors
 {
@@ -216,11 +227,7 @@ struct Errors
 TEST(BoundaryNames, NamedPatchesGiveTheMarkersResultBitForBit)
 {
   auto circle = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints);
-  vtkNew<vtkDGMFDeformFilter> marked;
-  marked->SetInputData(circle);
-  marked->SetBoundaryMarkerArrayName("BoundaryMarker");
-  marked->SetRotationAngles(0, 0, 60);
-  marked->Update();
+  const vtkSmartPointer<vtkUnstructuredGrid> reference = MarkedReference(circle);
 
   auto blocks = NamedBlocks(circle);
   vtkNew<vtkDGMFDeformFilter> named;
@@ -231,7 +238,6 @@ TEST(BoundaryNames, NamedPatchesGiveTheMarkersResultBitForBit)
   vtkUnstructuredGrid* volume = VolumeOf(named->GetOutputDataObject(0));
   ASSERT_NE(volume, nullptr);
   ASSERT_EQ(volume->GetNumberOfPoints(), CirclePoints);
-  vtkUnstructuredGrid* reference = marked->GetOutput();
   for (vtkIdType i = 0; i < CirclePoints; ++i)
   {
     ASSERT_EQ(std::memcmp(volume->GetPoint(i), reference->GetPoint(i), 3 * sizeof(double)), 0)
@@ -362,11 +368,7 @@ TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
   // with one patch ticked): the square's sides are no block, but they are the mesh's boundary and
   // must stay. The result is the marker's, bit for bit.
   auto circle = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints);
-  vtkNew<vtkDGMFDeformFilter> marked;
-  marked->SetInputData(circle);
-  marked->SetBoundaryMarkerArrayName("BoundaryMarker");
-  marked->SetRotationAngles(0, 0, 60);
-  marked->Update();
+  const vtkSmartPointer<vtkUnstructuredGrid> reference = MarkedReference(circle);
 
   auto all = NamedBlocks(circle);
   auto* patches = vtkMultiBlockDataSet::SafeDownCast(all->GetBlock(1));
@@ -394,7 +396,6 @@ TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
   named->Update();
   vtkUnstructuredGrid* volume = VolumeOf(named->GetOutputDataObject(0));
   ASSERT_NE(volume, nullptr);
-  vtkUnstructuredGrid* reference = marked->GetOutput();
   for (vtkIdType i = 0; i < CirclePoints; ++i)
   {
     ASSERT_EQ(std::memcmp(volume->GetPoint(i), reference->GetPoint(i), 3 * sizeof(double)), 0)
