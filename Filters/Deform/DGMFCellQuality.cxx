@@ -163,16 +163,9 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           }
         }
         dgmf::CellQuality quality;
-        if (dgmf::IsInvalidInputCell(shape, original[slot]))
+        if (!hexahedron)
         {
-          // Non-convex, warped or inverted before the deformation: judged through its faces.
-          invalid[c] = 1;
-          quality = dgmf::ComputeDecomposedSizeSkew(
-            corners, original[slot], deformed[slot], dgmf::GetShapeFaceStream(shape));
-        }
-        else if (!hexahedron)
-        {
-          quality = dgmf::ComputeSizeSkew(shape, original[0], deformed[0]);
+          quality = dgmf::ComputeCellSizeSkew(shape, original[0], deformed[0]);
         }
         else if (slot == 1)
         {
@@ -184,19 +177,30 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           dgmf::CellQuality first;
           dgmf::ComputeHexSizeSkewPair(
             original[1], deformed[1], original[0], deformed[0], first, quality);
+          if (first.InputInvalid) // non-convex before the deformation: through its faces
+          {
+            first = dgmf::JudgeInvalidInputCell(shape, original[1], deformed[1]);
+          }
+          if (quality.InputInvalid)
+          {
+            quality = dgmf::JudgeInvalidInputCell(shape, original[0], deformed[0]);
+          }
           values[pending] = first.SizeSkew;
           flags[pending] = first.Inverted ? 1 : 0;
+          invalid[pending] = first.InputInvalid ? 1 : 0;
           pending = end;
         }
         values[c] = quality.SizeSkew;
         flags[c] = quality.Inverted ? 1 : 0;
+        invalid[c] = quality.InputInvalid ? 1 : 0;
       }
       if (pending < end)
       {
         const dgmf::CellQuality last =
-          dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, original[1], deformed[1]);
+          dgmf::ComputeCellSizeSkew(dgmf::CellShape::Hexahedron, original[1], deformed[1]);
         values[pending] = last.SizeSkew;
         flags[pending] = last.Inverted ? 1 : 0;
+        invalid[pending] = last.InputInvalid ? 1 : 0;
       }
     });
   // Ghost cells are evaluated (their arrays must be complete) but counted by their owner.

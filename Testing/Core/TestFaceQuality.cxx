@@ -102,8 +102,16 @@ TEST(DecomposedSizeSkew, ANonConvexInputCellIsJudgedByWhatTheDeformationDoes)
   dented[3 * 6 + 0] = 0.6;
   dented[3 * 6 + 1] = 0.6;
   ASSERT_TRUE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, dented.data()));
-  ASSERT_TRUE(
-    dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data()).Inverted);
+  const dgmf::CellQuality corners =
+    dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data());
+  EXPECT_TRUE(corners.InputInvalid); // no corner metric: not called inverted, score 0
+  EXPECT_FALSE(corners.Inverted);
+  EXPECT_EQ(corners.SizeSkew, 0.0);
+  // The metric the filters and the guard use judges it through its faces.
+  const dgmf::CellQuality judged = dgmf::ComputeCellSizeSkew(
+    dgmf::CellShape::Hexahedron, dented.data(), Moved(dented, 10.0).data());
+  EXPECT_TRUE(judged.InputInvalid);
+  EXPECT_NEAR(judged.SizeSkew, 1.0, 1e-12);
   EXPECT_FALSE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, Cube().data()));
   // Unchanged or moved rigidly: valid, score 1.
   const dgmf::CellQuality same = Decomposed(dented, Moved(dented, 40.0), HexFaces());

@@ -80,18 +80,23 @@ CellQuality ComputeDecomposedSizeSkew(
   return cell;
 }
 
-CellQuality ComputeCellSizeSkew(
-  CellShape shape, bool inputInvalid, const double* original, const double* deformed)
+CellQuality JudgeInvalidInputCell(CellShape shape, const double* original, const double* deformed)
 {
-  return inputInvalid ? ComputeDecomposedSizeSkew(
-                          GetNumberOfCorners(shape), original, deformed, GetShapeFaceStream(shape))
-                      : ComputeSizeSkew(shape, original, deformed);
+  CellQuality quality = ComputeDecomposedSizeSkew(
+    GetNumberOfCorners(shape), original, deformed, GetShapeFaceStream(shape));
+  quality.InputInvalid = true;
+  return quality;
+}
+
+CellQuality ComputeCellSizeSkew(CellShape shape, const double* original, const double* deformed)
+{
+  const CellQuality quality = ComputeSizeSkew(shape, original, deformed);
+  return quality.InputInvalid ? JudgeInvalidInputCell(shape, original, deformed) : quality;
 }
 
 bool IsInvalidInputCell(CellShape shape, const double* original)
 {
-  const CellQuality itself = ComputeSizeSkew(shape, original, original);
-  return itself.Inverted || !(itself.SizeSkew > 0.0);
+  return ComputeSizeSkew(shape, original, original).InputInvalid;
 }
 
 } // namespace dgmf

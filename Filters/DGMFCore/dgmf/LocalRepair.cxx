@@ -193,8 +193,7 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
         {
           GatherCorners(mesh, c, originalPoints, original);
           GatherCorners(mesh, c, points, deformed);
-          const CellQuality q = ComputeCellSizeSkew(
-            mesh.Shapes[c], IsInvalidInputCell(mesh.Shapes[c], original), original, deformed);
+          const CellQuality q = ComputeCellSizeSkew(mesh.Shapes[c], original, deformed);
           quality[c] = q.SizeSkew;
           inverted[c] = q.Inverted ? 1 : 0;
         }

@@ -40,9 +40,9 @@ void NodeRepairer::InitializeCell(
   cell.NumberOfNodes = GetNumberOfCorners(cell.Shape);
   cell.Nodes = this->Mesh.Connectivity.data() + this->Mesh.Offsets[c];
   GatherCorners(this->Mesh, c, this->OriginalPoints, cell.Original);
-  const CellQuality self = ComputeSizeSkew(cell.Shape, cell.Original, cell.Original);
+  // A degenerate input cell scores 0 even unchanged (a non-convex one is judged through its faces).
+  const CellQuality self = ComputeCellSizeSkew(cell.Shape, cell.Original, cell.Original);
   cell.Degenerate = self.SizeSkew == 0.0 && !self.Inverted;
-  cell.InputInvalid = self.Inverted; // non-convex or inverted before the motion
   cell.Quality = quality;
   cell.Inverted = inverted;
   if (cell.Tables.Dimension == 2)
@@ -155,8 +155,7 @@ double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position,
       continue;
     }
     this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality =
-      ComputeCellSizeSkew(cell.Shape, cell.InputInvalid, cell.Original, corners);
+    const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
     inverted = inverted || quality.Inverted;
     minimum = std::min(minimum, quality.SizeSkew);
     if (qualities != nullptr)
@@ -322,8 +321,7 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
   {
     ActiveCell& cell = this->Cells[this->Incident[i]];
     this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality =
-      ComputeCellSizeSkew(cell.Shape, cell.InputInvalid, cell.Original, corners);
+    const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; k < cell.NumberOfNodes; ++k)

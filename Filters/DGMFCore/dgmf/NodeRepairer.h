@@ -58,10 +58,9 @@ struct ActiveCell
   double Orientation = 1.0;                  ///< 3D: sign of the original cell's size
   double Beta = 0.0;                         ///< untangling target of every corner Jacobian
   bool Degenerate = false;                   ///< degenerate original cell: always 0, ignored
-  bool InputInvalid = false; ///< non-convex or inverted original cell: judged through its faces
-  double Quality = 0.0;      ///< current SizeSkew
-  bool Inverted = false;     ///< currently inverted
-  int FreeNodeCount = 0;     ///< free nodes among its corners
+  double Quality = 0.0;                      ///< current SizeSkew
+  bool Inverted = false;                     ///< currently inverted
+  int FreeNodeCount = 0;                     ///< free nodes among its corners
 };
 
 /// A node the repair may move.

@@ -16,6 +16,8 @@ namespace dgmf
 namespace
 {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 /// Below this size relative to (longest edge)^dimension, an original cell counts as degenerate.
 constexpr double kDegenerateTolerance = 1e-12;
 constexpr double kSqrt3 = 1.7320508075688772935;
@@ -149,9 +151,10 @@ inline CellQuality Valid(double value)
   return quality;
 }
 
+/// An original cell without a corner metric: degenerate, or a corner not positive (non-convex).
 inline CellQuality Degenerate()
 {
-  return CellQuality{ 0.0, false };
+  return CellQuality{ 0.0, false, true };
 }
 
 inline CellQuality Inverted()
@@ -167,13 +170,17 @@ CellQuality Evaluate3D(const CornerEdges (&corners)[N], const double* original,
 {
   double originalSum = 0.0;
   double longestEdge2 = 0.0;
+  double smallest = kInfinity, largest = -kInfinity; // the original corners' Jacobians
   for (const CornerEdges& corner : corners)
   {
     const Vec3 o = Load(original, corner.Origin);
     const Vec3 a = Load(original, corner.A) - o;
     const Vec3 b = Load(original, corner.B) - o;
     const Vec3 c = Load(original, corner.C) - o;
-    originalSum += Dot(Cross(a, b), c);
+    const double alpha = Dot(Cross(a, b), c);
+    originalSum += alpha;
+    smallest = std::min(smallest, alpha);
+    largest = std::max(largest, alpha);
     longestEdge2 = std::max({ longestEdge2, Dot(a, a), Dot(b, b), Dot(c, c) });
   }
   // Written as !(x > y) so that NaN coordinates also take this exit.
@@ -183,6 +190,10 @@ CellQuality Evaluate3D(const CornerEdges (&corners)[N], const double* original,
     return Degenerate();
   }
   const double orientation = originalSum > 0.0 ? 1.0 : -1.0;
+  if (!((orientation > 0.0 ? smallest : -largest) > 0.0))
+  {
+    return Degenerate(); // non-convex (or partly inverted) before the motion
+  }
 
   double deformedSum = 0.0;
   ScaledCubeRoot terms[N];
@@ -256,9 +267,13 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
   ComputeHexEdges(original, edges);
   double originalSum = 0.0;
   double longestEdge2 = 0.0;
+  double smallest = kInfinity, largest = -kInfinity; // the original corners' Jacobians
   for (int corner = 0; corner < 8; ++corner)
   {
-    originalSum += HexCornerDeterminant(edges, corner);
+    const double alpha = HexCornerDeterminant(edges, corner);
+    originalSum += alpha;
+    smallest = std::min(smallest, alpha);
+    largest = std::max(largest, alpha);
   }
   for (int e = 0; e < 12; ++e)
   {
@@ -270,6 +285,10 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
     return Degenerate();
   }
   const double orientation = originalSum > 0.0 ? 1.0 : -1.0;
+  if (!((orientation > 0.0 ? smallest : -largest) > 0.0))
+  {
+    return Degenerate(); // non-convex (or partly inverted) before the motion
+  }
   ComputeHexEdges(deformed, edges);
   double deformedSum = 0.0;
   ScaledCubeRoot terms[8];
@@ -327,9 +346,11 @@ bool HexSizeSkewPair(const double* original0, const double* deformed0, const dou
   PairHexEdges edges;
   ComputeHexEdges(original0, original1, edges);
   Pair originalSum = { 0.0, 0.0 };
+  Pair alphas[8];
   for (int corner = 0; corner < 8; ++corner)
   {
-    originalSum += HexCornerDeterminant(edges, corner);
+    alphas[corner] = HexCornerDeterminant(edges, corner);
+    originalSum += alphas[corner];
   }
   Pair orientation;
   for (int l = 0; l < 2; ++l)
@@ -345,6 +366,13 @@ bool HexSizeSkewPair(const double* original0, const double* deformed0, const dou
       return false;
     }
     orientation[l] = originalSum[l] > 0.0 ? 1.0 : -1.0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      if (!(orientation[l] * alphas[corner][l] > 0.0))
+      {
+        return false; // non-convex before the motion: one at a time
+      }
+    }
   }
   ComputeHexEdges(deformed0, deformed1, edges);
   Pair deformedSum = { 0.0, 0.0 };
@@ -427,6 +455,13 @@ CellQuality QuadSizeSkew(const double* original, const double* deformed)
   if (!(area2Original > kDegenerateTolerance * LongestEdge2(p, 4)))
   {
     return Degenerate();
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    if (!(Dot(Cross(p[(k + 1) & 3] - p[k], p[(k + 3) & 3] - p[k]), normal0) > 0.0))
+    {
+      return Degenerate(); // non-convex (or a bow tie) before the motion
+    }
   }
 
   const Vec3 q[4] = { Load(deformed, 0), Load(deformed, 1), Load(deformed, 2), Load(deformed, 3) };

@@ -30,6 +30,10 @@ struct CellQuality
 {
   double SizeSkew = 0.0; ///< in [0, 1]; 1 = same shape quality as ideal and unchanged size
   bool Inverted = false; ///< a corner's Jacobian is <= 0 in the input cell's orientation
+  /// The input cell has no corner metric: degenerate, or a corner's Jacobian <= 0 in its own
+  /// orientation (non-convex or inverted before the motion). SizeSkew is then 0 and Inverted
+  /// false: judge it through its faces (DecomposedSizeSkew.h, ComputeCellSizeSkew).
+  bool InputInvalid = false;
 };
 
 /**
@@ -40,9 +44,10 @@ struct CellQuality
  *
  * Orientation is taken from the original cell (either handedness is accepted); a corner whose
  * Jacobian is <= 0 in that orientation makes the deformed cell inverted (0, Inverted = true). A
- * degenerate original cell (zero size relative to its edges, or non-finite coordinates) scores 0
- * and is not flagged inverted. 2D cells may lie in any plane of 3D space. No allocation; safe to
- * call concurrently.
+ * degenerate original cell (zero size relative to its edges, or non-finite coordinates), or one
+ * with a corner whose Jacobian is <= 0 in its own orientation (non-convex), has no corner metric:
+ * it scores 0, is not flagged inverted, and is flagged InputInvalid. 2D cells may lie in any plane
+ * of 3D space. No allocation; safe to call concurrently.
  * @param original 3 coordinates per corner, before deformation (GetNumberOfCorners(shape) corners)
  * @param deformed 3 coordinates per corner, after deformation
  * @return SizeSkew in [0, 1]; NaN only for a value outside CellShape
