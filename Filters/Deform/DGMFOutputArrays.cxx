@@ -1,6 +1,7 @@
 #include "DGMFOutputArrays.h"
 
 #include "DGMFCellQuality.h"
+#include "DGMFNonOrthogonality.h"
 
 #include "dgmf/ResultNames.h"
 
@@ -150,6 +151,24 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
   cellData->AddArray(inverted);
   cellData->AddArray(inputInvalid);
   SetQualitySummary(fieldData, summary);
+  return summary;
+}
+
+dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
+  const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
+  InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor)
+{
+  dgmf::QualitySummary summary;
+  if (sizeSkew)
+  {
+    summary = AddCellQuality(mesh, originalPoints, deformedPoints, output->GetCellData(),
+      output->GetFieldData(), parallelFor);
+  }
+  if (faces)
+  {
+    AddNonOrthogonality(mesh, originalPoints, deformedPoints, output->GetCellData(),
+      output->GetFieldData(), *faces, parallelFor);
+  }
   return summary;
 }
 

@@ -21,6 +21,7 @@ class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
 {
+class InternalFacesCache;
 
 /// Adds a one-tuple vtkIdTypeArray `name` with `value` to `fieldData` (replacing one of that name).
 void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value);
@@ -64,6 +65,16 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
   const dgmf::ParallelFor& parallelFor);
+
+/**
+ * The quality outputs a filter's options ask for, on `output` (the deformed `mesh`): SizeSkew,
+ * Inverted, InputInvalid and their summary when `sizeSkew` (AddCellQuality), and the face
+ * non-orthogonality when `faces` is not null (AddNonOrthogonality, with those cached faces).
+ * Returns the summary (empty without `sizeSkew`).
+ */
+dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
+  const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
+  InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor);
 
 /// Writes `summary` into `fieldData` (SizeSkewMean, SizeSkewMinimum, InvertedCellCount,
 /// SizeSkewEvaluatedCells), replacing the arrays of those names.

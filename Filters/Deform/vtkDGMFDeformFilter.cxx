@@ -350,22 +350,14 @@ int vtkDGMFDeformFilter::Execute(
   dgmf_vtk::SetDeformedGrid(input, output, newPoints, nodes.LocalNodes);
   dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
-  if (this->ComputeQuality)
+  const dgmf::QualitySummary summary = dgmf_vtk::AddOutputQuality(input, nodes.Points,
+    newCoordinates->GetPointer(0), output, this->ComputeQuality,
+    this->ComputeNonOrthogonality ? &cache.Faces : nullptr, dgmf_vtk::MakeSMPParallelFor());
+  if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)
   {
-    const dgmf::QualitySummary summary =
-      dgmf_vtk::AddCellQuality(input, nodes.Points, newCoordinates->GetPointer(0),
-        output->GetCellData(), output->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
-    if (this->ComputeNonOrthogonality)
-    {
-      dgmf_vtk::AddNonOrthogonality(input, nodes.Points, newCoordinates->GetPointer(0),
-        output->GetCellData(), output->GetFieldData(), cache.Faces, dgmf_vtk::MakeSMPParallelFor());
-    }
-    if (this->FailOnInvertedCells && summary.Inverted > 0)
-    {
-      vtkErrorMacro(
-        "The deformation inverts " << summary.Inverted << " cells (FailOnInvertedCells is on).");
-      return 0;
-    }
+    vtkErrorMacro(
+      "The deformation inverts " << summary.Inverted << " cells (FailOnInvertedCells is on).");
+    return 0;
   }
   this->UpdateProgress(1.0);
   return 1;
@@ -394,6 +386,7 @@ void vtkDGMFDeformFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SubSteps: " << this->SubSteps << ", RepairThreshold: " << this->RepairThreshold
      << " (layers " << this->RepairLayers << ", passes " << this->RepairPasses << ")\n";
   os << indent << "ComputeQuality: " << (this->ComputeQuality ? "on" : "off")
+     << ", ComputeNonOrthogonality: " << (this->ComputeNonOrthogonality ? "on" : "off")
      << ", FailOnInvertedCells: " << (this->FailOnInvertedCells ? "on" : "off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads
      << ", OneCellThickMode: " << this->OneCellThickMode << "\n";
