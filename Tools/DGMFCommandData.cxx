@@ -2,6 +2,8 @@
 
 #include "vtkDGMFOpenFOAMWriter.h"
 
+#include "dgmf/openfoam/CaseDirectory.h"
+
 #include "vtkAlgorithmOutput.h"
 #include "vtkNew.h"
 #include "vtkOpenFOAMReader.h"
@@ -25,22 +27,23 @@ bool EndsWith(const std::string& s, const std::string& suffix)
     s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+bool IsFoamFile(const std::string& path)
+{
+  return EndsWith(path, ".foam") || EndsWith(path, ".OpenFOAM");
+}
+
 /// The file to give vtkOpenFOAMReader for the case `path`.
 std::string ReaderFileOf(const std::string& path)
 {
-  if (EndsWith(path, ".foam") || EndsWith(path, ".OpenFOAM"))
-  {
-    return path;
-  }
-  return (fs::path(path) / "system" / "controlDict").string();
+  return IsFoamFile(path)
+    ? path
+    : (dgmf::openfoam::CaseDirectoryOf(path) / "system" / "controlDict").string();
 }
 } // namespace
 
 bool IsOpenFOAMCase(const std::string& path)
 {
-  std::error_code error;
-  return EndsWith(path, ".foam") || EndsWith(path, ".OpenFOAM") ||
-    fs::is_regular_file(fs::path(path) / "system" / "controlDict", error);
+  return IsFoamFile(path) || dgmf::openfoam::IsCase(dgmf::openfoam::CaseDirectoryOf(path));
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
@@ -99,17 +102,20 @@ vtkSmartPointer<vtkAlgorithm> ReadOpenFOAMCase(const std::string& path, bool dec
   return reader;
 }
 
-std::string ListPatchNames(vtkAlgorithm* algorithm)
+std::string ListPatchNames(const std::string& path)
 {
-  auto* reader = vtkOpenFOAMReader::SafeDownCast(algorithm);
   std::string names;
-  for (int k = 0; reader && k < reader->GetNumberOfPatchArrays(); ++k)
+  try
   {
-    const std::string name = reader->GetPatchArrayName(k);
-    if (name.rfind("patch/", 0) == 0)
+    for (const std::string& name :
+      dgmf::openfoam::ReadPatchNames(dgmf::openfoam::CaseDirectoryOf(path)))
     {
-      names += (names.empty() ? "" : ", ") + name.substr(6);
+      names += (names.empty() ? "" : ", ") + name;
     }
+  }
+  catch (const std::exception& e)
+  {
+    names = e.what();
   }
   return names;
 }

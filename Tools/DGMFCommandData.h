@@ -16,7 +16,7 @@ class vtkUnstructuredGrid;
 
 namespace dgmf_cli
 {
-/// True when `path` names an OpenFOAM case: a directory with system/controlDict, or a .foam file.
+/// True when `path` names an OpenFOAM case: its directory, its system/controlDict or a .foam file.
 bool IsOpenFOAMCase(const std::string& path);
 
 /// Reads a .vtu (XML) or .vtk (legacy) unstructured grid; null or empty when it cannot.
@@ -32,8 +32,8 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path);
  */
 vtkSmartPointer<vtkAlgorithm> ReadOpenFOAMCase(const std::string& path, bool decomposePolyhedra);
 
-/// The names of the patches of the OpenFOAM reader `reader`, separated by ", ".
-std::string ListPatchNames(vtkAlgorithm* reader);
+/// The names of the patches of the OpenFOAM case `path` (its boundary file), separated by ", ".
+std::string ListPatchNames(const std::string& path);
 
 /**
  * Writes the points of the deformed output of `deformer` (whose input comes from the OpenFOAM

@@ -272,7 +272,7 @@ int main(int argc, char* argv[])
     if (!byName && !markerGiven)
     {
       std::cerr << "dgmf-deform: name the moving patches with --moving (the case has: "
-                << dgmf_cli::ListPatchNames(caseReader) << ")\n";
+                << dgmf_cli::ListPatchNames(inputPath) << ")\n";
       return 2;
     }
     filter->SetInputConnection(caseReader->GetOutputPort());
@@ -312,7 +312,7 @@ int main(int argc, char* argv[])
   {
     if (openFOAM && byName)
     {
-      std::cerr << "dgmf-deform: the case's patches: " << dgmf_cli::ListPatchNames(caseReader)
+      std::cerr << "dgmf-deform: the case's patches: " << dgmf_cli::ListPatchNames(inputPath)
                 << "\n";
     }
     std::cerr << "dgmf-deform: the deformation failed (see the error above)\n";

@@ -1,6 +1,7 @@
 #include "DGMFBoundaryNames.h"
 
 #include "DGMFCompositeMesh.h"
+#include "DGMFMeshConversion.h"
 
 #include "vtkCompositeDataSet.h"
 #include "vtkDataAssembly.h"
@@ -47,11 +48,14 @@ enum Rank : int
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
   vtkUnstructuredGrid* merged, bool findLayers)
 {
-  const auto* xyz = static_cast<const double*>(merged->GetPoints()->GetVoidPointer(0));
-  return AssignRoles(mesh, selection,
-    findLayers
-      ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()))
-      : dgmf::ExtrudedLayers());
+  std::vector<double> copy;
+  const double* xyz = PointsAsDouble(merged->GetPoints(), copy);
+  dgmf::ExtrudedLayers layers = findLayers
+    ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()))
+    : dgmf::ExtrudedLayers();
+  NodeRoles roles = AssignRoles(mesh, selection, layers);
+  roles.Layers = std::move(layers);
+  return roles;
 }
 
 std::string ListBlockNames(const CompositeMesh& mesh)

@@ -52,6 +52,8 @@ struct NodeRoles
   std::vector<std::int32_t> BodyIds;                ///< with several moving bodies, else empty
   std::vector<std::vector<std::int32_t>> SlipNodes; ///< per slip entry, its slip nodes
   std::vector<std::string> SlipNames;               ///< the entries, for messages
+  /// The planes of a one-cell-thick mesh the roles were assigned with (the gathering reuses them)
+  dgmf::ExtrudedLayers Layers;
 };
 
 /**
@@ -68,7 +70,8 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
 
 /**
  * The roles of the merged nodes of `mesh` (whose merged grid is `merged`), with the planes of a
- * one-cell-thick mesh found in `merged`'s points when `findLayers` is on.
+ * one-cell-thick mesh found in `merged`'s points when `findLayers` is on (kept in the roles'
+ * Layers).
  */
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
   vtkUnstructuredGrid* merged, bool findLayers);

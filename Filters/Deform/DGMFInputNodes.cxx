@@ -113,7 +113,9 @@ void InputGatherer::Gather(
   }
   if (nodes.Dimension == 3 && options.OneCellThick != OneCellThickOff && !options.Distributed)
   {
-    nodes.Layers = dgmf::FindExtrudedLayers(nodes.Points, n);
+    // Named boundaries found the planes already, on the same points.
+    nodes.Layers =
+      options.Roles ? options.Roles->Layers : dgmf::FindExtrudedLayers(nodes.Points, n);
   }
   if (options.OneCellThick == OneCellThickOn && !nodes.Layers.Found())
   {

@@ -101,7 +101,8 @@ TEST(DecomposedSizeSkew, ANonConvexInputCellIsJudgedByWhatTheDeformationDoes)
   dented[3 * 6 + 2] = 0.3;
   dented[3 * 6 + 0] = 0.6;
   dented[3 * 6 + 1] = 0.6;
-  ASSERT_TRUE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, dented.data()));
+  ASSERT_TRUE(
+    dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data()).InputInvalid);
   const dgmf::CellQuality corners =
     dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, dented.data(), dented.data());
   EXPECT_TRUE(corners.InputInvalid); // no corner metric: not called inverted, score 0
@@ -112,7 +113,8 @@ TEST(DecomposedSizeSkew, ANonConvexInputCellIsJudgedByWhatTheDeformationDoes)
     dgmf::CellShape::Hexahedron, dented.data(), Moved(dented, 10.0).data());
   EXPECT_TRUE(judged.InputInvalid);
   EXPECT_NEAR(judged.SizeSkew, 1.0, 1e-12);
-  EXPECT_FALSE(dgmf::IsInvalidInputCell(dgmf::CellShape::Hexahedron, Cube().data()));
+  EXPECT_FALSE(
+    dgmf::ComputeSizeSkew(dgmf::CellShape::Hexahedron, Cube().data(), Cube().data()).InputInvalid);
   // Unchanged or moved rigidly: valid, score 1.
   const dgmf::CellQuality same = Decomposed(dented, Moved(dented, 40.0), HexFaces());
   EXPECT_FALSE(same.Inverted);

@@ -94,9 +94,4 @@ CellQuality ComputeCellSizeSkew(CellShape shape, const double* original, const d
   return quality.InputInvalid ? JudgeInvalidInputCell(shape, original, deformed) : quality;
 }
 
-bool IsInvalidInputCell(CellShape shape, const double* original)
-{
-  return ComputeSizeSkew(shape, original, original).InputInvalid;
-}
-
 } // namespace dgmf

@@ -35,13 +35,6 @@ CellQuality ComputeDecomposedSizeSkew(
   int corners, const double* original, const double* deformed, const std::int64_t* faceStream);
 
 /**
- * True when the corner metric cannot judge `shape` from `original` (CellQuality::InputInvalid):
- * a corner's Jacobian is not positive in the cell's orientation (non-convex, warped or inverted
- * input cell) or the cell is degenerate. Such cells are judged by ComputeDecomposedSizeSkew.
- */
-bool IsInvalidInputCell(CellShape shape, const double* original);
-
-/**
  * The size-skew the metric and the quality guard give a cell of a standard shape: Knupp's corner
  * metric (ComputeSizeSkew), or for a cell invalid in the input its face decomposition
  * (ComputeDecomposedSizeSkew), with InputInvalid set. The corner metric finds the invalid input
