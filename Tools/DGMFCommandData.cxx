@@ -4,16 +4,22 @@
 
 #include "dgmf/openfoam/CaseDirectory.h"
 
+#include "DGMFCommandMessages.h"
+
 #include "vtkAlgorithmOutput.h"
+#include "vtkErrorCode.h"
 #include "vtkNew.h"
 #include "vtkOpenFOAMReader.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridReader.h"
+#include "vtkUnstructuredGridWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 namespace dgmf_cli
 {
@@ -48,6 +54,7 @@ bool IsOpenFOAMCase(const std::string& path)
 
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
 {
+  SetStage("reading " + path);
   if (EndsWith(path, ".vtk"))
   {
     vtkNew<vtkUnstructuredGridReader> reader;
@@ -64,13 +71,74 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
   return reader->GetOutput();
 }
 
+bool IsMeshFileName(const std::string& path)
+{
+  return EndsWith(path, ".vtu") || EndsWith(path, ".vtk");
+}
+
 bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path)
 {
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(mesh);
-  writer->SetDataModeToBinary(); // inline binary: appended mode breaks with Debian 12's expat
-  return writer->Write() != 0;
+  if (!IsMeshFileName(path))
+  {
+    std::cerr << "dgmf-deform: error: cannot write " << path
+              << ": the output must end in .vtu (XML) or .vtk (legacy VTK)\n";
+    return false;
+  }
+  // Written beside its final name, then renamed over it: the final path holds the old file or the
+  // whole new one, never half of one (an interruption, a full disk), and the output may be the
+  // input (read completely before).
+  const fs::path target(path);
+  const fs::path temporary = target.parent_path() /
+    ("." + target.filename().string() + ".dgmf-" + std::to_string(getpid()) + ".tmp");
+  SetTemporaryFile(temporary.string());
+  SetStage("writing " + path);
+  const int errorsBefore = GetErrorCount();
+  unsigned long errorCode = 0;
+  if (EndsWith(path, ".vtk"))
+  {
+    vtkNew<vtkUnstructuredGridWriter> legacy;
+    legacy->SetFileName(temporary.c_str());
+    legacy->SetFileTypeToBinary();
+    legacy->SetInputData(mesh);
+    legacy->Write();
+    errorCode = legacy->GetErrorCode();
+  }
+  else
+  {
+    vtkNew<vtkXMLUnstructuredGridWriter> xml;
+    xml->SetFileName(temporary.c_str());
+    xml->SetInputData(mesh);
+    xml->SetDataModeToBinary(); // inline binary: appended mode breaks with Debian 12's expat
+    xml->Write();
+    errorCode = xml->GetErrorCode();
+  }
+  std::error_code error;
+  // vtkXMLWriter::Write() returns 1 even when it fails: its error code and messages tell.
+  bool ok = errorCode == 0 && GetErrorCount() == errorsBefore && fs::exists(temporary, error);
+  if (ok)
+  {
+    fs::rename(temporary, target, error);
+    ok = !error;
+    if (!ok)
+    {
+      std::cerr << "dgmf-deform: error: cannot rename " << temporary << " to " << path << ": "
+                << error.message() << "\n";
+    }
+  }
+  else if (errorCode != 0)
+  {
+    std::cerr << "dgmf-deform: error: writing " << path << " failed: "
+              << (errorCode < vtkErrorCode::FirstVTKErrorCode
+                     ? std::strerror(static_cast<int>(errorCode))
+                     : vtkErrorCode::GetStringFromErrorCode(errorCode))
+              << "\n";
+  }
+  if (!ok)
+  {
+    fs::remove(temporary, error);
+  }
+  SetTemporaryFile("");
+  return ok;
 }
 
 vtkSmartPointer<vtkAlgorithm> ReadOpenFOAMCase(const std::string& path, bool decomposePolyhedra)

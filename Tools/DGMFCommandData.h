@@ -22,7 +22,14 @@ bool IsOpenFOAMCase(const std::string& path);
 /// Reads a .vtu (XML) or .vtk (legacy) unstructured grid; null or empty when it cannot.
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path);
 
-/// Writes `mesh` as an XML unstructured grid (inline binary); false when it cannot.
+/// True for the mesh files WriteMeshFile writes: .vtu and .vtk.
+bool IsMeshFileName(const std::string& path);
+
+/**
+ * Writes `mesh` to `path`: an XML unstructured grid (inline binary) for .vtu, a legacy VTK file
+ * (binary) for .vtk. The file is written beside `path` under a temporary name and renamed over
+ * it, so `path` never holds half a file. False, with the reason printed, when it cannot.
+ */
 bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path);
 
 /**

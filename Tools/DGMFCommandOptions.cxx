@@ -1,0 +1,249 @@
+#include "DGMFCommandOptions.h"
+
+#include "vtkDGMFDeformFilter.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace dgmf_cli
+{
+namespace
+{
+/// Reads `count` finite numbers after argv[i]; advances i.
+bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)
+{
+  if (i + count >= argc)
+  {
+    return false;
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    char* end = nullptr;
+    values[k] = std::strtod(argv[++i], &end);
+    if (!end || *end != '\0' || end == argv[i] || !std::isfinite(values[k]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Reads one integer in [minimum, maximum] after argv[i] ("1.5" and "2x" are refused).
+bool ReadInteger(int argc, char* argv[], int& i, long minimum, long maximum, int& value)
+{
+  if (i + 1 >= argc)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long read = std::strtol(argv[++i], &end, 10);
+  if (!end || *end != '\0' || end == argv[i] || errno != 0 || read < minimum || read > maximum)
+  {
+    return false;
+  }
+  value = static_cast<int>(read);
+  return true;
+}
+
+/// The comma-separated names of `list`.
+std::vector<std::string> SplitNames(const std::string& list)
+{
+  std::vector<std::string> names;
+  std::stringstream stream(list);
+  std::string name;
+  while (std::getline(stream, name, ','))
+  {
+    if (!name.empty())
+    {
+      names.push_back(name);
+    }
+  }
+  return names;
+}
+} // namespace
+
+std::string Usage()
+{
+  std::string usage =
+    "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
+    "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
+    "  INPUT                   .vtu or .vtk unstructured grid\n"
+    "  CASE_DIR                OpenFOAM case (directory or .foam file); OUT_CASE_DIR gets the\n"
+    "                          deformed points (a copy of the case if new; may be CASE_DIR)\n"
+    "  --moving NAMES          moving boundaries by name (patches), comma-separated: one body "
+    "each\n"
+    "  --static NAMES          static boundaries by name (unselected patches are static anyway)\n"
+    "  --slip NAMES            planar boundaries whose nodes slide in their plane (symmetry)\n"
+    "  --time T                OpenFOAM: write T/polyMesh/points (default constant)\n"
+    "  --decompose-polyhedra   OpenFOAM: read polyhedra as tetrahedra and pyramids\n"
+    "  --one-cell-thick MODE   detect, on or off: a one-cell-thick 2D mesh (default detect)\n"
+    "  --rotate AX AY AZ       rotation angles in degrees about x, y, z (2D: AZ)\n"
+    "  --center X Y Z          rotation centre (default 0 0 0); --center moving: the centroid\n"
+    "                          of each moving boundary\n"
+    "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
+    "  --marker NAME           boundary-marker point array (default "
+    "BoundaryMarker if present)\n"
+    "  --displacement NAME     displacement point array (default Displacement "
+    "if present)\n";
+  usage +=
+    "  --method NAME           " + vtkDGMFDeformFilter::GetMethodKeys(", ") + " (default dgmf)\n";
+  usage +=
+    "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
+    "  --damping 1..7          damping function u1..u7 (default 1)\n"
+    "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
+    "  --sub-steps N           large motions: N sub-steps, 0 = automatic (default 1)\n"
+    "  --repair T              quality guard: repair cells with SizeSkew below T (default 0: "
+    "off)\n"
+    "  --repair-layers N       layers around bad cells whose interior nodes may move "
+    "(default 2)\n"
+    "  --repair-passes N       most repair passes per step (default 20)\n"
+    "  --threads N             number of threads, 0 = all (default 0)\n"
+    "  --no-quality            skip the SizeSkew quality metric\n"
+    "  --fail-on-inverted      exit with code 3, writing nothing, if a cell is inverted\n"
+    "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
+    "                          (on for OpenFOAM cases)\n"
+    "exit codes: 0 written; 1 could not read, deform or write; 2 bad option; 3 inverted cells\n"
+    "            with --fail-on-inverted (nothing written)\n";
+  return usage;
+}
+
+
+int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, CommandOptions& options)
+{
+  if (argc < 3)
+  {
+    std::cerr << Usage();
+    return ExitUsage;
+  }
+  options.Input = argv[1];
+  options.Output = argv[2];
+  for (int i = 3; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    double v[3];
+    int k = 0;
+    if (option == "--rotate" && ReadDoubles(argc, argv, i, 3, v))
+    {
+      filter->SetRotationAngles(v);
+    }
+    else if (option == "--center" && i + 1 < argc && std::strcmp(argv[i + 1], "moving") == 0)
+    {
+      filter->SetRotationCenterMode(vtkDGMFDeformFilter::BODY_CENTROID);
+      ++i;
+    }
+    else if (option == "--center" && ReadDoubles(argc, argv, i, 3, v))
+    {
+      filter->SetRotationCenter(v);
+    }
+    else if ((option == "--moving" || option == "--static" || option == "--slip") && i + 1 < argc)
+    {
+      for (const std::string& name : SplitNames(argv[++i]))
+      {
+        option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
+          : option == "--static" ? filter->AddStaticBoundary(name.c_str())
+                                 : filter->AddSlipBoundary(name.c_str());
+        options.ByName = true;
+      }
+    }
+    else if (option == "--time" && i + 1 < argc)
+    {
+      options.Time = argv[++i];
+    }
+    else if (option == "--decompose-polyhedra")
+    {
+      options.DecomposePolyhedra = true;
+    }
+    else if (option == "--one-cell-thick" && i + 1 < argc &&
+      (std::strcmp(argv[i + 1], "detect") == 0 || std::strcmp(argv[i + 1], "on") == 0 ||
+        std::strcmp(argv[i + 1], "off") == 0))
+    {
+      const std::string mode = argv[++i];
+      filter->SetOneCellThickMode(mode == "on" ? vtkDGMFDeformFilter::ON
+          : mode == "off"                      ? vtkDGMFDeformFilter::OFF
+                                               : vtkDGMFDeformFilter::DETECT);
+    }
+    else if (option == "--translate" && ReadDoubles(argc, argv, i, 3, v))
+    {
+      filter->SetTranslation(v);
+    }
+    else if (option == "--method" && i + 1 < argc &&
+      vtkDGMFDeformFilter::GetMethodFromName(argv[i + 1]) >= 0)
+    {
+      filter->SetMethod(vtkDGMFDeformFilter::GetMethodFromName(argv[++i]));
+    }
+    else if (option == "--mode" && ReadInteger(argc, argv, i, 1, 2, k))
+    {
+      filter->SetDeformationMode(k);
+    }
+    else if (option == "--damping" && ReadInteger(argc, argv, i, 1, 7, k))
+    {
+      filter->SetDampingFunction(k);
+    }
+    else if (option == "--r0s" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 1)
+    {
+      filter->SetStaticBoundaryR0(v[0]);
+    }
+    else if (option == "--sub-steps" && ReadInteger(argc, argv, i, 0, 100000, k))
+    {
+      filter->SetSubSteps(k);
+    }
+    else if (option == "--repair" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0 && v[0] <= 1)
+    {
+      filter->SetRepairThreshold(v[0]);
+    }
+    else if (option == "--repair-layers" && ReadInteger(argc, argv, i, 0, 1000, k))
+    {
+      filter->SetRepairLayers(k);
+    }
+    else if (option == "--repair-passes" && ReadInteger(argc, argv, i, 0, 100000, k))
+    {
+      filter->SetRepairPasses(k);
+    }
+    else if (option == "--threads" && ReadInteger(argc, argv, i, 0, 4096, k))
+    {
+      filter->SetNumberOfThreads(k);
+    }
+    else if (option == "--marker" && i + 1 < argc)
+    {
+      options.Marker = argv[++i];
+      options.MarkerGiven = true;
+    }
+    else if (option == "--displacement" && i + 1 < argc)
+    {
+      options.Displacement = argv[++i];
+      options.DisplacementGiven = true;
+    }
+    else if (option == "--non-orthogonality")
+    {
+      filter->ComputeNonOrthogonalityOn();
+    }
+    else if (option == "--fail-on-inverted")
+    {
+      options.FailOnInverted = true;
+    }
+    else if (option == "--no-quality")
+    {
+      filter->ComputeQualityOff();
+    }
+    else
+    {
+      std::cerr << "dgmf-deform: bad option or value: " << option << "\n" << Usage();
+      return ExitUsage;
+    }
+  }
+
+  if (options.FailOnInverted && !filter->GetComputeQuality())
+  {
+    std::cerr << "dgmf-deform: --fail-on-inverted needs the quality metric (drop --no-quality)\n";
+    return ExitUsage;
+  }
+  return ExitSuccess;
+}
+} // namespace dgmf_cli

@@ -1,0 +1,50 @@
+/**
+ * @file DGMFCommandOptions.h
+ * @brief The command line of dgmf-deform: its usage text, and its options read into the filter
+ * and into what the program itself needs.
+ */
+#ifndef DGMFCommandOptions_h
+#define DGMFCommandOptions_h
+
+#include <string>
+
+class vtkDGMFDeformFilter;
+
+namespace dgmf_cli
+{
+/// The exit codes of dgmf-deform (Documentation/robustness.md).
+enum ExitCode
+{
+  ExitSuccess = 0,      ///< deformed and written
+  ExitFailure = 1,      ///< the input could not be read, deformed or the output written
+  ExitUsage = 2,        ///< a bad option or value
+  ExitInvertedCells = 3 ///< --fail-on-inverted and the deformation inverts cells: nothing written
+};
+
+/// What the program does beyond the filter's properties.
+struct CommandOptions
+{
+  std::string Input;
+  std::string Output;
+  std::string Marker = "BoundaryMarker";
+  std::string Displacement = "Displacement";
+  bool MarkerGiven = false;
+  bool DisplacementGiven = false;
+  std::string Time = "constant"; ///< OpenFOAM: the time directory written
+  bool DecomposePolyhedra = false;
+  bool ByName = false;         ///< boundaries chosen by name (--moving, --static, --slip)
+  bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
+};
+
+/// The usage text.
+std::string Usage();
+
+/**
+ * Reads the command line into `filter`'s properties and `options`. Returns ExitSuccess, or
+ * ExitUsage after printing what is wrong and the usage. Integers must be integers ("1.5" is
+ * refused), numbers must be finite and in their range.
+ */
+int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, CommandOptions& options);
+} // namespace dgmf_cli
+
+#endif
