@@ -114,7 +114,6 @@ std::string Usage()
   return usage;
 }
 
-
 int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, CommandOptions& options)
 {
   if (argc < 3)

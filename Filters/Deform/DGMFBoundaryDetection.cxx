@@ -1,5 +1,7 @@
 #include "DGMFBoundaryDetection.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -162,6 +164,8 @@ vtkSmartPointer<vtkUnstructuredGrid> RenumberedCopy(
 {
   auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
   copy->SetPoints(mesh->GetPoints());
+  // InsertNextCell grows VTK arrays, and VTK aborts when that fails: check the memory first.
+  EnsureAvailableMemory(2 * static_cast<std::size_t>(mesh->GetNumberOfCells()) * 8 * 10);
   copy->Allocate(mesh->GetNumberOfCells());
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)

@@ -1,5 +1,7 @@
 #include "DGMFCellQuality.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "DGMFMeshConversion.h"
 
 #include "dgmf/CellFaces.h"
@@ -89,11 +91,11 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
 {
   const vtkIdType numberOfCells = mesh->GetNumberOfCells();
   sizeSkew->SetNumberOfComponents(1);
-  sizeSkew->SetNumberOfTuples(numberOfCells);
+  AllocateTuples(sizeSkew, numberOfCells);
   inverted->SetNumberOfComponents(1);
-  inverted->SetNumberOfTuples(numberOfCells);
+  AllocateTuples(inverted, numberOfCells);
   inputInvalid->SetNumberOfComponents(1);
-  inputInvalid->SetNumberOfTuples(numberOfCells);
+  AllocateTuples(inputInvalid, numberOfCells);
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
   unsigned char* invalid = inputInvalid->GetPointer(0);

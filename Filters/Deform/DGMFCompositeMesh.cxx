@@ -1,5 +1,7 @@
 #include "DGMFCompositeMesh.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "dgmf/ResultNames.h"
 
 #include "vtkCellArray.h"
@@ -65,6 +67,11 @@ CompositeMesh::CompositeMesh(
   : Input(input)
   , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
 {
+  // The merge grows VTK arrays one insertion at a time, and VTK aborts when that fails: make sure
+  // first that twice what it may need is there (points, their hash, the arrays, the cells).
+  const auto blockPoints = static_cast<std::size_t>(input->GetNumberOfPoints());
+  const auto blockCells = static_cast<std::size_t>(input->GetNumberOfCells());
+  EnsureAvailableMemory(2 * (blockPoints * (24 + 64 + 24 * 2) + blockCells * 8 * 10));
   std::vector<std::string> arrays;
   for (const std::string& name : { displacementName, markerName })
   {
@@ -254,7 +261,7 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     const auto n = static_cast<vtkIdType>(leaf.NodeOf.size());
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(n);
+    AllocatePoints(points, n);
     for (vtkIdType i = 0; i < n; ++i)
     {
       points->SetPoint(i, deformed->GetPoint(leaf.NodeOf[static_cast<std::size_t>(i)]));
@@ -268,7 +275,7 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
         vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
         values->SetName(name.c_str());
         values->SetNumberOfComponents(result->GetNumberOfComponents());
-        values->SetNumberOfTuples(n);
+        AllocateTuples(values, n);
         for (vtkIdType i = 0; i < n; ++i)
         {
           values->SetTuple(i, leaf.NodeOf[static_cast<std::size_t>(i)], result);
@@ -284,7 +291,7 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
         vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
         values->SetName(name.c_str());
         values->SetNumberOfComponents(result->GetNumberOfComponents());
-        values->SetNumberOfTuples(leaf.Cells);
+        AllocateTuples(values, leaf.Cells);
         for (vtkIdType c = 0; c < leaf.Cells; ++c)
         {
           values->SetTuple(c, leaf.FirstCell + c, result);

@@ -1,5 +1,7 @@
 #include "DGMFCoreDeformation.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "DGMFBoundaryDetection.h"
 #include "DGMFMemoryGuard.h"
 #include "DGMFMeshConversion.h"
@@ -73,7 +75,7 @@ vtkSmartPointer<vtkDoubleArray> Expanded(
 {
   auto values = vtkSmartPointer<vtkDoubleArray>::New();
   values->SetName(name);
-  values->SetNumberOfTuples(static_cast<vtkIdType>(layers.Layer.size()));
+  AllocateTuples(values, static_cast<vtkIdType>(layers.Layer.size()));
   dgmf::ExpandValuesFromLayer(layers, layerValues->GetPointer(0), values->GetPointer(0));
   return values;
 }

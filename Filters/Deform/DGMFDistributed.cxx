@@ -143,8 +143,10 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
   summary.Evaluated = static_cast<std::size_t>(total[2]);
   summary.Inverted = static_cast<std::size_t>(total[3]);
   summary.NotComputed = static_cast<std::size_t>(total[4]);
-  summary.Mean = summary.Evaluated > 0 ? summary.Sum / static_cast<double>(summary.Evaluated) : 0.0;
-  summary.Minimum = summary.Evaluated > 0 ? globalMinimum : 0.0;
+  const double none = std::numeric_limits<double>::quiet_NaN(); // no cell evaluated anywhere
+  summary.Mean =
+    summary.Evaluated > 0 ? summary.Sum / static_cast<double>(summary.Evaluated) : none;
+  summary.Minimum = summary.Evaluated > 0 ? globalMinimum : none;
   outsideNodes = static_cast<std::size_t>(total[5]);
   summary.InputInvalid = static_cast<std::size_t>(total[6]);
 }
@@ -234,9 +236,11 @@ void ReduceFieldData(
   dgmf::QualitySummary summary;
   summary.Evaluated =
     static_cast<std::size_t>(GetFieldValue(fieldData, names::SizeSkewEvaluatedCells));
-  summary.Sum =
-    GetFieldValue(fieldData, names::SizeSkewMean) * static_cast<double>(summary.Evaluated);
-  summary.Minimum = GetFieldValue(fieldData, names::SizeSkewMinimum);
+  // A piece without evaluated cells has NaN mean and minimum (SetQualitySummary).
+  summary.Sum = summary.Evaluated > 0
+    ? GetFieldValue(fieldData, names::SizeSkewMean) * static_cast<double>(summary.Evaluated)
+    : 0.0;
+  summary.Minimum = summary.Evaluated > 0 ? GetFieldValue(fieldData, names::SizeSkewMinimum) : 0.0;
   summary.Inverted = static_cast<std::size_t>(GetFieldValue(fieldData, names::InvertedCellCount));
   summary.InputInvalid =
     static_cast<std::size_t>(GetFieldValue(fieldData, names::InputInvalidCellCount));

@@ -1,5 +1,7 @@
 #include "DGMFMeshConversion.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "dgmf/HintStride.h"
 
 #include "vtkCellType.h"
@@ -81,6 +83,8 @@ vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points)
   }
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->SetPoints(points->GetPoints());
+  // InsertNextCell grows VTK arrays, and VTK aborts when that fails: check the memory first.
+  EnsureAvailableMemory(2 * static_cast<std::size_t>(points->GetNumberOfCells()) * 8 * 10);
   grid->Allocate(points->GetNumberOfCells());
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < points->GetNumberOfCells(); ++c)

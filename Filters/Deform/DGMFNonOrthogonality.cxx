@@ -1,5 +1,7 @@
 #include "DGMFNonOrthogonality.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "DGMFMeshConversion.h"
 #include "DGMFOutputArrays.h"
 
@@ -132,7 +134,7 @@ double AddNonOrthogonality(vtkUnstructuredGrid* mesh, const double* originalPoin
     dgmf::ComputeNonOrthogonality(cells, cache.Get(mesh), orientation, deformedPoints, parallelFor);
   vtkNew<vtkDoubleArray> perCell;
   perCell->SetName(dgmf::names::NonOrthogonality);
-  perCell->SetNumberOfTuples(static_cast<vtkIdType>(result.CellMaximum.size()));
+  AllocateTuples(perCell, static_cast<vtkIdType>(result.CellMaximum.size()));
   std::copy(result.CellMaximum.begin(), result.CellMaximum.end(), perCell->GetPointer(0));
   cellData->AddArray(perCell);
   AddFieldValue(fieldData, dgmf::names::MaximumNonOrthogonality, result.Maximum);

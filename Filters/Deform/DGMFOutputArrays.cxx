@@ -1,5 +1,7 @@
 #include "DGMFOutputArrays.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "DGMFCellQuality.h"
 #include "DGMFNonOrthogonality.h"
 
@@ -20,6 +22,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace dgmf_vtk
 {
@@ -108,7 +111,7 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
       {
         vtkNew<vtkDoubleArray> kept; // this piece's nodes only
         kept->SetName(name);
-        kept->SetNumberOfTuples(local);
+        AllocateTuples(kept, local);
         std::copy_n(array->GetPointer(0), localNodes, kept->GetPointer(0));
         pointData->AddArray(kept);
       }
@@ -128,8 +131,12 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
 
 void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summary)
 {
-  AddFieldValue(fieldData, dgmf::names::SizeSkewMean, summary.Mean);
-  AddFieldValue(fieldData, dgmf::names::SizeSkewMinimum, summary.Minimum);
+  // No cell evaluated (only quadratic cells or polyhedra): NaN, not a minimum of 0 that reads as
+  // the worst possible quality.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  AddFieldValue(fieldData, dgmf::names::SizeSkewMean, summary.Evaluated > 0 ? summary.Mean : none);
+  AddFieldValue(
+    fieldData, dgmf::names::SizeSkewMinimum, summary.Evaluated > 0 ? summary.Minimum : none);
   AddFieldCount(fieldData, dgmf::names::InvertedCellCount, summary.Inverted);
   AddFieldCount(fieldData, dgmf::names::SizeSkewEvaluatedCells, summary.Evaluated);
   AddFieldCount(fieldData, dgmf::names::InputInvalidCellCount, summary.InputInvalid);

@@ -1,5 +1,7 @@
 #include "DGMFOutputBuffers.h"
 
+#include "DGMFArrayAllocation.h"
+
 #include "dgmf/ResultNames.h"
 
 #include "vtkDoubleArray.h"
@@ -30,7 +32,7 @@ vtkSmartPointer<vtkPoints> ReuseOutputPoints(vtkSmartPointer<vtkPoints>& last,
   }
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  AllocateTuples(coordinates, static_cast<vtkIdType>(n));
   last = vtkSmartPointer<vtkPoints>::New();
   last->SetData(coordinates);
   return last;
@@ -73,7 +75,7 @@ double* FieldArrays::Store(const char* field, const dgmf::FieldKey& key)
   {
     array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(field);
-    array->SetNumberOfTuples(static_cast<vtkIdType>(this->Size));
+    AllocateTuples(array, static_cast<vtkIdType>(this->Size));
   }
   array->Modified();
   stored.Key = key;

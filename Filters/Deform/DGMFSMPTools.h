@@ -10,7 +10,10 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
+#include <exception>
+#include <mutex>
 #include <string>
 
 namespace dgmf_vtk
@@ -26,10 +29,38 @@ inline dgmf::ParallelFor MakeSMPParallelFor()
   return [](std::size_t begin, std::size_t end, std::size_t grain, const dgmf::RangeFunction& body)
   {
     const std::size_t chunk = std::max(grain, (end - begin + 63) / 64);
+    // An exception escaping a worker of the STDThread backend would terminate the process (out of
+    // memory in a worker would take ParaView down): the first one is kept, the other chunks are
+    // skipped, and it is thrown again in the calling thread.
+    std::exception_ptr failure;
+    std::atomic<bool> failed(false);
+    std::mutex lock;
     vtkSMPTools::For(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end),
       static_cast<vtkIdType>(chunk),
-      [&body](vtkIdType b, vtkIdType e)
-      { body(static_cast<std::size_t>(b), static_cast<std::size_t>(e)); });
+      [&](vtkIdType b, vtkIdType e)
+      {
+        if (failed.load(std::memory_order_relaxed))
+        {
+          return;
+        }
+        try
+        {
+          body(static_cast<std::size_t>(b), static_cast<std::size_t>(e));
+        }
+        catch (...)
+        {
+          std::lock_guard<std::mutex> guard(lock);
+          if (!failure)
+          {
+            failure = std::current_exception();
+          }
+          failed = true;
+        }
+      });
+    if (failure)
+    {
+      std::rethrow_exception(failure);
+    }
   };
 }
 

@@ -102,7 +102,10 @@ TEST(BadInput, NoBoundaryNodeAndNoMovingNode)
   }
   FilterRun none;
   EXPECT_EQ(none.Execute(mesh)->GetNumberOfPoints(), 0);
-  EXPECT_TRUE(FilterRun::Has(none.Errors, "no boundary node"));
+  EXPECT_TRUE(FilterRun::Has(none.Errors, "No node is a boundary node"));
+  // The words agree with the behaviour: an error and no output, not "the output has the input's
+  // points".
+  EXPECT_FALSE(FilterRun::Has(none.Warnings, "the output has the input's points"));
 
   // Only static nodes: the output has the input's points, with a warning.
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -120,6 +123,29 @@ TEST(BadInput, NoBoundaryNodeAndNoMovingNode)
     out->GetPoint(i, b);
     ASSERT_EQ(std::memcmp(a, b, sizeof(a)), 0) << "node " << i;
   }
+}
+
+TEST(BadInput, DisplacementOnNodesNotMovingIsReportedAsIgnored)
+{
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+  vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("Contradicting");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  vtkIdType staticNodes = 0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const bool isStatic = marker->GetTuple1(i) == 1;
+    staticNodes += isStatic ? 1 : 0;
+    displacement->SetTuple3(i, isStatic ? 0.01 : 0.0, 0.0, 0.0);
+  }
+  mesh->GetPointData()->AddArray(displacement);
+  FilterRun run;
+  run.Filter->SetDisplacementArrayName("Contradicting");
+  ASSERT_EQ(run.Execute(mesh)->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+  EXPECT_TRUE(FilterRun::Has(run.Warnings,
+    std::to_string(staticNodes) + " nodes not marked as moving have a non-zero displacement"));
 }
 
 TEST(BadInput, CoplanarBoundaryOf3DMeshIsRejected)

@@ -105,10 +105,43 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
         " is not a slip boundary node, or has no plane");
     }
   }
+  if (std::all_of(
+        problem.Kinds, problem.Kinds + n, [](NodeKind kind) { return kind == NodeKind::Interior; }))
+  {
+    throw std::invalid_argument(NoBoundaryNodeMessage);
+  }
   std::vector<std::string> warnings;
   if (std::find(problem.Kinds, problem.Kinds + n, NodeKind::MovingBoundary) == problem.Kinds + n)
   {
     warnings.push_back("No node is marked as moving: the output has the input's points.");
+  }
+  if (problem.Displacement)
+  {
+    // Only the moving nodes' displacement is used: a non-zero one elsewhere contradicts the
+    // marker (a static node meant to move, or the wrong array).
+    std::size_t ignored = 0, largestAt = 0;
+    double largest = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double* d = problem.Displacement + 3 * i;
+      const double size = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (problem.Kinds[i] != NodeKind::MovingBoundary && size > 0.0)
+      {
+        ++ignored;
+        if (size > largest)
+        {
+          largest = size;
+          largestAt = i;
+        }
+      }
+    }
+    if (ignored > 0)
+    {
+      warnings.push_back(std::to_string(ignored) +
+        " nodes not marked as moving have a non-zero displacement (the largest, " +
+        Number(largest) + ", at point " + std::to_string(largestAt) +
+        "); it is ignored: only moving nodes follow the displacement array.");
+    }
   }
   return warnings;
 }

@@ -47,6 +47,11 @@ struct DeformationProblem
   bool UsesBodies() const { return this->NumberOfBodies > 0 || this->ExtractRigidMotion; }
 };
 
+/// The error for a problem without boundary nodes (ValidateProblem and DelaunayMapping).
+constexpr const char* NoBoundaryNodeMessage =
+  "No node is a boundary node (the marker is 0 everywhere, or no displacement is non-zero): mark "
+  "the boundary nodes 1 (static), 2 (moving) or 3 (slip). Nothing was deformed.";
+
 /**
  * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
  * std::invalid_argument, with a message for the user, for: a dimension other than 2 or 3, no node,

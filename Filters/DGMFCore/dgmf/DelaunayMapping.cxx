@@ -1,5 +1,6 @@
 #include "dgmf/DelaunayMapping.h"
 
+#include "dgmf/DeformationProblem.h"
 #include "dgmf/Finite.h"
 #include "dgmf/NodeLocation.h"
 
@@ -33,7 +34,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   }
   if (this->BoundaryNodes.empty())
   {
-    throw std::invalid_argument("DelaunayMapping: the mesh has no boundary node");
+    throw std::invalid_argument(NoBoundaryNodeMessage);
   }
   boundaryXYZ.reserve(3 * this->BoundaryNodes.size());
   for (std::int32_t node : this->BoundaryNodes)

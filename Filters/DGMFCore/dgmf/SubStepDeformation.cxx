@@ -232,7 +232,8 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
       step = repaired.BadCellsAfter == 0 ? std::min(2.0 * (next - s), 1.0) : next - s;
     }
     s = next;
-    if (report.SubSteps + report.RejectedSteps > 4 * parameters.MaximumSubSteps)
+    // Fixed mode takes exactly SubSteps steps; automatic mode is bounded by its halvings.
+    if (automatic && report.SubSteps + report.RejectedSteps > 4 * parameters.MaximumSubSteps)
     {
       throw std::runtime_error(
         "sub-steps: too many steps (the motion could not be split finely enough)");

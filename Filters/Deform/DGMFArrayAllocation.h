@@ -1,0 +1,40 @@
+/**
+ * @file DGMFArrayAllocation.h
+ * @brief Memory for VTK arrays that fails into the filter's error path.
+ *
+ * When an allocation fails, VTK 9.2's arrays print "Unable to allocate" and, as Debian builds
+ * them (without NDEBUG), call abort(): ParaView itself would go down. The filter's arrays are
+ * therefore allocated here, with malloc, and handed to VTK: a failure throws std::bad_alloc, which
+ * the filter reports as "Out of memory" with an empty output.
+ */
+#ifndef DGMFArrayAllocation_h
+#define DGMFArrayAllocation_h
+
+#include "vtkType.h"
+
+#include <cstddef>
+
+class vtkDataArray;
+class vtkPoints;
+
+namespace dgmf_vtk
+{
+/**
+ * Gives `array` `tuples` tuples of its number of components (values not initialised). Arrays
+ * with VTK's standard memory layout get memory from malloc (freed by VTK); std::bad_alloc when it
+ * cannot be had.
+ */
+void AllocateTuples(vtkDataArray* array, vtkIdType tuples);
+
+/// AllocateTuples on the points' data array.
+void AllocatePoints(vtkPoints* points, vtkIdType count);
+
+/**
+ * Throws std::bad_alloc unless `bytes` bytes can be allocated now (the probe is freed at once):
+ * a guard before VTK code that grows arrays one insertion at a time (merging blocks, copying
+ * cells), whose own failure would abort.
+ */
+void EnsureAvailableMemory(std::size_t bytes);
+} // namespace dgmf_vtk
+
+#endif
