@@ -23,7 +23,8 @@ void AllocateTuples(vtkDataArray* array, vtkIdType tuples)
   {
     throw std::bad_alloc();
   }
-  array->SetVoidArray(memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+  array->SetVoidArray(
+    memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
 }
 
 void AllocatePoints(vtkPoints* points, vtkIdType count)

@@ -84,7 +84,7 @@ vtkSmartPointer<vtkDoubleArray> Expanded(
 CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
   const dgmf::DeformationProblem& problem, const InputNodes& nodes, vtkUnstructuredGrid* mesh,
   bool distributed, DeformationCaches& caches, vtkDoubleArray* deformed,
-  const dgmf::ParallelFor& parallelFor, const std::function<bool(double)>& proceed)
+  const dgmf::ParallelFor& parallelFor, const dgmf::Progress& progress)
 {
   CoreDeformation result;
   const dgmf::ExtrudedLayers& layers = nodes.Layers;
@@ -149,11 +149,8 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
       result.LocationSeconds = mapping->GetLocationSeconds();
     }
   }
-  if (!proceed(0.6))
-  {
-    result.Aborted = true;
-    return result;
-  }
+  progress.Report(0.5);
+  solved.Progress = progress.Part(0.5, 1.0); // sub-steps and the quality guard
   const auto start = std::chrono::steady_clock::now();
   dgmf::DeformationReport report =
     method.Deform(solved, mapping, dgmf::DeformationOutputs{ out, &caches.Fields }, parallelFor);

@@ -58,7 +58,6 @@ struct CoreDeformation
   double GraphSeconds = 0.0;            ///< graphs built (0 when the cached one was used)
   double LocationSeconds = 0.0;         ///< their node location
   double DeformationSeconds = 0.0;      ///< the method's deformation
-  bool Aborted = false;                 ///< `proceed` said to stop; nothing was deformed
   vtkSmartPointer<vtkDoubleArray> R, F; ///< r and f for the output (one value per node), if written
 };
 
@@ -66,14 +65,15 @@ struct CoreDeformation
  * Deforms `problem` (the gathered `nodes` with their motions) with `method`, writing 3 coordinates
  * per node into `deformed`. The method's graph is the cached one while the nodes' points and kinds
  * are unchanged; a one-cell-thick mesh (nodes.Layers) is deformed as the 2D mesh of its first
- * layer, whose in-plane motion both layers take. `proceed(fraction)` reports progress and is
- * asked after the graph whether to go on. Throws std::invalid_argument for what the method needs
+ * layer, whose in-plane motion both layers take. `progress` is told 0.5 once the graph is built
+ * and the nodes located, then how far sub-steps and the quality guard are; its callback may stop
+ * the run (dgmf::Aborted). Throws std::invalid_argument for what the method needs
  * but a distributed run cannot give (cells), and as the core does.
  */
 CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
   const dgmf::DeformationProblem& problem, const InputNodes& nodes, vtkUnstructuredGrid* mesh,
   bool distributed, DeformationCaches& caches, vtkDoubleArray* deformed,
-  const dgmf::ParallelFor& parallelFor, const std::function<bool(double)>& proceed);
+  const dgmf::ParallelFor& parallelFor, const dgmf::Progress& progress);
 
 } // namespace dgmf_vtk
 

@@ -8,6 +8,7 @@
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DeformationMethod.h"
+#include "dgmf/Progress.h"
 
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
@@ -239,6 +240,10 @@ int vtkDGMFDeformFilter::RequestData(
     dgmf_vtk::RunWithThreads(
       this->NumberOfThreads, [&]() { status = this->Execute(input, output, composite.get()); });
   }
+  catch (const dgmf::Aborted& e)
+  {
+    vtkWarningMacro(<< e.what());
+  }
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
@@ -323,18 +328,18 @@ int vtkDGMFDeformFilter::Execute(
   const vtkSmartPointer<vtkPoints> newPoints =
     dgmf_vtk::ReuseOutputPoints(cache.OutputPoints, input, output, n);
   auto* newCoordinates = vtkDoubleArray::SafeDownCast(newPoints->GetData());
-  this->UpdateProgress(0.1);
-  const dgmf_vtk::CoreDeformation result = dgmf_vtk::DeformThroughCore(*method, problem, nodes,
-    input, distributed, cache, newCoordinates, dgmf_vtk::MakeSMPParallelFor(),
-    [this](double progress)
+  // Progress: 0.1 gathered, 0.45 graph and location, up to 0.8 the method (sub-steps, repair),
+  // then the outputs and the quality. ParaView's abort stops the run at each report.
+  const dgmf::Progress progress(
+    [this](double fraction)
     {
-      this->UpdateProgress(progress);
+      this->UpdateProgress(fraction);
       return !this->GetAbortExecute();
-    });
-  if (result.Aborted)
-  {
-    return 0;
-  }
+    },
+    0.1, 0.8);
+  progress.Report(0.0);
+  const dgmf_vtk::CoreDeformation result = dgmf_vtk::DeformThroughCore(*method, problem, nodes,
+    input, distributed, cache, newCoordinates, dgmf_vtk::MakeSMPParallelFor(), progress);
   this->LastExecutionReusedGraph = result.GraphReused;
   this->LastGraphSeconds = result.GraphSeconds;
   this->LastLocationSeconds = result.LocationSeconds;
@@ -343,7 +348,7 @@ int vtkDGMFDeformFilter::Execute(
   {
     vtkWarningMacro(<< warning);
   }
-  this->UpdateProgress(0.8);
+  progress.Report(1.0); // 0.8; an abort here skips the quality
 
   // 4. The outputs: the input's cells and arrays, the new points, the method's results, the
   // quality.

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -237,4 +238,86 @@ TEST(LargeMotion, RefusedWithBodiesOrExtractedMotion)
   filter->Update();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_NE(errors.find("Sub-steps and the quality guard"), std::string::npos) << errors;
+}
+
+// Progress reaches ParaView through the sub-steps and the repairs (not only four updates), and
+// ParaView's abort stops the run at the next report: an empty output, a warning, and a filter that
+// gives the same points as a fresh one when run again.
+TEST(LargeMotion, ProgressMovesDuringSubStepsAndAbortStopsTheRun)
+{
+  auto slab = dgmf_test::ReadShippedMesh("thin_slab.vtu", SlabPoints);
+  struct Watch
+  {
+    std::vector<double> Fractions;
+    double AbortAt = 2.0; // never
+    std::string Warnings;
+  } watch;
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(slab);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetDisplacementArrayName("Displacement");
+  filter->SetRotationAngles(0.0, 0.0, 90.0);
+  filter->SetSubSteps(8);
+  filter->SetRepairThreshold(0.2);
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&watch);
+  onProgress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void* callData)
+    {
+      auto* w = static_cast<Watch*>(data);
+      const double fraction = *static_cast<double*>(callData);
+      w->Fractions.push_back(fraction);
+      if (fraction >= w->AbortAt)
+      {
+        static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+      }
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  vtkNew<vtkCallbackCommand> onWarning;
+  onWarning->SetClientData(&watch);
+  onWarning->SetCallback([](vtkObject*, unsigned long, void* data, void* callData)
+    { static_cast<Watch*>(data)->Warnings += static_cast<const char*>(callData); });
+  filter->AddObserver(vtkCommand::WarningEvent, onWarning);
+
+  filter->Update();
+  ASSERT_EQ(filter->GetOutput()->GetNumberOfPoints(), SlabPoints);
+  // One report per step and per repair pass, in order, between the graph (0.45) and 0.8.
+  std::size_t during = 0;
+  for (std::size_t k = 0; k < watch.Fractions.size(); ++k)
+  {
+    during += watch.Fractions[k] > 0.45 && watch.Fractions[k] < 0.8 ? 1 : 0;
+    if (k > 0)
+    {
+      EXPECT_GE(watch.Fractions[k], watch.Fractions[k - 1]);
+    }
+  }
+  EXPECT_GE(during, 8u);
+  auto complete = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  complete->DeepCopy(filter->GetOutput());
+
+  // Abort in the middle of the steps.
+  watch.Fractions.clear();
+  watch.AbortAt = 0.6;
+  filter->SetRotationAngles(0.0, 0.0, 89.0);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_NE(watch.Warnings.find("aborted"), std::string::npos) << watch.Warnings;
+  for (double fraction : watch.Fractions) // the executive ends every run with 1
+  {
+    EXPECT_TRUE(fraction < 0.8 || fraction == 1.0) << fraction << ": not stopped";
+  }
+
+  // The next run is whole and the same as a run that was never aborted.
+  watch.AbortAt = 2.0;
+  filter->AbortExecuteOff();
+  filter->SetRotationAngles(0.0, 0.0, 90.0);
+  filter->Update();
+  ASSERT_EQ(filter->GetOutput()->GetNumberOfPoints(), SlabPoints);
+  for (vtkIdType i = 0; i < SlabPoints; ++i)
+  {
+    double a[3], b[3];
+    complete->GetPoint(i, a);
+    filter->GetOutput()->GetPoint(i, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << "node " << i;
+  }
 }

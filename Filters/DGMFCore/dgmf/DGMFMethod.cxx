@@ -164,6 +164,7 @@ void DeformLargeMotion(const DeformationProblem& problem, const DelaunayMapping&
   parameters.RepairPasses = p.RepairPasses;
   parameters.Damping = p.Damping;
   parameters.StaticR0 = p.StaticR0;
+  parameters.Progress = problem.Progress;
   if (!problem.Slip.Empty())
   {
     // Every step keeps the slip nodes in their planes (before the quality guard sees the step).

@@ -9,6 +9,7 @@
 #include "dgmf/BoundaryMotion.h"
 #include "dgmf/CellMesh.h"
 #include "dgmf/NodeKind.h"
+#include "dgmf/Progress.h"
 #include "dgmf/RigidMotion.h"
 #include "dgmf/SlipPlanes.h"
 
@@ -42,6 +43,8 @@ struct DeformationProblem
   const double* BoundaryWeights = nullptr; ///< per node: boundary area or length (IDW), or null
   /// The slip (symmetry) boundaries: their SlipBoundary nodes stay in their planes.
   SlipConstraint Slip;
+  /// Told how far a long method (sub-steps, the quality guard) is; may stop it (Aborted).
+  dgmf::Progress Progress;
 
   /// True when each moving body is handled apart: body ids are given, or the motions extracted.
   bool UsesBodies() const { return this->NumberOfBodies > 0 || this->ExtractRigidMotion; }

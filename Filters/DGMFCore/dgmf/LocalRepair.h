@@ -9,6 +9,7 @@
 #include "dgmf/CellMesh.h"
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
+#include "dgmf/Progress.h"
 #include "dgmf/SizeSkewQuality.h"
 
 #include <cstddef>
@@ -30,6 +31,8 @@ struct RepairParameters
   int Layers = 2;
   /// Most Gauss-Seidel passes over the free nodes (0: only count the bad cells).
   int MaximumPasses = 20;
+  /// Told after each pass (the fraction of MaximumPasses); may stop the repair (Aborted).
+  dgmf::Progress Progress;
 };
 
 /// What RepairCells found and did. Counts are over the cells the metric covers.

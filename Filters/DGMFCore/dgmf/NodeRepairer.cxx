@@ -76,7 +76,7 @@ void NodeRepairer::InitializeCell(
   }
 }
 
-std::size_t NodeRepairer::Run(int maximumPasses, double threshold)
+std::size_t NodeRepairer::Run(int maximumPasses, double threshold, const Progress& progress)
 {
   this->Threshold = threshold;
   std::size_t passes = 0;
@@ -100,6 +100,7 @@ std::size_t NodeRepairer::Run(int maximumPasses, double threshold)
       }
     }
     ++passes;
+    progress.Report(static_cast<double>(passes) / maximumPasses);
     if (moved == 0)
     {
       break;

@@ -9,6 +9,7 @@
 #include "dgmf/CellGeometry.h"
 #include "dgmf/CellMesh.h"
 #include "dgmf/LocalRepair.h"
+#include "dgmf/Progress.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -113,7 +114,7 @@ public:
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
   /// Runs at most `maximumPasses` passes; returns the number run.
-  std::size_t Run(int maximumPasses, double threshold);
+  std::size_t Run(int maximumPasses, double threshold, const Progress& progress = Progress());
 
 private:
   const CellMesh& Mesh;

@@ -191,6 +191,7 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
     repair.Threshold = parameters.RepairThreshold;
     repair.Layers = parameters.RepairLayers;
     repair.MaximumPasses = parameters.Repair ? parameters.RepairPasses : 0;
+    repair.Progress = parameters.Progress.Part(s, next);
     RepairReport repaired;
     if (parameters.Repair || automatic)
     {
@@ -232,6 +233,7 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
       step = repaired.BadCellsAfter == 0 ? std::min(2.0 * (next - s), 1.0) : next - s;
     }
     s = next;
+    parameters.Progress.Report(s);
     // Fixed mode takes exactly SubSteps steps; automatic mode is bounded by its halvings.
     if (automatic && report.SubSteps + report.RejectedSteps > 4 * parameters.MaximumSubSteps)
     {

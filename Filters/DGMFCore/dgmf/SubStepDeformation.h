@@ -10,6 +10,7 @@
 #include "dgmf/LocalRepair.h"
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
+#include "dgmf/Progress.h"
 #include "dgmf/RigidMotion.h"
 
 #include <cstddef>
@@ -38,6 +39,9 @@ struct SubStepParameters
   /// If set, applied to the mesh after each step's deformation, before the quality guard (e.g.
   /// SlipConstraint::Apply: slip nodes back into their planes).
   std::function<void(double* deformed)> Constrain;
+  /// Told the fraction of the motion done after each step and during the repairs; may stop the
+  /// run (Aborted).
+  dgmf::Progress Progress;
 };
 
 /// What DeformInSubSteps did.
