@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <new>
+#include <sys/resource.h>
 
 namespace dgmf_vtk
 {
@@ -41,6 +42,23 @@ void EnsureAvailableMemory(std::size_t bytes)
     throw std::bad_alloc();
   }
   std::free(probe);
+}
+
+bool CanStartThreads(int threads)
+{
+  if (threads <= 1)
+  {
+    return true;
+  }
+  rlimit stack{};
+  const std::size_t stackBytes =
+    getrlimit(RLIMIT_STACK, &stack) == 0 && stack.rlim_cur != RLIM_INFINITY
+    ? static_cast<std::size_t>(stack.rlim_cur)
+    : std::size_t(8) << 20;
+  void* probe =
+    std::malloc(static_cast<std::size_t>(threads) * (stackBytes + (std::size_t(1) << 20)));
+  std::free(probe);
+  return probe != nullptr;
 }
 
 } // namespace dgmf_vtk

@@ -35,6 +35,13 @@ void AllocatePoints(vtkPoints* points, vtkIdType count);
  * cells), whose own failure would abort.
  */
 void EnsureAvailableMemory(std::size_t bytes);
+
+/**
+ * True when `threads` threads could get their stacks now (a probe of that much memory, freed at
+ * once; always true for one thread): VTK 9.2's STDThread backend aborts the process when it cannot
+ * start a thread.
+ */
+bool CanStartThreads(int threads);
 } // namespace dgmf_vtk
 
 #endif

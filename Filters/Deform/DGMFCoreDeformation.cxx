@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -197,6 +198,10 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
     }
     caches.Inputs.Gather(input, options, nodes);
     return std::string();
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw; // the filter's out-of-memory error
   }
   catch (const std::exception& e)
   {

@@ -5,6 +5,8 @@
 #ifndef DGMFSMPTools_h
 #define DGMFSMPTools_h
 
+#include "DGMFArrayAllocation.h"
+
 #include "dgmf/ParallelFor.h"
 
 #include "vtkSMPTools.h"
@@ -29,6 +31,17 @@ inline dgmf::ParallelFor MakeSMPParallelFor()
   return [](std::size_t begin, std::size_t end, std::size_t grain, const dgmf::RangeFunction& body)
   {
     const std::size_t chunk = std::max(grain, (end - begin + 63) / 64);
+    // VTK 9.2's STDThread backend starts its threads for every loop, and aborts the process when
+    // one cannot be started (no memory left for its stack): then the loop runs in this thread
+    // (the results do not depend on the threads).
+    if (!CanStartThreads(vtkSMPTools::GetEstimatedNumberOfThreads()))
+    {
+      for (std::size_t b = begin; b < end; b += chunk)
+      {
+        body(b, std::min(end, b + chunk));
+      }
+      return;
+    }
     // An exception escaping a worker of the STDThread backend would terminate the process (out of
     // memory in a worker would take ParaView down): the first one is kept, the other chunks are
     // skipped, and it is thrown again in the calling thread.

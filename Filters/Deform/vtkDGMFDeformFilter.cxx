@@ -24,6 +24,7 @@
 
 #include <exception>
 #include <new>
+#include <system_error>
 
 vtkStandardNewMacro(vtkDGMFDeformFilter);
 vtkCxxSetObjectMacro(vtkDGMFDeformFilter, Controller, vtkMultiProcessController);
@@ -248,6 +249,12 @@ int vtkDGMFDeformFilter::RequestData(
   {
     vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
                                                    << input->GetNumberOfCells() << " cells).");
+  }
+  catch (const std::system_error& e) // a thread that cannot be started
+  {
+    vtkErrorMacro("Out of resources: " << e.what()
+                                       << " (a thread could not be started; try NumberOfThreads 1 "
+                                          "or more memory).");
   }
   catch (const std::exception& e)
   {

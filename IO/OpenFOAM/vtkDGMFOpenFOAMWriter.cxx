@@ -17,6 +17,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <set>
 #include <vector>
 
@@ -187,6 +188,10 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     {
       std::ofstream(target.string()).flush(); // the empty file ParaView opens a case with
     }
+  }
+  catch (const std::bad_alloc&)
+  {
+    fail("Out of memory while writing the points; nothing was written.");
   }
   catch (const std::exception& e)
   {

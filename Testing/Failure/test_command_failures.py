@@ -1,0 +1,239 @@
+"""dgmf-deform under failure (issue 17): honest exit codes, no half-written file at the output
+path, the filter's own messages on stderr once, out of memory without a crash.
+
+Run with pvpython (VTK's Python modules make and read the meshes):
+  pvpython test_command_failures.py --deform DGMF_DEFORM --data DATA_DIR --work WORK_DIR [-k NAME]
+"""
+import argparse
+import glob
+import hashlib
+import math
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import failure_meshes as meshes  # noqa: E402
+
+ARGS = None
+CIRCLE_POINTS = 822
+
+
+def run(*arguments, limit=None, fsize=None, timeout=600):
+    """Runs dgmf-deform; returns (exit code, stdout, stderr). Negative codes are signals."""
+    command = [ARGS.deform] + [str(a) for a in arguments]
+    if limit is not None or fsize is not None:
+        prefix = ["prlimit"]
+        if limit is not None:
+            prefix.append("--as=%d" % limit)
+        if fsize is not None:
+            prefix.append("--fsize=%d" % fsize)
+        command = prefix + ["--"] + command
+    done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+    return done.returncode, done.stdout, done.stderr
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def leftovers(folder):
+    """Temporary files dgmf-deform left behind."""
+    return glob.glob(os.path.join(folder, ".*.dgmf-*.tmp"))
+
+
+class CommandFailures(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = ARGS.work
+        shutil.rmtree(cls.work, ignore_errors=True)
+        os.makedirs(cls.work)
+        cls.circle = os.path.join(ARGS.data, "rotating_circle.vtu")
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    # 1. A failed write exits 1 and does not say it wrote.
+    def test_failed_write_exits_1(self):
+        code, out, err = run(self.circle, self.path("no/such/dir/o.vtu"), "--rotate", 0, 0, 30)
+        self.assertEqual(code, 1, err)
+        self.assertNotIn("wrote", out)
+        self.assertIn("could not write", err)
+
+    # 2. The output may be the input: read completely, then replaced whole.
+    def test_output_may_be_the_input(self):
+        target = self.path("same.vtu")
+        shutil.copy(self.circle, target)
+        code, out, err = run(target, target, "--rotate", 0, 0, 30)
+        self.assertEqual(code, 0, err)
+        deformed = meshes.read(target)
+        original = meshes.read(self.circle)
+        self.assertEqual(deformed.GetNumberOfPoints(), CIRCLE_POINTS)
+        moved = sum(
+            deformed.GetPoint(i) != original.GetPoint(i) for i in range(CIRCLE_POINTS))
+        self.assertGreater(moved, 100)
+        self.assertEqual(leftovers(self.work), [])
+
+    # 2. A write cut short (here by a file-size limit, as a full disk would) leaves the file that
+    #    was at the output path untouched and no temporary file.
+    def test_cut_write_keeps_the_previous_output(self):
+        target = self.path("kept.vtu")
+        shutil.copy(self.circle, target)
+        before = digest(target)
+        code, out, err = run(self.circle, target, "--rotate", 0, 0, 30, fsize=8000)
+        self.assertEqual(code, 1, err)
+        self.assertEqual(digest(target), before)
+        self.assertEqual(leftovers(self.work), [])
+
+    # 2. Ctrl-C during a run: exit 130, nothing written, the previous output untouched.
+    def test_interrupt_leaves_nothing_behind(self):
+        mesh = self.path("interrupt_in.vtu")
+        meshes.cube_in_box(30, mesh)
+        target = self.path("interrupt_out.vtu")
+        shutil.copy(self.circle, target)
+        before = digest(target)
+        process = subprocess.Popen(
+            [ARGS.deform, mesh, target, "--rotate", "10", "20", "30", "--center", "0.5", "0.5",
+             "0.5", "--sub-steps", "2000"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(2.0)
+        self.assertIsNone(process.poll(), "the run ended before it could be interrupted")
+        process.send_signal(signal.SIGINT)
+        out, err = process.communicate(timeout=120)
+        self.assertEqual(process.returncode, 130, err)
+        self.assertIn("interrupted while deforming", err)
+        self.assertEqual(digest(target), before)
+        self.assertEqual(leftovers(self.work), [])
+
+    # 4. Each bad-input class: the filter's own message on stderr, once, without VTK's pipeline
+    #    dump or colour codes; exit 1; no output.
+    def test_filter_messages_reach_stderr_once(self):
+        zero = self.path("marker_zero.vtu")
+        meshes.with_marker(self.circle, zero, lambda m, p: 0 * m)
+        nan = self.path("nan_point.vtu")
+        meshes.with_nan_point(self.circle, nan)
+        cases = [
+            ((self.circle, "--marker", "Nope"),
+             "The boundary-marker array 'Nope' is not a point array of the input."),
+            ((zero, "--rotate", 0, 0, 10), "No node is a boundary node"),
+            ((self.circle, "--rotate", 0, 0, 800), "rotation angles must be within"),
+            ((nan, "--rotate", 0, 0, 10), "NaN or infinite point coordinates"),
+            ((self.circle, "--rotate", 10, 0, 0), "2D mesh"),
+        ]
+        for (source, *options), message in cases:
+            with self.subTest(message=message):
+                output = self.path("bad_out.vtu")
+                code, out, err = run(source, output, *options)
+                self.assertEqual(code, 1, err)
+                self.assertEqual(err.count(message), 1, err)
+                self.assertNotIn("returned failure for request", err)
+                self.assertNotIn("\x1b[", err)
+                self.assertNotIn("vtkDGMFDeformFilter (0x", err)
+                self.assertFalse(os.path.exists(output))
+
+    def test_integer_options_refuse_fractions(self):
+        for option in ("--threads", "--sub-steps", "--damping", "--repair-passes"):
+            with self.subTest(option=option):
+                code, out, err = run(self.circle, self.path("o.vtu"), option, "1.5")
+                self.assertEqual(code, 2, err)
+                self.assertIn("bad option or value: " + option, err)
+
+    # --fail-on-inverted: exit 3 and nothing written; without it the tangled mesh is written.
+    def test_fail_on_inverted(self):
+        output = self.path("tangled.vtu")
+        code, out, err = run(self.circle, output, "--rotate", 0, 0, 400, "--fail-on-inverted")
+        self.assertEqual(code, 3, err)
+        self.assertIn("inverts", err)
+        self.assertFalse(os.path.exists(output))
+        code, out, err = run(self.circle, output, "--rotate", 0, 0, 400)
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("inverted cells 0;", out)
+        code, out, err = run(self.circle, output, "--no-quality", "--fail-on-inverted")
+        self.assertEqual(code, 2, err)
+
+    # A .vtk output is legacy VTK that VTK's legacy reader reads back.
+    def test_vtk_output_is_legacy(self):
+        output = self.path("legacy.vtk")
+        code, out, err = run(self.circle, output, "--rotate", 0, 0, 30)
+        self.assertEqual(code, 0, err)
+        with open(output, "rb") as f:
+            self.assertTrue(f.read(30).startswith(b"# vtk DataFile Version"))
+        self.assertEqual(meshes.read(output).GetNumberOfPoints(), CIRCLE_POINTS)
+        code, out, err = run(self.circle, self.path("o.exe"), "--rotate", 0, 0, 30)
+        self.assertEqual(code, 2, err)
+
+    # Fixed sub-steps above 256 (once "too many steps").
+    def test_many_fixed_sub_steps(self):
+        code, out, err = run(self.circle, self.path("steps.vtu"), "--rotate", 0, 0, 30,
+                             "--sub-steps", 300)
+        self.assertEqual(code, 0, err)
+        self.assertIn("sub-steps 300,", out)
+
+    # Cells the metric does not cover: "no cell evaluated", not "minimum 0"; NaN in the file.
+    def test_no_cell_evaluated(self):
+        polygons = self.path("quadratic.vtu")
+        meshes.as_quadratic_triangles(self.circle, polygons)
+        output = self.path("polygons_out.vtu")
+        code, out, err = run(polygons, output, "--rotate", 0, 0, 30)
+        self.assertEqual(code, 0, err)
+        self.assertIn("no cell evaluated", out)
+        self.assertNotIn("minimum 0", out)
+        field = meshes.read(output).GetFieldData()
+        self.assertTrue(math.isnan(field.GetArray("SizeSkewMinimum").GetTuple1(0)))
+
+    # A displacement that contradicts the marker is reported.
+    def test_contradicting_displacement_is_reported(self):
+        code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, 10)
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("have a non-zero displacement", err)
+        contradicting = self.path("contradicting.vtu")
+        meshes.with_displacement(self.circle, contradicting,
+                                 lambda d, m: d + [0.01, 0.0, 0.0] * (m == 1)[:, None])
+        code, out, err = run(contradicting, self.path("o.vtu"), "--rotate", 0, 0, 10)
+        self.assertEqual(code, 0, err)
+        self.assertIn("nodes not marked as moving have a non-zero displacement", err)
+
+    # 3. Out of memory at every stage (reading, deforming, writing): exit 1 with a message, never
+    #    a signal; the limit raised step by step until the run succeeds.
+    def test_out_of_memory_never_crashes(self):
+        mesh = self.path("memory_in.vtu")
+        points, cells = meshes.cube_in_box(50, mesh)
+        output = self.path("memory_out.vtu")
+        failures = set()
+        limit = 40 << 20
+        while True:
+            if os.path.exists(output):
+                os.remove(output)
+            code, out, err = run(mesh, output, "--rotate", 10, 20, 30, "--center", 0.5, 0.5, 0.5,
+                                 limit=limit)
+            if code == 127 and "error while loading shared libraries" in err:
+                limit += 6 << 20  # too low for the program's libraries: not a run yet
+                continue
+            self.assertIn(code, (0, 1), "limit %d MiB: %s" % (limit >> 20, err))
+            self.assertEqual(leftovers(self.work), [])
+            if code == 0:
+                self.assertEqual(meshes.read(output).GetNumberOfPoints(), points)
+                break
+            self.assertFalse(os.path.exists(output))
+            kinds = [k for k in ("Unable to allocate", "needs about", "Out of memory",
+                                 "memory runs out", "Out of resources") if k in err]
+            self.assertTrue(kinds, "limit %d MiB: %s" % (limit >> 20, err))
+            failures.update(kinds)
+            limit += 4 << 20
+            self.assertLess(limit, 2 << 30, "never succeeded")
+        print("out-of-memory messages seen:", sorted(failures))
+        self.assertGreaterEqual(len(failures), 2)
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--deform", required=True)
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--work", required=True)
+    ARGS, rest = parser.parse_known_args()
+    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
