@@ -107,6 +107,7 @@ std::string Usage()
     "  --threads N             number of threads, 0 = all (default 0)\n"
     "  --no-quality            skip the SizeSkew quality metric\n"
     "  --fail-on-inverted      exit with code 3, writing nothing, if a cell is inverted\n"
+    "  --progress              show the progress from the start (default: after 2 s)\n"
     "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
     "                          (on for OpenFOAM cases)\n"
     "exit codes: 0 written; 1 could not read, deform or write; 2 bad option; 3 inverted cells\n"
@@ -222,6 +223,10 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     else if (option == "--non-orthogonality")
     {
       filter->ComputeNonOrthogonalityOn();
+    }
+    else if (option == "--progress")
+    {
+      options.ProgressDelay = 0.0;
     }
     else if (option == "--fail-on-inverted")
     {

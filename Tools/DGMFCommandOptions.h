@@ -34,6 +34,7 @@ struct CommandOptions
   bool DecomposePolyhedra = false;
   bool ByName = false;         ///< boundaries chosen by name (--moving, --static, --slip)
   bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
+  double ProgressDelay = 2.0;  ///< seconds before the progress is shown (--progress: 0)
 };
 
 /// The usage text.

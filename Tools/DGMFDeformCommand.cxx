@@ -147,7 +147,7 @@ int main(int argc, char* argv[])
   // The deformation: the filter's messages reach stderr through the message window.
   dgmf_cli::ResetErrorCount();
   dgmf_cli::SetStage("deforming " + input);
-  dgmf_cli::ShowProgress(filter, "deforming");
+  dgmf_cli::ShowProgress(filter, "deforming", options.ProgressDelay);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   filter->Update();

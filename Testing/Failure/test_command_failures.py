@@ -167,6 +167,19 @@ class CommandFailures(unittest.TestCase):
         code, out, err = run(self.circle, self.path("o.exe"), "--rotate", 0, 0, 30)
         self.assertEqual(code, 2, err)
 
+    # Progress through the sub-steps on stderr (shown after 2 s, or from the start with --progress);
+    # none on a short run.
+    def test_progress_is_shown(self):
+        code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, 90,
+                             "--sub-steps", 20, "--repair", 0.2, "--progress")
+        self.assertEqual(code, 0, err)
+        shown = [int(line.split()[-1].rstrip("%")) for line in err.splitlines()
+                 if line.startswith("dgmf-deform: deforming ")]
+        self.assertGreaterEqual(len(shown), 4, err)
+        self.assertEqual(shown, sorted(set(shown)), err)
+        code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, 30)
+        self.assertNotIn("deforming", err)
+
     # Fixed sub-steps above 256 (once "too many steps").
     def test_many_fixed_sub_steps(self):
         code, out, err = run(self.circle, self.path("steps.vtu"), "--rotate", 0, 0, 30,
