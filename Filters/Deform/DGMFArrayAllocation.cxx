@@ -50,6 +50,13 @@ bool CanStartThreads(int threads)
   {
     return true;
   }
+  // Thread stacks are mapped lazily: without an address-space limit, starting threads does not
+  // fail for want of memory, and the probe (two system calls per loop) is skipped.
+  rlimit space{};
+  if (getrlimit(RLIMIT_AS, &space) != 0 || space.rlim_cur == RLIM_INFINITY)
+  {
+    return true;
+  }
   rlimit stack{};
   const std::size_t stackBytes =
     getrlimit(RLIMIT_STACK, &stack) == 0 && stack.rlim_cur != RLIM_INFINITY
