@@ -88,6 +88,35 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
   }
 }
 
+/**
+ * The facets sorted by their point ids (lexicographically). vtkGeometryFilter's threads emit the
+ * faces in an order that changes from run to run: sorted, the facets (and the sums over them, such
+ * as IDW's boundary areas) are the same, bit for bit, with any number of threads. Facets with the
+ * same ids are interchangeable.
+ */
+BoundaryFacets SortedFacets(const BoundaryFacets& facets)
+{
+  std::vector<std::size_t> order(facets.Size());
+  for (std::size_t f = 0; f < order.size(); ++f)
+  {
+    order[f] = f;
+  }
+  const auto begin = [&](std::size_t f) { return facets.Ids.begin() + facets.Offsets[f]; };
+  std::sort(order.begin(), order.end(),
+    [&](std::size_t a, std::size_t b)
+    { return std::lexicographical_compare(begin(a), begin(a + 1), begin(b), begin(b + 1)); });
+  BoundaryFacets sorted;
+  sorted.Canonical = facets.Canonical;
+  sorted.Ids.reserve(facets.Ids.size());
+  sorted.Offsets.reserve(facets.Offsets.size());
+  for (std::size_t f : order)
+  {
+    sorted.Ids.insert(sorted.Ids.end(), begin(f), begin(f + 1));
+    sorted.Offsets.push_back(static_cast<vtkIdType>(sorted.Ids.size()));
+  }
+  return sorted;
+}
+
 struct PairHash
 {
   std::size_t operator()(const std::pair<vtkIdType, vtkIdType>& p) const
@@ -216,6 +245,7 @@ BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension)
   else
   {
     FindBoundaryFaces(work, facets);
+    facets = SortedFacets(facets);
   }
   return facets;
 }

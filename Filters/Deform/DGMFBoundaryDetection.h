@@ -31,7 +31,8 @@ struct BoundaryFacets
 /**
  * The boundary of a mesh.
  * - 3D meshes: the faces used by one 3D cell, from vtkGeometryFilter, plus any 2D cell of the
- *   grid (typically boundary patches).
+ *   grid (typically boundary patches), sorted by their point ids: the same facets in the same
+ *   order whatever the number of vtkSMPTools threads (the geometry filter's order is not).
  * - 2D meshes: the edges used by exactly one 2D cell (end nodes first, then mid-edge nodes of
  *   higher-order cells).
  * Coincident nodes with different ids are the same node here (a partition interface or a ghost
