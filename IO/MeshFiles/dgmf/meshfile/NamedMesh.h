@@ -1,0 +1,97 @@
+/**
+ * @file NamedMesh.h
+ * @brief A solver's mesh as the mesh-file readers give it: the nodes in the file's order, the
+ * cells of the mesh's dimension, and the named boundaries (gmsh physical groups, SU2 markers).
+ * VTK-free: cell types are VTK's numbers (as SU2 files use them), so the VTK reader only copies.
+ */
+#ifndef dgmf_meshfile_NamedMesh_h
+#define dgmf_meshfile_NamedMesh_h
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dgmf
+{
+namespace meshfile
+{
+
+/// VTK's numbers of the linear cell types the readers give (vtkCellType.h).
+enum CellType : std::uint8_t
+{
+  Vertex = 1,
+  Line = 3,
+  Triangle = 5,
+  Quad = 9,
+  Tetra = 10,
+  Hexahedron = 12,
+  Wedge = 13,
+  Pyramid = 14
+};
+
+/// Cells: VTK type, and the 0-based node indices of each (Offsets has one entry more than Types).
+struct Cells
+{
+  std::vector<std::uint8_t> Types;
+  std::vector<std::int64_t> Offsets{ 0 };
+  std::vector<std::int64_t> Connectivity;
+
+  std::size_t Size() const { return this->Types.size(); }
+  void Add(std::uint8_t type, const std::int64_t* nodes, std::size_t count)
+  {
+    this->Types.push_back(type);
+    this->Connectivity.insert(this->Connectivity.end(), nodes, nodes + count);
+    this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
+  }
+};
+
+/// A named boundary: its faces (edges in 2D), on the mesh's nodes.
+struct NamedBoundary
+{
+  std::string Name;
+  Cells Faces;
+};
+
+/// A mesh read from a file.
+struct NamedMesh
+{
+  int Dimension = 3;          ///< 2 (all nodes at z = 0 in the file) or 3
+  std::vector<double> Points; ///< 3 coordinates per node, in the file's order (2D: z = 0)
+  /// The file's own id of each node (gmsh node tags; SU2: the index), same order as Points.
+  std::vector<std::int64_t> NodeIds;
+  Cells Volume; ///< the cells of the mesh's dimension (all of them, named or not)
+  std::vector<NamedBoundary> Boundaries; ///< in the file's order
+
+  std::size_t NumberOfNodes() const { return this->Points.size() / 3; }
+};
+
+/**
+ * A file that cannot be read or written: the message names the file and, where it can, the line
+ * or section.
+ */
+class FileError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/**
+ * Checks what every reader promises: Points a multiple of 3 and finite, NodeIds one per node,
+ * Offsets consistent with Connectivity, every node index in range, node counts matching the cell
+ * types, Volume of the mesh's dimension, named faces one dimension lower, names non-empty and
+ * unique. Throws FileError("<file>: ...") on the first violation.
+ */
+void ValidateNamedMesh(const NamedMesh& mesh, const std::string& file);
+
+/// The number of nodes of a cell of VTK type `type` (0 for a type the readers do not give).
+int NodesOfCellType(std::uint8_t type);
+
+/// The dimension of a cell of VTK type `type` (-1 for a type the readers do not give).
+int DimensionOfCellType(std::uint8_t type);
+
+} // namespace meshfile
+} // namespace dgmf
+
+#endif
