@@ -1,5 +1,7 @@
 #include "DGMFCommandData.h"
 
+#include "vtkDGMFMeshFileReader.h"
+#include "vtkDGMFMeshFileWriter.h"
 #include "vtkDGMFOpenFOAMWriter.h"
 
 #include "dgmf/openfoam/CaseDirectory.h"
@@ -7,9 +9,16 @@
 #include "DGMFCommandMessages.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkOpenFOAMReader.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridReader.h"
 #include "vtkUnstructuredGridWriter.h"
@@ -71,6 +80,86 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
   return reader->GetOutput();
 }
 
+bool IsSolverMeshFile(const std::string& path)
+{
+  return vtkDGMFMeshFileReader::CanReadFileName(path.c_str());
+}
+
+vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path)
+{
+  SetStage("reading " + path);
+  auto reader = vtkSmartPointer<vtkDGMFMeshFileReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (GetErrorCount() > 0 ||
+    reader->GetOutputDataObject(0)->GetNumberOfElements(vtkDataObject::POINT) == 0)
+  {
+    std::cerr << "dgmf-deform: error: could not read a mesh from " << path << "\n";
+    return nullptr;
+  }
+  return reader;
+}
+
+std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks)
+{
+  std::vector<std::string> names;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(blocks);
+  if (!composite)
+  {
+    return names;
+  }
+  auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    if (metaData && metaData->Has(vtkCompositeDataSet::NAME()) &&
+      std::string(metaData->Get(vtkCompositeDataSet::NAME())) != "internalMesh")
+    {
+      names.emplace_back(metaData->Get(vtkCompositeDataSet::NAME()));
+    }
+  }
+  return names;
+}
+
+bool WriteSolverMeshFile(
+  vtkAlgorithm* deformer, const std::string& source, const std::string& target)
+{
+  SetStage("writing " + target);
+  const int errorsBefore = GetErrorCount();
+  vtkNew<vtkDGMFMeshFileWriter> writer;
+  writer->SetInputConnection(deformer->GetOutputPort());
+  writer->SetSourceFileName(source.c_str());
+  writer->SetFileName(target.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0 && GetErrorCount() == errorsBefore;
+}
+
+vtkUnstructuredGrid* VolumeOf(vtkDataObject* data)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    return grid;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return nullptr;
+  }
+  auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    if (metaData && metaData->Has(vtkCompositeDataSet::NAME()) &&
+      std::string(metaData->Get(vtkCompositeDataSet::NAME())) == "internalMesh")
+    {
+      return vtkUnstructuredGrid::SafeDownCast(iterator->GetCurrentDataObject());
+    }
+  }
+  return nullptr;
+}
+
 bool IsMeshFileName(const std::string& path)
 {
   return EndsWith(path, ".vtu") || EndsWith(path, ".vtk");
@@ -94,6 +183,23 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path)
   SetStage("writing " + path);
   const int errorsBefore = GetErrorCount();
   unsigned long errorCode = 0;
+  // String arrays (the filter's Method) are left out: meshio 7 cannot read them ("Illegal data
+  // type 'String'"), nor can every VTK reader.
+  vtkNew<vtkUnstructuredGrid> written;
+  written->ShallowCopy(mesh);
+  for (vtkFieldData* arrays : { static_cast<vtkFieldData*>(written->GetFieldData()),
+         static_cast<vtkFieldData*>(written->GetPointData()),
+         static_cast<vtkFieldData*>(written->GetCellData()) })
+  {
+    for (int k = arrays->GetNumberOfArrays() - 1; k >= 0; --k)
+    {
+      if (vtkStringArray::SafeDownCast(arrays->GetAbstractArray(k)))
+      {
+        arrays->RemoveArray(k);
+      }
+    }
+  }
+  mesh = written;
   if (EndsWith(path, ".vtk"))
   {
     vtkNew<vtkUnstructuredGridWriter> legacy;

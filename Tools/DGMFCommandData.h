@@ -1,7 +1,8 @@
 /**
  * @file DGMFCommandData.h
- * @brief What dgmf-deform reads and writes: a mesh file (.vtu, .vtk) or an OpenFOAM case, read
- * through VTK's readers; the deformed mesh written as .vtu or back into a case.
+ * @brief What dgmf-deform reads and writes: a VTK mesh file (.vtu, .vtk), a solver's mesh file
+ * with boundary names (gmsh .msh, SU2 .su2) or an OpenFOAM case; the deformed mesh written as
+ * .vtu or .vtk, back into the solver's file format, or back into a case.
  */
 #ifndef DGMFCommandData_h
 #define DGMFCommandData_h
@@ -9,6 +10,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkAlgorithm;
 class vtkDataObject;
@@ -19,6 +21,32 @@ namespace dgmf_cli
 /// True when `path` names an OpenFOAM case: its directory, its system/controlDict or a .foam file.
 bool IsOpenFOAMCase(const std::string& path);
 
+/// True for the solver mesh files with boundary names: gmsh .msh and SU2 .su2.
+bool IsSolverMeshFile(const std::string& path);
+
+/**
+ * A reader (vtkDGMFMeshFileReader) of the .msh or .su2 file `path`, updated; null when the file
+ * cannot be read (the error is printed).
+ */
+vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path);
+
+/// The names of the boundary blocks of a reader's multiblock (the blocks under `boundary`, or
+/// the OpenFOAM reader's patches).
+std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks);
+
+/**
+ * Writes the deformed output of `deformer` into a copy of the solver's mesh file `source` at
+ * `target` (same format: vtkDGMFMeshFileWriter); false when it cannot (the error is printed).
+ */
+bool WriteSolverMeshFile(
+  vtkAlgorithm* deformer, const std::string& source, const std::string& target);
+
+/**
+ * The mesh with every node of `data`: `data` itself for an unstructured grid, the block named
+ * internalMesh of a reader's multiblock; null if none.
+ */
+vtkUnstructuredGrid* VolumeOf(vtkDataObject* data);
+
 /// Reads a .vtu (XML) or .vtk (legacy) unstructured grid; null or empty when it cannot.
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path);
 
@@ -27,8 +55,9 @@ bool IsMeshFileName(const std::string& path);
 
 /**
  * Writes `mesh` to `path`: an XML unstructured grid (inline binary) for .vtu, a legacy VTK file
- * (binary) for .vtk. The file is written beside `path` under a temporary name and renamed over
- * it, so `path` never holds half a file. False, with the reason printed, when it cannot.
+ * (binary) for .vtk. String arrays are left out (meshio 7 and older VTK readers cannot read
+ * them). The file is written beside `path` under a temporary name and renamed over it, so `path`
+ * never holds half a file. False, with the reason printed, when it cannot.
  */
 bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path);
 

@@ -149,6 +149,10 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
         option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
           : option == "--static" ? filter->AddStaticBoundary(name.c_str())
                                  : filter->AddSlipBoundary(name.c_str());
+        (option == "--moving"      ? options.Moving
+            : option == "--static" ? options.Static
+                                   : options.Slip)
+          .push_back(name);
         options.ByName = true;
       }
     }

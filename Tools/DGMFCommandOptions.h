@@ -7,6 +7,7 @@
 #define DGMFCommandOptions_h
 
 #include <string>
+#include <vector>
 
 class vtkDGMFDeformFilter;
 
@@ -32,7 +33,8 @@ struct CommandOptions
   bool DisplacementGiven = false;
   std::string Time = "constant"; ///< OpenFOAM: the time directory written
   bool DecomposePolyhedra = false;
-  bool ByName = false;         ///< boundaries chosen by name (--moving, --static, --slip)
+  bool ByName = false; ///< boundaries chosen by name (--moving, --static, --slip)
+  std::vector<std::string> Moving, Static, Slip; ///< the names given
   bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
   double ProgressDelay = 2.0;  ///< seconds before the progress is shown (--progress: 0)
 };

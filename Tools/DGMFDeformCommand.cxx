@@ -29,9 +29,11 @@
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -82,6 +84,83 @@ void PrintSummary(vtkDGMFDeformFilter* filter, double seconds, const std::string
   }
   std::cout << "; wrote " << written << std::endl;
 }
+/// What the input is.
+enum class InputKind
+{
+  VTKFile,      ///< .vtu or .vtk, boundaries by marker array
+  SolverFile,   ///< .msh or .su2, boundaries by name
+  OpenFOAMCase, ///< a case directory, its controlDict or a .foam file, patches by name
+};
+
+InputKind KindOf(const std::string& input)
+{
+  return dgmf_cli::IsOpenFOAMCase(input) ? InputKind::OpenFOAMCase
+    : dgmf_cli::IsSolverMeshFile(input)  ? InputKind::SolverFile
+                                         : InputKind::VTKFile;
+}
+
+std::string ExtensionOf(const std::string& path)
+{
+  const std::size_t dot = path.rfind('.');
+  return dot == std::string::npos || path.find('/', dot) != std::string::npos ? ""
+                                                                              : path.substr(dot);
+}
+
+/// Why `output` cannot be written from `input` ("" when it can): .vtu and .vtk always; the
+/// solver's file back in its own format; an OpenFOAM case back into a case.
+std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output)
+{
+  if (dgmf_cli::IsMeshFileName(output) || kind == InputKind::OpenFOAMCase)
+  {
+    return "";
+  }
+  if (kind == InputKind::SolverFile && ExtensionOf(output) == ExtensionOf(input))
+  {
+    return "";
+  }
+  return "the output must end in .vtu (XML) or .vtk (legacy VTK)" +
+    std::string(
+      kind == InputKind::SolverFile ? ", or " + ExtensionOf(input) + " as the input" : "") +
+    ": " + output;
+}
+
+/// "a, b, c", or "(none)".
+std::string Listed(const std::vector<std::string>& names)
+{
+  std::string text;
+  for (const std::string& name : names)
+  {
+    text += (text.empty() ? "" : ", ") + name;
+  }
+  return text.empty() ? "(none)" : text;
+}
+
+/**
+ * Says which boundaries the run uses: the names given, and every other boundary of the file,
+ * which stays static. The file's names win over any detection of the mesh boundary.
+ */
+void PrintBoundaries(
+  const dgmf_cli::CommandOptions& options, const std::vector<std::string>& fileNames)
+{
+  const std::vector<std::string>&moving = options.Moving, &fixed = options.Static,
+        &slip = options.Slip;
+  std::vector<std::string> chosen, others;
+  for (const auto* list : { &moving, &fixed, &slip })
+  {
+    chosen.insert(chosen.end(), list->begin(), list->end());
+  }
+  for (const std::string& name : fileNames)
+  {
+    if (std::find(chosen.begin(), chosen.end(), name) == chosen.end() &&
+      std::find(chosen.begin(), chosen.end(), "patch/" + name) == chosen.end())
+    {
+      others.push_back(name);
+    }
+  }
+  std::cout << "dgmf-deform: boundaries from the file's names: moving " << Listed(moving)
+            << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
+            << Listed(others) << ")" << std::endl;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -96,34 +175,19 @@ int main(int argc, char* argv[])
     return parsed;
   }
 
-  // The input: a mesh file, or an OpenFOAM case read with its patches (selected by name).
+  // The input: a VTK mesh file (boundaries by marker), or a solver's mesh file or an OpenFOAM
+  // case (boundaries by name).
   const std::string& input = options.Input;
-  const bool openFOAM = dgmf_cli::IsOpenFOAMCase(input);
-  if (!openFOAM && !dgmf_cli::IsMeshFileName(options.Output))
+  const InputKind kind = KindOf(input);
+  const std::string outputProblem = OutputProblem(kind, input, options.Output);
+  if (!outputProblem.empty())
   {
-    std::cerr << "dgmf-deform: the output must end in .vtu (XML) or .vtk (legacy VTK): "
-              << options.Output << "\n";
+    std::cerr << "dgmf-deform: " << outputProblem << "\n";
     return ExitUsage;
   }
-  vtkSmartPointer<vtkAlgorithm> caseReader;
+  vtkSmartPointer<vtkAlgorithm> reader;
   vtkSmartPointer<vtkUnstructuredGrid> mesh;
-  if (openFOAM)
-  {
-    caseReader = dgmf_cli::ReadOpenFOAMCase(input, options.DecomposePolyhedra);
-    if (!caseReader)
-    {
-      return ExitFailure;
-    }
-    if (!options.ByName && !options.MarkerGiven)
-    {
-      std::cerr << "dgmf-deform: name the moving patches with --moving (the case has: "
-                << dgmf_cli::ListPatchNames(input) << ")\n";
-      return ExitUsage;
-    }
-    filter->SetInputConnection(caseReader->GetOutputPort());
-    filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
-  }
-  else
+  if (kind == InputKind::VTKFile)
   {
     mesh = dgmf_cli::ReadMeshFile(input);
     if (dgmf_cli::GetErrorCount() > 0 || !mesh || mesh->GetNumberOfPoints() == 0)
@@ -132,6 +196,34 @@ int main(int argc, char* argv[])
       return ExitFailure;
     }
     filter->SetInputData(mesh);
+  }
+  else
+  {
+    reader = kind == InputKind::OpenFOAMCase
+      ? dgmf_cli::ReadOpenFOAMCase(input, options.DecomposePolyhedra)
+      : dgmf_cli::ReadSolverMeshFile(input);
+    if (!reader)
+    {
+      return ExitFailure;
+    }
+    const std::vector<std::string> names = kind == InputKind::OpenFOAMCase
+      ? std::vector<std::string>{ dgmf_cli::ListPatchNames(input) }
+      : dgmf_cli::BoundaryNamesOf(reader->GetOutputDataObject(0));
+    if (!options.ByName && !options.MarkerGiven)
+    {
+      std::cerr << "dgmf-deform: name the moving boundaries with --moving (the file has: "
+                << Listed(names) << ")\n";
+      return ExitUsage;
+    }
+    filter->SetInputConnection(reader->GetOutputPort());
+    if (kind == InputKind::OpenFOAMCase)
+    {
+      filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
+    }
+    else if (options.ByName)
+    {
+      PrintBoundaries(options, names);
+    }
   }
   // Defaults: use the conventional array names when the input has them.
   if (options.MarkerGiven || (mesh && mesh->GetPointData()->GetArray(options.Marker.c_str())))
@@ -155,7 +247,7 @@ int main(int argc, char* argv[])
   vtkDataObject* deformed = filter->GetOutputDataObject(0);
   if (dgmf_cli::GetErrorCount() > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
   {
-    if (openFOAM && options.ByName)
+    if (kind == InputKind::OpenFOAMCase && options.ByName)
     {
       std::cerr << "dgmf-deform: the case's patches: " << dgmf_cli::ListPatchNames(input) << "\n";
     }
@@ -171,7 +263,26 @@ int main(int argc, char* argv[])
   }
 
   std::string written = options.Output;
-  if (openFOAM)
+  if (dgmf_cli::IsMeshFileName(options.Output))
+  {
+    vtkUnstructuredGrid* volume = dgmf_cli::VolumeOf(deformed);
+    if (!volume || !dgmf_cli::WriteMeshFile(volume, options.Output))
+    {
+      std::cerr << "dgmf-deform: error: could not write " << options.Output
+                << " (any file already there is unchanged)\n";
+      return ExitFailure;
+    }
+  }
+  else if (kind == InputKind::SolverFile)
+  {
+    if (!dgmf_cli::WriteSolverMeshFile(filter, input, options.Output))
+    {
+      std::cerr << "dgmf-deform: error: could not write " << options.Output
+                << " (any file already there is unchanged)\n";
+      return ExitFailure;
+    }
+  }
+  else
   {
     dgmf_cli::SetStage("writing into " + options.Output);
     written = dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time);
@@ -180,12 +291,6 @@ int main(int argc, char* argv[])
       std::cerr << "dgmf-deform: error: could not write the points into " << options.Output << "\n";
       return ExitFailure;
     }
-  }
-  else if (!dgmf_cli::WriteMeshFile(filter->GetOutput(), options.Output))
-  {
-    std::cerr << "dgmf-deform: error: could not write " << options.Output
-              << " (any file already there is unchanged)\n";
-    return ExitFailure;
   }
   PrintSummary(filter, timer->GetElapsedTime(), written);
   return ExitSuccess;

@@ -54,8 +54,8 @@ TEST(NamedMesh, EachViolationIsAnErrorNamingTheFile)
 {
   mf::NamedMesh outOfRange = Square();
   outOfRange.Volume.Connectivity[4] = 4;
-  EXPECT_NE(ErrorOf(outOfRange).find("square.msh: the volume cells: node index 4"),
-    std::string::npos);
+  EXPECT_NE(
+    ErrorOf(outOfRange).find("square.msh: the volume cells: node index 4"), std::string::npos);
 
   mf::NamedMesh negative = Square();
   negative.Boundaries[0].Faces.Connectivity[0] = -1;

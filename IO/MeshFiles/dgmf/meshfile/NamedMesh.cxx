@@ -111,8 +111,8 @@ void ValidateNamedMesh(const NamedMesh& mesh, const std::string& file)
   {
     if (boundary.Name.empty() || !names.insert(boundary.Name).second)
     {
-      throw FileError(file + ": boundary names must be non-empty and unique ('" + boundary.Name +
-        "')");
+      throw FileError(
+        file + ": boundary names must be non-empty and unique ('" + boundary.Name + "')");
     }
     CheckCells(boundary.Faces, mesh.NumberOfNodes(), mesh.Dimension - 1,
       file + ": boundary '" + boundary.Name + "'");

@@ -1,5 +1,7 @@
 #include "vtkDGMFOpenFOAMWriter.h"
 
+#include "DGMFWriterInputs.h"
+
 #include "dgmf/openfoam/CaseDirectory.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -23,80 +25,8 @@
 
 vtkStandardNewMacro(vtkDGMFOpenFOAMWriter);
 
-namespace
-{
-/// The block named internalMesh of a composite dataset, else its first unstructured grid; or the
-/// point set itself.
-vtkPointSet* InternalMeshOf(vtkDataObject* data)
-{
-  if (auto* points = vtkPointSet::SafeDownCast(data))
-  {
-    return points;
-  }
-  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
-  if (!composite)
-  {
-    return nullptr;
-  }
-  vtkPointSet* first = nullptr;
-  vtkSmartPointer<vtkCompositeDataIterator> it;
-  it.TakeReference(composite->NewIterator());
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-  {
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(it->GetCurrentDataObject());
-    if (!grid)
-    {
-      continue;
-    }
-    vtkInformation* meta = it->HasCurrentMetaData() ? it->GetCurrentMetaData() : nullptr;
-    if (meta && meta->Has(vtkCompositeDataSet::NAME()) &&
-      std::string(meta->Get(vtkCompositeDataSet::NAME())) == "internalMesh")
-    {
-      return grid;
-    }
-    first = first ? first : grid;
-  }
-  return first;
-}
-
-/// The first OpenFOAM reader upstream of `algorithm`'s inputs (breadth first), or null.
-vtkOpenFOAMReader* FindUpstreamReader(vtkAlgorithm* algorithm)
-{
-  std::vector<vtkAlgorithm*> queue{ algorithm };
-  std::set<vtkAlgorithm*> seen{ algorithm };
-  for (std::size_t k = 0; k < queue.size(); ++k)
-  {
-    if (auto* reader = vtkOpenFOAMReader::SafeDownCast(queue[k]))
-    {
-      return reader;
-    }
-    for (int port = 0; port < queue[k]->GetNumberOfInputPorts(); ++port)
-    {
-      for (int c = 0; c < queue[k]->GetNumberOfInputConnections(port); ++c)
-      {
-        vtkAlgorithm* upstream = queue[k]->GetInputAlgorithm(port, c);
-        if (upstream && seen.insert(upstream).second)
-        {
-          queue.push_back(upstream);
-        }
-      }
-    }
-  }
-  return nullptr;
-}
-
-/// The points of `mesh` as doubles.
-std::vector<double> PointsOf(vtkPointSet* mesh)
-{
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    mesh->GetPoint(i, xyz.data() + 3 * i);
-  }
-  return xyz;
-}
-} // namespace
+using dgmf_vtk::InternalMeshOf;
+using dgmf_vtk::PointsOf;
 
 vtkDGMFOpenFOAMWriter::vtkDGMFOpenFOAMWriter()
 {
@@ -152,7 +82,7 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     fail("The input has no unstructured grid (the OpenFOAM reader's internalMesh).");
     return;
   }
-  vtkOpenFOAMReader* reader = FindUpstreamReader(this);
+  vtkOpenFOAMReader* reader = dgmf_vtk::FindUpstream<vtkOpenFOAMReader>(this);
   vtkDataObject* referenceData = this->GetNumberOfInputConnections(1) > 0
     ? this->GetInput(1)
     : (reader ? reader->GetOutputDataObject(0) : nullptr);
