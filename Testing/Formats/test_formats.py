@@ -1,0 +1,290 @@
+"""A solver's mesh file in, picked by boundary name, deformed, and the same format back out
+(issue 16), through dgmf-deform and through ParaView (pvpython).
+
+gmsh makes the meshes in the test: a unit box around a sphere of radius 0.2 (physical groups
+"wing" on the sphere, "farfield" on the box, "fluid" the volume) and a 2D square around a circle.
+gmsh writes them as .msh 4.1 ASCII, 4.1 binary, 2.2 ASCII, 2.2 binary, and as .su2 (gmsh's SU2
+export names the markers after the physical groups). Every round trip asserts: the same node count
+and order, the names present, the static boundary unmoved to the bit, the moving boundary at its
+rigid position to 1e-12, and the quality summary of the .vtu route (the same mesh with a
+BoundaryMarker array instead of names).
+
+  pvpython test_formats.py --deform DGMF_DEFORM --plugin PLUGIN --work WORK_DIR [-k NAME]
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import unittest
+
+import gmsh
+import numpy as np
+
+ARGS = None
+CENTER = (0.5, 0.5, 0.0)
+ANGLES_3D = (10.0, 20.0, 30.0)
+ANGLE_2D = 25.0
+
+
+def make_meshes(work):
+    """The test meshes in every format; returns {label: path}."""
+    files = {}
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    for dimension in (3, 2):
+        gmsh.model.add("box%d" % dimension)
+        occ = gmsh.model.occ
+        if dimension == 3:
+            outer, hole = occ.addBox(0, 0, 0, 1, 1, 1), occ.addSphere(0.5, 0.5, 0.5, 0.2)
+        else:
+            outer, hole = occ.addRectangle(0, 0, 0, 1, 1), occ.addDisk(0.5, 0.5, 0, 0.2, 0.2)
+        cut, _ = occ.cut([(dimension, outer)], [(dimension, hole)])
+        occ.synchronize()
+        boundary = [t for _, t in gmsh.model.getBoundary(cut, oriented=False)]
+        wing = [t for t in boundary
+                if max(abs(c - 0.5) for c in occ.getCenterOfMass(dimension - 1, t)[:dimension])
+                < 1e-6]
+        farfield = [t for t in boundary if t not in wing]
+        for tag, (dim, entities, name) in enumerate(
+                [(dimension, [cut[0][1]], "fluid"), (dimension - 1, wing, "wing"),
+                 (dimension - 1, farfield, "farfield")], start=1):
+            gmsh.model.addPhysicalGroup(dim, entities, tag)
+            gmsh.model.setPhysicalName(dim, tag, name)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", 0.12 if dimension == 3 else 0.05)
+        gmsh.model.mesh.generate(dimension)
+        for version, binary in ((4.1, 0), (4.1, 1), (2.2, 0), (2.2, 1)):
+            label = "%dd_msh%s%s" % (dimension, version, "_binary" if binary else "")
+            gmsh.option.setNumber("Mesh.MshFileVersion", version)
+            gmsh.option.setNumber("Mesh.Binary", binary)
+            files[label] = os.path.join(work, label + ".msh")
+            gmsh.write(files[label])
+        gmsh.option.setNumber("Mesh.Binary", 0)
+        files["%dd_su2" % dimension] = os.path.join(work, "%dd.su2" % dimension)
+        gmsh.write(files["%dd_su2" % dimension])
+        gmsh.model.remove()
+    gmsh.finalize()
+    return files
+
+
+def run(*arguments):
+    done = subprocess.run([ARGS.deform] + [str(a) for a in arguments], capture_output=True,
+                          text=True, timeout=600)
+    return done.returncode, done.stdout, done.stderr
+
+
+def summary(text):
+    """(mean, minimum, inverted) of dgmf-deform's summary line."""
+    match = re.search(r"SizeSkew mean ([^,]+), minimum ([^,]+), inverted cells (\d+)", text)
+    assert match, text
+    return float(match.group(1)), float(match.group(2)), int(match.group(3))
+
+
+def motion(dimension):
+    if dimension == 3:
+        return ["--rotate"] + list(ANGLES_3D) + ["--center", 0.5, 0.5, 0.5]
+    return ["--rotate", 0, 0, ANGLE_2D, "--center", 0.5, 0.5, 0]
+
+
+def rotation(dimension):
+    """The rotation matrix of the motion (x, then y, then z, as the filter composes them)."""
+    angles = ANGLES_3D if dimension == 3 else (0.0, 0.0, ANGLE_2D)
+    ax, ay, az = (math.radians(a) for a in angles)
+    rx = np.array([[1, 0, 0], [0, math.cos(ax), -math.sin(ax)], [0, math.sin(ax), math.cos(ax)]])
+    ry = np.array([[math.cos(ay), 0, math.sin(ay)], [0, 1, 0], [-math.sin(ay), 0, math.cos(ay)]])
+    rz = np.array([[math.cos(az), -math.sin(az), 0], [math.sin(az), math.cos(az), 0], [0, 0, 1]])
+    return rz @ ry @ rx
+
+
+class Formats(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        from paraview import simple
+
+        cls.simple = simple
+        simple.LoadPlugin(ARGS.plugin, remote=False, ns=globals())
+        shutil.rmtree(ARGS.work, ignore_errors=True)
+        os.makedirs(ARGS.work)
+        cls.files = make_meshes(ARGS.work)
+
+    def read(self, path):
+        """(points, FileNodeId, boundary name -> node indices) of a .msh or .su2 file, read with
+        the plugin's reader."""
+        from paraview import servermanager
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        reader = DGMFMeshFileReader(FileName=path)  # noqa: F821 (LoadPlugin)
+        data = servermanager.Fetch(reader)
+        self.simple.Delete(reader)
+        volume = data.GetBlock(0)
+        points = vtk_to_numpy(volume.GetPoints().GetData()).copy()
+        ids = vtk_to_numpy(volume.GetPointData().GetArray("FileNodeId")).copy()
+        index = {tuple(p): i for i, p in enumerate(points)}
+        names = {}
+        boundary = data.GetBlock(1)
+        for b in range(boundary.GetNumberOfBlocks()):
+            block = boundary.GetBlock(b)
+            name = boundary.GetMetaData(b).Get(data.NAME())
+            names[name] = sorted({index[tuple(p)]
+                                  for p in vtk_to_numpy(block.GetPoints().GetData())})
+        return points, ids, names
+
+    def check_deformed(self, source, deformed, dimension):
+        points, ids, names = self.read(source)
+        moved, moved_ids, moved_names = self.read(deformed)
+        self.assertEqual(len(moved), len(points))
+        np.testing.assert_array_equal(moved_ids, ids)
+        self.assertEqual(set(moved_names), {"wing", "farfield"})
+        wing, farfield = names["wing"], names["farfield"]
+        self.assertTrue(wing and farfield)
+        np.testing.assert_array_equal(moved[farfield], points[farfield])
+        center = np.array([0.5, 0.5, 0.5 if dimension == 3 else 0.0])
+        expected = (points[wing] - center) @ rotation(dimension).T + center
+        self.assertLess(np.abs(moved[wing] - expected).max(), 1e-12)
+        self.assertGreater(np.abs(moved - points).max(), 0.01)  # the mesh moved
+
+    def vtu_route(self, source, dimension):
+        """The quality summary of the same mesh through a .vtu with a BoundaryMarker array."""
+        from paraview import servermanager
+        from vtkmodules.util.numpy_support import numpy_to_vtk
+        from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+
+        points, ids, names = self.read(source)
+        reader = DGMFMeshFileReader(FileName=source)  # noqa: F821 (LoadPlugin)
+        volume = vtkUnstructuredGrid()
+        volume.DeepCopy(servermanager.Fetch(reader).GetBlock(0))
+        self.simple.Delete(reader)
+        marker = np.zeros(len(points), dtype=np.int32)
+        marker[names["farfield"]] = 1
+        marker[names["wing"]] = 2
+        array = numpy_to_vtk(marker, deep=1)
+        array.SetName("BoundaryMarker")
+        volume.GetPointData().AddArray(array)
+        path = source + ".marker.vtu"
+        writer = vtkXMLUnstructuredGridWriter()
+        writer.SetInputData(volume)
+        writer.SetFileName(path)
+        writer.SetDataModeToBinary()
+        writer.Write()
+        code, out, err = run(path, path + ".out.vtu", *motion(dimension))
+        self.assertEqual(code, 0, err)
+        return summary(out)
+
+    def test_command_round_trip_every_format(self):
+        for label, source in sorted(self.files.items()):
+            with self.subTest(file=label):
+                dimension = int(label[0])
+                extension = os.path.splitext(source)[1]
+                output = os.path.join(ARGS.work, "cli_" + label + extension)
+                code, out, err = run(source, output, "--moving", "wing", *motion(dimension))
+                self.assertEqual(code, 0, err)
+                self.assertIn("moving wing;", out)
+                self.assertIn("others (farfield)", out)
+                self.check_deformed(source, output, dimension)
+                self.assertEqual(summary(out), self.vtu_route(source, dimension))
+
+    def test_gmsh_reopens_the_written_files(self):
+        for label, source in sorted(self.files.items()):
+            if not source.endswith(".msh"):
+                continue
+            with self.subTest(file=label):
+                output = os.path.join(ARGS.work, "cli_" + label + ".msh")
+                if not os.path.exists(output):
+                    run(source, output, "--moving", "wing", *motion(int(label[0])))
+                with open(source, "rb") as a, open(output, "rb") as b:
+                    self.assertEqual(a.readline() + a.readline(), b.readline() + b.readline())
+                gmsh.initialize()
+                gmsh.option.setNumber("General.Terminal", 0)
+                groups = {}
+                for path in (source, output):
+                    gmsh.open(path)
+                    groups[path] = sorted(
+                        (d, t, gmsh.model.getPhysicalName(d, t),
+                         len(gmsh.model.mesh.getNodesForPhysicalGroup(d, t)[0]))
+                        for d, t in gmsh.model.getPhysicalGroups())
+                    gmsh.clear()
+                gmsh.finalize()
+                self.assertEqual(groups[source], groups[output])
+
+    def test_su2_keeps_every_line_but_the_points(self):
+        source = self.files["3d_su2"]
+        output = os.path.join(ARGS.work, "cli_3d_su2.su2")
+        if not os.path.exists(output):
+            run(source, output, "--moving", "wing", *motion(3))
+        with open(source) as a, open(output) as b:
+            before, after = a.read().splitlines(), b.read().splitlines()
+        self.assertEqual(len(before), len(after))
+        start = next(k for k, line in enumerate(before) if line.startswith("NPOIN"))
+        count = int(before[start].split("=")[1].split()[0])
+        outside = [k for k in range(len(before)) if not start < k <= start + count]
+        self.assertTrue(all(before[k] == after[k] for k in outside))
+
+    def test_unknown_name_lists_the_file_names(self):
+        code, out, err = run(self.files["3d_su2"], os.path.join(ARGS.work, "x.su2"),
+                             "--moving", "wnig", "--rotate", 0, 0, 10)
+        self.assertEqual(code, 1, err)
+        self.assertIn("'wnig'", err)
+        self.assertIn("wing", err)
+        self.assertIn("farfield", err)
+        code, out, err = run(self.files["3d_su2"], os.path.join(ARGS.work, "x.su2"))
+        self.assertEqual(code, 2, err)
+        self.assertIn("wing, farfield", err)
+
+    def test_other_formats_out(self):
+        source = self.files["3d_msh4.1"]
+        code, out, err = run(source, os.path.join(ARGS.work, "x.su2"), "--moving", "wing")
+        self.assertEqual(code, 2, err)
+        vtu = os.path.join(ARGS.work, "msh_to.vtu")
+        code, out, err = run(source, vtu, "--moving", "wing", *motion(3))
+        self.assertEqual(code, 0, err)
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(vtu)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfPoints(), len(self.read(source)[0]))
+
+    def test_paraview_reads_deforms_and_saves_each_format(self):
+        from paraview import servermanager
+
+        for label in ("3d_msh4.1", "3d_msh2.2_binary", "3d_su2", "2d_su2"):
+            with self.subTest(file=label):
+                source = self.files[label]
+                dimension = int(label[0])
+                extension = os.path.splitext(source)[1]
+                reader = DGMFMeshFileReader(FileName=source)  # noqa: F821 (LoadPlugin)
+                deform = DGMFDeform(Input=reader)  # noqa: F821 (LoadPlugin)
+                deform.MovingBoundaries = ["wing"]
+                deform.RotationCenter = [0.5, 0.5, 0.5 if dimension == 3 else 0.0]
+                deform.RotationAngles = list(ANGLES_3D) if dimension == 3 else [0, 0, ANGLE_2D]
+                deform.UpdatePipeline()
+                output = os.path.join(ARGS.work, "pv_" + label + extension)
+                self.simple.SaveData(output, proxy=deform)
+                self.check_deformed(source, output, dimension)
+                cli = os.path.join(ARGS.work, "cli_" + label + extension)
+                if os.path.exists(cli):
+                    np.testing.assert_array_equal(self.read(output)[0], self.read(cli)[0])
+                self.simple.Delete(deform)
+                self.simple.Delete(reader)
+
+    def test_vtu_output_reads_in_meshio(self):
+        vtu = os.path.join(ARGS.work, "meshio.vtu")
+        code, out, err = run(self.files["3d_su2"], vtu, "--moving", "wing", *motion(3))
+        self.assertEqual(code, 0, err)
+        done = subprocess.run(
+            ["/usr/bin/python3", "-c",
+             "import meshio, sys; m = meshio.read(sys.argv[1]); print(len(m.points))", vtu],
+            capture_output=True, text=True)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertEqual(int(done.stdout), len(self.read(self.files["3d_su2"])[0]))
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--deform", required=True)
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--work", required=True)
+    ARGS, rest = parser.parse_known_args()
+    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
