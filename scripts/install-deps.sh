@@ -20,7 +20,7 @@ PACKAGES=(
   # meshes, plots, headless GUI
   gmsh python3-gmsh python3-numpy python3-matplotlib xvfb xauth
   # tests: GoogleTest; OpenFOAM's tools and tutorials (the openfoam.* round-trip tests)
-  googletest libgtest-dev openfoam openfoam-examples python3-meshio
+  googletest libgtest-dev openfoam openfoam-examples python3-meshio python3-netcdf4
 )
 
 missing=()

@@ -7,6 +7,7 @@
 #include "vtkDataAssembly.h"
 #include "vtkDataAssemblyUtilities.h"
 #include "vtkNew.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -18,21 +19,27 @@ namespace dgmf_vtk
 {
 namespace
 {
-/// A selector of the hierarchy for an entry: a path as given, else any node of that name.
-std::string SelectorOf(std::string entry)
+/// The block name of an entry: OpenFOAM region names ("patch/wing") without their prefix.
+std::string NameOf(std::string entry)
 {
-  if (!entry.empty() && entry[0] == '/')
-  {
-    return entry;
-  }
-  for (const char* prefix : { "patch/", "boundary/" }) // OpenFOAM region names
+  for (const char* prefix : { "patch/", "boundary/" })
   {
     if (entry.rfind(prefix, 0) == 0)
     {
       entry = entry.substr(std::string(prefix).size());
     }
   }
-  return "//" + vtkDataAssembly::MakeValidNodeName(entry.c_str());
+  return entry;
+}
+
+/// A selector of the hierarchy for an entry: a path as given, else any node of that name.
+std::string SelectorOf(const std::string& entry)
+{
+  if (!entry.empty() && entry[0] == '/')
+  {
+    return entry;
+  }
+  return "//" + vtkDataAssembly::MakeValidNodeName(NameOf(entry).c_str());
 }
 
 /// Rank of a role: a moving body over static over slip over nothing.
@@ -72,8 +79,12 @@ std::string ListBlockNames(const CompositeMesh& mesh)
 NodeRoles AssignRoles(
   const CompositeMesh& mesh, const BoundarySelection& selection, const dgmf::ExtrudedLayers& layers)
 {
+  // The block hierarchy of a multiblock (selectors such as "/Root/boundary/wing"); a partitioned
+  // data set collection (ParaView's IOSS reader) has none that VTK 9.2 can generate: its blocks
+  // are found by their names.
   vtkNew<vtkDataAssembly> hierarchy;
-  vtkDataAssemblyUtilities::GenerateHierarchy(mesh.GetInput(), hierarchy);
+  const bool hasHierarchy = !vtkPartitionedDataSetCollection::SafeDownCast(mesh.GetInput()) &&
+    vtkDataAssemblyUtilities::GenerateHierarchy(mesh.GetInput(), hierarchy);
   const std::vector<CompositeMesh::Leaf>& leaves = mesh.GetLeaves();
   std::map<unsigned int, std::size_t> leafOfFlatIndex;
   int dimension = 0;
@@ -86,13 +97,27 @@ NodeRoles AssignRoles(
   const auto leavesOf = [&](const std::string& entry)
   {
     std::vector<std::size_t> found;
-    for (unsigned int id : vtkDataAssemblyUtilities::GetSelectedCompositeIds(
-           { SelectorOf(entry) }, hierarchy, nullptr, true))
+    if (hasHierarchy)
     {
-      const auto leaf = leafOfFlatIndex.find(id);
-      if (leaf != leafOfFlatIndex.end())
+      for (unsigned int id : vtkDataAssemblyUtilities::GetSelectedCompositeIds(
+             { SelectorOf(entry) }, hierarchy, nullptr, true))
       {
-        found.push_back(leaf->second);
+        const auto leaf = leafOfFlatIndex.find(id);
+        if (leaf != leafOfFlatIndex.end())
+        {
+          found.push_back(leaf->second);
+        }
+      }
+    }
+    else
+    {
+      const std::string name = NameOf(entry);
+      for (std::size_t l = 0; l < leaves.size(); ++l)
+      {
+        if (leaves[l].Name == name)
+        {
+          found.push_back(l);
+        }
       }
     }
     if (found.empty())

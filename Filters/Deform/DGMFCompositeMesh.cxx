@@ -16,6 +16,8 @@
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -23,6 +25,8 @@
 
 #include <array>
 #include <cstring>
+#include <map>
+#include <string>
 #include <unordered_map>
 
 namespace dgmf_vtk
@@ -60,6 +64,43 @@ CoordinateKey KeyOf(const double p[3])
   }
   return key;
 }
+/**
+ * The names of the partitions of a partitioned data set collection (ParaView's IOSS reader gives
+ * one for Exodus files): each partition is named after its partitioned data set. Empty for other
+ * composite data.
+ */
+std::map<unsigned int, std::string> PartitionNames(vtkCompositeDataSet* input)
+{
+  std::map<unsigned int, std::string> names;
+  auto* collection = vtkPartitionedDataSetCollection::SafeDownCast(input);
+  if (!collection)
+  {
+    return names;
+  }
+  vtkNew<vtkDataObjectTreeIterator> iterator;
+  iterator->SetDataSet(collection);
+  iterator->VisitOnlyLeavesOff();
+  iterator->TraverseSubTreeOn();
+  iterator->SkipEmptyNodesOn();
+  std::string current;
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkDataObject* node = iterator->GetCurrentDataObject();
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    if (vtkPartitionedDataSet::SafeDownCast(node))
+    {
+      current = metaData && metaData->Has(vtkCompositeDataSet::NAME())
+        ? metaData->Get(vtkCompositeDataSet::NAME())
+        : "";
+    }
+    else if (vtkDataSet::SafeDownCast(node) && !current.empty())
+    {
+      names[iterator->GetCurrentFlatIndex()] = current;
+    }
+  }
+  return names;
+}
 } // namespace
 
 CompositeMesh::CompositeMesh(
@@ -87,6 +128,7 @@ CompositeMesh::CompositeMesh(
   vtkNew<vtkIdList> cellPoints;
   this->Merged->Allocate(1024);
 
+  const std::map<unsigned int, std::string> partitionNames = PartitionNames(input);
   auto iterator = vtk::TakeSmartPointer(input->NewIterator());
   iterator->SkipEmptyNodesOn();
   for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
@@ -105,6 +147,11 @@ CompositeMesh::CompositeMesh(
     leaf.Name = metaData && metaData->Has(vtkCompositeDataSet::NAME())
       ? metaData->Get(vtkCompositeDataSet::NAME())
       : "";
+    const auto partition = partitionNames.find(leaf.FlatIndex);
+    if (leaf.Name.empty() && partition != partitionNames.end())
+    {
+      leaf.Name = partition->second; // a partition of a named partitioned data set (IOSS reader)
+    }
     leaf.NodeOf.resize(static_cast<std::size_t>(block->GetNumberOfPoints()));
     std::vector<vtkDataArray*> sources(arrays.size());
     for (std::size_t a = 0; a < arrays.size(); ++a)

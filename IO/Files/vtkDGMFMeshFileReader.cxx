@@ -53,9 +53,8 @@ int vtkDGMFMeshFileReader::RequestData(
   }
   try
   {
-    const dgmf::meshfile::NamedMesh mesh = EndsWith(name, ".su2")
-      ? dgmf::meshfile::ReadSU2(name)
-      : dgmf::meshfile::ReadGmsh(name);
+    const dgmf::meshfile::NamedMesh mesh =
+      EndsWith(name, ".su2") ? dgmf::meshfile::ReadSU2(name) : dgmf::meshfile::ReadGmsh(name);
     output->ShallowCopy(dgmf_vtk::ToBlocks(mesh));
     return 1;
   }

@@ -269,6 +269,66 @@ class Formats(unittest.TestCase):
                 self.simple.Delete(deform)
                 self.simple.Delete(reader)
 
+    def test_exodus_node_sets_name_the_boundaries(self):
+        """An Exodus file (written by meshio from the gmsh mesh, its physical groups as node sets)
+        read by both of ParaView's Exodus readers (a multiblock from ExodusIIReader, a partitioned
+        data set collection from IOSSReader), deformed by name."""
+        from paraview import servermanager
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        exodus = os.path.join(ARGS.work, "3d.exo")
+        script = (
+            "import sys, gmsh, meshio, numpy as np\n"
+            "gmsh.initialize(); gmsh.option.setNumber('General.Terminal', 0)\n"
+            "gmsh.open(sys.argv[1])\n"
+            "tags, xyz, _ = gmsh.model.mesh.getNodes()\n"
+            "order = np.argsort(tags); tags = tags[order]; points = xyz.reshape(-1, 3)[order]\n"
+            "index = {t: i for i, t in enumerate(tags)}\n"
+            "types, _, nodes = gmsh.model.mesh.getElements(3)\n"
+            "tets = np.array([index[t] for t in nodes[0]]).reshape(-1, 4)\n"
+            "sets = {gmsh.model.getPhysicalName(d, t): np.array(sorted(index[n] for n in\n"
+            "        gmsh.model.mesh.getNodesForPhysicalGroup(d, t)[0]))\n"
+            "        for d, t in gmsh.model.getPhysicalGroups(2)}\n"
+            "meshio.write(sys.argv[2], meshio.Mesh(points, [('tetra', tets)], point_sets=sets))\n")
+        done = subprocess.run(["/usr/bin/python3", "-c", script, self.files["3d_msh4.1"], exodus],
+                              capture_output=True, text=True)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        points, ids, names = self.read(self.files["3d_msh4.1"])
+        for reader_name in ("ExodusIIReader", "IOSSReader"):
+            with self.subTest(reader=reader_name):
+                reader = getattr(self.simple, reader_name)(FileName=[exodus])
+                if reader_name == "ExodusIIReader":
+                    reader.NodeSetArrayStatus = ["wing", "farfield"]
+                else:
+                    reader.NodeSets = ["wing", "farfield"]
+                deform = DGMFDeform(Input=reader)  # noqa: F821 (LoadPlugin)
+                deform.MovingBoundaries = ["wing"]
+                deform.RotationCenter = [0.5, 0.5, 0.5]
+                deform.RotationAngles = list(ANGLES_3D)
+                merged = self.simple.MergeBlocks(Input=deform)
+                result = servermanager.Fetch(merged)
+                moved = vtk_to_numpy(result.GetPoints().GetData())
+                # Every node of the file, at its rigid or static position (matched by position in
+                # the original mesh: the readers add the node sets' own copies of the nodes).
+                before = vtk_to_numpy(
+                    servermanager.Fetch(self.simple.MergeBlocks(Input=reader)).GetPoints().GetData())
+                position = {tuple(p): i for i, p in enumerate(points)}
+                rotate = rotation(3)
+                center = np.array([0.5, 0.5, 0.5])
+                wing, farfield = set(names["wing"]), set(names["farfield"])
+                checked = 0
+                for p, q in zip(before, moved):
+                    i = position[tuple(p)]
+                    if i in wing:
+                        self.assertLess(np.abs(q - ((p - center) @ rotate.T + center)).max(), 1e-12)
+                        checked += 1
+                    elif i in farfield:
+                        self.assertTrue(np.array_equal(p, q))
+                self.assertGreaterEqual(checked, len(wing))
+                self.simple.Delete(merged)
+                self.simple.Delete(deform)
+                self.simple.Delete(reader)
+
     def test_vtu_output_reads_in_meshio(self):
         vtu = os.path.join(ARGS.work, "meshio.vtu")
         code, out, err = run(self.files["3d_su2"], vtu, "--moving", "wing", *motion(3))
