@@ -113,8 +113,9 @@ std::string WarningText(const ExpatState& state, const WorkAroundPaths& paths)
        << program << " with the work-around:\n  " << launcher
        << " ARGUMENTS\nor\n  LD_PRELOAD=" << paths.Library << " " << program
        << " ARGUMENTS\nUnder MPI: mpiexec -np N " << paths.Launchers
-       << "/dgmf-pvbatch ARGUMENTS. Without a display: xvfb-run -a " << launcher
-       << " ARGUMENTS (the preload after xvfb-run, never before it).";
+       << "/dgmf-pvbatch ARGUMENTS. Without a display: xvfb-run -a -s \"-screen 0 "
+          "1280x1024x24 -noreset\" "
+       << launcher << " ARGUMENTS (the preload after xvfb-run, never before it).";
   return text.str();
 }
 
