@@ -1,12 +1,12 @@
 """Pictures of an OpenFOAM case before and after dgmf-deform (Documentation/openfoam.md):
 the mesh around the wing of the wingMotion 2D tutorial, read with ParaView's OpenFOAM reader.
 
-    xvfb-run -a env DGMF_PLUGIN=PLUGIN pvpython Examples/openfoam_wing_pictures.py \
-        CASE DEFORMED_CASE OUT_PREFIX
+    build/bin/dgmf-pvpython Examples/openfoam_wing_pictures.py CASE DEFORMED_CASE OUT_PREFIX
 
 writes OUT_PREFIX_before.png and OUT_PREFIX_after.png (the front plane, edges shown, cells
 coloured by the deformed case's SizeSkew computed with the Size Skew Quality filter when the
-plugin is given in DGMF_PLUGIN).
+plugin is given in DGMF_PLUGIN; dgmf-pvpython sets it). Without an X display the script runs
+itself again under xvfb-run (dgmf_display.py).
 """
 import os
 import sys
@@ -14,6 +14,9 @@ import sys
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, Hide,
                              OpenFOAMReader, Render, SaveScreenshot, Show)
 
+from dgmf_display import ensure_display
+
+ensure_display("openfoam_wing_pictures.py")
 case, deformed, prefix = sys.argv[1:4]
 
 

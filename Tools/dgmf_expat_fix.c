@@ -9,10 +9,16 @@
  * (XML_SetReparseDeferralEnabled(parser, XML_FALSE)), as later VTK releases do. With an expat that
  * has no such function it does nothing. Use it with LD_PRELOAD for pvpython, pvbatch and paraview,
  * or link it into an executable (it then comes before libexpat in the symbol lookup).
+ *
+ * The DGMF plugin looks for the marker dgmf_expat_fix_loaded in the library that serves
+ * XML_ParserCreate, to warn when ParaView runs without this work-around (Plugin/DGMFExpatCheck.h).
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <expat.h>
+
+/** Marker: this library is loaded (the plugin finds it with dlsym, see DGMFExpatCheck.h). */
+__attribute__((visibility("default"))) const int dgmf_expat_fix_loaded = 1;
 
 typedef XML_Parser (*CreateFunction)(const XML_Char*);
 typedef XML_Parser (*CreateNSFunction)(const XML_Char*, XML_Char);

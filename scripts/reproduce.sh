@@ -36,10 +36,11 @@ for file in "$PLUGIN" "$EXPAT_FIX"; do
 done
 mkdir -p "$RESULTS" "$CACHE"
 
-# Debian's ParaView renders through GLX even offscreen: give it an X server.
+# Debian's ParaView renders through GLX even offscreen: give it an X server (-noreset: a pvpython
+# connecting while Xvfb resets after its last client fails; Documentation/paraview_environment.md).
 if [ -z "${DISPLAY:-}" ]; then
   display_file="$(mktemp)"
-  Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$display_file" 2>/dev/null &
+  Xvfb -displayfd 3 -screen 0 1280x1024x24 -noreset -nolisten tcp 3>"$display_file" 2>/dev/null &
   xvfb_pid=$!
   trap 'kill "$xvfb_pid" 2>/dev/null || true; rm -f "$display_file"' EXIT
   for _ in $(seq 50); do [ -s "$display_file" ] && break; sleep 0.1; done

@@ -13,7 +13,7 @@ DISPLAY_NUMBER=:77
 export HOME="$(mktemp -d)"
 mkdir -p "$HOME/.config/ParaView"
 printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' > "$HOME/.config/ParaView/ParaView5.11.0.ini"
-Xvfb $DISPLAY_NUMBER -screen 0 1400x900x24 >/dev/null 2>&1 &
+Xvfb $DISPLAY_NUMBER -screen 0 1400x900x24 -noreset >/dev/null 2>&1 &
 XVFB=$!
 trap 'kill $XVFB 2>/dev/null || true' EXIT
 sleep 2
