@@ -18,7 +18,7 @@ PACKAGES=(
   # algorithm dependencies
   libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   # meshes, plots, headless GUI
-  gmsh python3-gmsh python3-numpy python3-matplotlib xvfb xauth
+  gmsh libgmsh-dev python3-gmsh python3-numpy python3-matplotlib xvfb xauth
   # tests: GoogleTest; OpenFOAM's tools and tutorials (the openfoam.* round-trip tests)
   googletest libgtest-dev openfoam openfoam-examples python3-meshio python3-netcdf4
 )

@@ -1,0 +1,215 @@
+#include "dgmf/meshfile/GmshSession.h"
+
+#include "dgmf/meshfile/NamedMesh.h"
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace dgmf
+{
+namespace meshfile
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+std::mutex& GmshMutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+/// Index of the first logged message not yet checked for errors (the logger is the session's).
+std::size_t& CheckedMessages()
+{
+  static std::size_t checked = 0;
+  return checked;
+}
+
+std::string Trimmed(const std::string& line)
+{
+  const std::size_t first = line.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos)
+  {
+    return std::string();
+  }
+  return line.substr(first, line.find_last_not_of(" \t\r\n") - first + 1);
+}
+} // namespace
+
+MshFormat CheckMshHeader(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw FileError(path + ": cannot be opened");
+  }
+  // Both lines are short: read at most 256 bytes each, so that a binary file without newlines is
+  // not read whole.
+  std::string first, second;
+  char c = 0;
+  while (first.size() < 256 && in.get(c) && c != '\n')
+  {
+    first += c;
+  }
+  while (second.size() < 256 && in.get(c) && c != '\n')
+  {
+    second += c;
+  }
+  if (Trimmed(first) != "$MeshFormat")
+  {
+    throw FileError(path +
+      ": not a gmsh .msh file of version 2 or 4 (the first line is not "
+      "$MeshFormat)");
+  }
+  std::istringstream line(second);
+  MshFormat format;
+  int fileType = -1, dataSize = -1;
+  std::string rest;
+  line >> format.Version >> fileType >> dataSize;
+  const bool known = std::fabs(format.Version - 2.0) < 1e-9 ||
+    std::fabs(format.Version - 2.1) < 1e-9 || std::fabs(format.Version - 2.2) < 1e-9 ||
+    std::fabs(format.Version - 4.0) < 1e-9 || std::fabs(format.Version - 4.1) < 1e-9;
+  if (!line || !known || (fileType != 0 && fileType != 1) || dataSize != 8 || (line >> rest))
+  {
+    throw FileError(path + ": unsupported $MeshFormat line '" + Trimmed(second) +
+      "' (versions 2.0-2.2 and 4.0-4.1, ASCII (0) or binary (1), 8-byte reals)");
+  }
+  format.Binary = fileType == 1;
+  return format;
+}
+
+GmshSession::GmshSession(const std::string& file)
+  : Lock(GmshMutex())
+  , File(file)
+{
+  static bool initialized = false;
+  try
+  {
+    if (!initialized)
+    {
+      // Another part of the process may have initialized gmsh already: gmsh then only warns.
+      gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+      gmsh::option::setNumber("General.Terminal", 0);
+      initialized = true;
+    }
+    this->SetOption("General.Terminal", 0);
+    this->SetOption("General.AbortOnError", 0);
+    gmsh::logger::start();
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    CheckedMessages() = log.size();
+    this->AddModel("dgmf-meshfile");
+  }
+  catch (const std::string& message)
+  {
+    this->Fail("gmsh could not be set up: " + message);
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(std::string("gmsh could not be set up: ") + e.what());
+  }
+  catch (...)
+  {
+    this->Fail("gmsh could not be set up");
+  }
+}
+
+GmshSession::~GmshSession()
+{
+  try
+  {
+    for (const std::string& model : this->Models)
+    {
+      gmsh::model::setCurrent(model);
+      gmsh::model::remove();
+    }
+    gmsh::logger::stop();
+    for (auto it = this->SavedOptions.rbegin(); it != this->SavedOptions.rend(); ++it)
+    {
+      gmsh::option::setNumber(it->first, it->second);
+    }
+  }
+  catch (...)
+  {
+  }
+  if (!this->LinkDirectory.empty())
+  {
+    std::error_code ignored;
+    fs::remove_all(this->LinkDirectory, ignored);
+  }
+}
+
+void GmshSession::SetOption(const std::string& name, double value)
+{
+  double old = 0.0;
+  gmsh::option::getNumber(name, old);
+  this->SavedOptions.emplace_back(name, old);
+  gmsh::option::setNumber(name, value);
+}
+
+void GmshSession::AddModel(const std::string& name)
+{
+  gmsh::model::add(name);
+  this->Models.push_back(name);
+}
+
+void GmshSession::Fail(const std::string& what) const
+{
+  throw FileError(this->File + ": " + what);
+}
+
+void GmshSession::ThrowOnGmshError(const std::string& what)
+{
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  std::string errors;
+  for (std::size_t k = CheckedMessages(); k < log.size(); ++k)
+  {
+    if (log[k].rfind("Error", 0) == 0)
+    {
+      errors += (errors.empty() ? "" : "; ") + log[k];
+    }
+  }
+  CheckedMessages() = log.size();
+  if (!errors.empty())
+  {
+    this->Fail(what + ": " + errors);
+  }
+}
+
+void GmshSession::Merge(const std::string& path)
+{
+  std::error_code error;
+  const fs::path absolute = fs::absolute(path, error);
+  std::string pattern = (fs::temp_directory_path(error) / "dgmf-gmsh-XXXXXX").string();
+  if (error || !::mkdtemp(&pattern[0]))
+  {
+    this->Fail("no private temporary directory for gmsh to read the file through");
+  }
+  this->LinkDirectory = pattern;
+  const fs::path link = this->LinkDirectory / "mesh.msh";
+  fs::create_symlink(absolute, link, error);
+  if (error)
+  {
+    this->Fail("cannot link the file for gmsh: " + error.message());
+  }
+  try
+  {
+    gmsh::merge(link.string());
+  }
+  catch (...)
+  {
+    // AbortOnError is 0: gmsh reports through the logger. Anything thrown anyway is reported
+    // below with the logged errors.
+    gmsh::logger::write("Error: gmsh threw while reading", "error");
+  }
+  this->ThrowOnGmshError("gmsh cannot read it");
+}
+
+} // namespace meshfile
+} // namespace dgmf
