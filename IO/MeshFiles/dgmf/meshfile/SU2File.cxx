@@ -418,11 +418,12 @@ void SU2Parser::ParseElements(const Line& line, const Keyword& keyword)
   this->Result.Mesh.Volume.Types.reserve(reserved);
   this->Result.Mesh.Volume.Offsets.reserve(reserved + 1);
   this->VolumeLines.reserve(reserved);
+  const std::string where = "element of " + section;
   for (std::int64_t k = 0; k < count; ++k)
   {
     const Line element = this->NextDataLine("element", k, section);
-    this->ParseCellLine(element, this->Dimension, "element of " + section, this->Result.Mesh.Volume,
-      this->VolumeLines);
+    this->ParseCellLine(
+      element, this->Dimension, where, this->Result.Mesh.Volume, this->VolumeLines);
   }
   this->HasElements = true;
   this->LastSection = section;
