@@ -11,6 +11,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
@@ -205,19 +206,27 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         invalid[pending] = last.InputInvalid ? 1 : 0;
       }
     });
-  // Ghost cells are evaluated (their arrays must be complete) but counted by their owner.
-  std::vector<std::uint8_t> ghost;
-  if (vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray())
+  // Left out of the summary, though evaluated: ghost cells (counted by their owner), and cells of
+  // a lower dimension than the mesh's (the boundary faces a reader gives with the volume, as the
+  // OpenFOAM, gmsh and SU2 readers do): the summary is the volume mesh's.
+  int meshDimension = 0;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
-    ghost.resize(static_cast<std::size_t>(numberOfCells));
-    for (vtkIdType c = 0; c < numberOfCells; ++c)
+    meshDimension = std::max(meshDimension, vtkCellTypes::GetDimension(types[c]));
+  }
+  std::vector<std::uint8_t> skip;
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    const bool ghost = ghosts && (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0;
+    if (ghost || vtkCellTypes::GetDimension(types[c]) < meshDimension)
     {
-      ghost[static_cast<std::size_t>(c)] =
-        (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0 ? 1 : 0;
+      skip.resize(static_cast<std::size_t>(numberOfCells), 0);
+      skip[static_cast<std::size_t>(c)] = 1;
     }
   }
   return dgmf::SummarizeQuality(values, flags, static_cast<std::size_t>(numberOfCells),
-    ghost.empty() ? nullptr : ghost.data(), invalid);
+    skip.empty() ? nullptr : skip.data(), invalid);
 }
 
 } // namespace dgmf_vtk

@@ -13,12 +13,3 @@ target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshSession.cxx")
 target_include_directories(DGMFMeshFiles SYSTEM PRIVATE "${DGMF_GMSH_INCLUDE_DIR}")
 target_link_libraries(DGMFMeshFiles PRIVATE "${DGMF_GMSH_LIBRARY}")
-if(DGMF_ENABLE_SANITIZERS)
-  # DGMFMeshFiles itself is not built with the sanitizers (IO/MeshFiles/CMakeLists.txt); the gmsh
-  # sources are, so that the gmsh tests check them.
-  set_property(SOURCE
-    "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshFile.cxx"
-    "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshIsolation.cxx"
-    "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshSession.cxx"
-    APPEND PROPERTY COMPILE_OPTIONS -fsanitize=address,undefined -fno-omit-frame-pointer)
-endif()

@@ -4,6 +4,3 @@ add_executable(DGMFSU2Tests TestSU2File.cxx su2/TestSU2HostileFiles.cxx su2/Test
 target_link_libraries(DGMFSU2Tests PRIVATE DGMFMeshFiles GTest::gtest GTest::gtest_main)
 target_compile_definitions(DGMFSU2Tests PRIVATE DGMF_SU2_TEST_DATA="${CMAKE_CURRENT_LIST_DIR}/su2")
 gtest_discover_tests(DGMFSU2Tests TEST_PREFIX "su2." DISCOVERY_TIMEOUT 60)
-if(DGMF_ENABLE_SANITIZERS) # the tests' own code too (the library's flags: IO/MeshFiles/SU2.cmake)
-  target_compile_options(DGMFSU2Tests PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
-endif()
