@@ -47,6 +47,36 @@ bool IsFoamFile(const std::string& path)
   return EndsWith(path, ".foam") || EndsWith(path, ".OpenFOAM");
 }
 
+/// A leaf of a composite data set with its block name.
+struct NamedLeaf
+{
+  std::string Name;
+  vtkDataObject* Data;
+};
+
+/// The named leaves of `data` (none when it is not composite), in order.
+std::vector<NamedLeaf> NamedLeavesOf(vtkDataObject* data)
+{
+  std::vector<NamedLeaf> leaves;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return leaves;
+  }
+  auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    if (metaData && metaData->Has(vtkCompositeDataSet::NAME()))
+    {
+      leaves.push_back(
+        { metaData->Get(vtkCompositeDataSet::NAME()), iterator->GetCurrentDataObject() });
+    }
+  }
+  return leaves;
+}
+
 /// The file to give vtkOpenFOAMReader for the case `path`.
 std::string ReaderFileOf(const std::string& path)
 {
@@ -103,20 +133,11 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path)
 std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks)
 {
   std::vector<std::string> names;
-  auto* composite = vtkCompositeDataSet::SafeDownCast(blocks);
-  if (!composite)
+  for (const NamedLeaf& leaf : NamedLeavesOf(blocks))
   {
-    return names;
-  }
-  auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
-  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
-  {
-    vtkInformation* metaData =
-      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
-    if (metaData && metaData->Has(vtkCompositeDataSet::NAME()) &&
-      std::string(metaData->Get(vtkCompositeDataSet::NAME())) != "internalMesh")
+    if (leaf.Name != "internalMesh")
     {
-      names.emplace_back(metaData->Get(vtkCompositeDataSet::NAME()));
+      names.push_back(leaf.Name);
     }
   }
   return names;
@@ -141,20 +162,11 @@ vtkUnstructuredGrid* VolumeOf(vtkDataObject* data)
   {
     return grid;
   }
-  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
-  if (!composite)
+  for (const NamedLeaf& leaf : NamedLeavesOf(data))
   {
-    return nullptr;
-  }
-  auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
-  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
-  {
-    vtkInformation* metaData =
-      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
-    if (metaData && metaData->Has(vtkCompositeDataSet::NAME()) &&
-      std::string(metaData->Get(vtkCompositeDataSet::NAME())) == "internalMesh")
+    if (leaf.Name == "internalMesh")
     {
-      return vtkUnstructuredGrid::SafeDownCast(iterator->GetCurrentDataObject());
+      return vtkUnstructuredGrid::SafeDownCast(leaf.Data);
     }
   }
   return nullptr;
