@@ -1,5 +1,7 @@
 #include "dgmf/meshfile/SU2File.h"
 
+#include "dgmf/meshfile/SU2Text.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -19,172 +21,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/// One line of the file: its text without the line end, its number (from 1), where it starts.
-struct Line
-{
-  std::string_view Text;
-  std::size_t Number = 0;
-  std::size_t Begin = 0;
-};
-
-/// The whitespace-separated tokens of a line (at most Capacity; Overflow says there were more).
-struct Tokens
-{
-  static constexpr std::size_t Capacity = 12;
-  std::array<std::string_view, Capacity> Items;
-  std::size_t Count = 0;
-  bool Overflow = false;
-};
-
-/// The characters that separate tokens (a '\r' before the '\n' included).
-constexpr const char* Spaces = " \t\r\v\f";
-
-std::string_view Trim(std::string_view text)
-{
-  const std::size_t first = text.find_first_not_of(Spaces);
-  return first == std::string_view::npos
-    ? std::string_view()
-    : text.substr(first, text.find_last_not_of(Spaces) - first + 1);
-}
-
-Tokens Split(std::string_view text)
-{
-  Tokens tokens;
-  for (std::size_t begin = text.find_first_not_of(Spaces); begin != std::string_view::npos;)
-  {
-    if (tokens.Count == Tokens::Capacity)
-    {
-      tokens.Overflow = true;
-      break;
-    }
-    const std::size_t end = std::min(text.find_first_of(Spaces, begin), text.size());
-    tokens.Items[tokens.Count++] = text.substr(begin, end - begin);
-    begin = text.find_first_not_of(Spaces, end);
-  }
-  return tokens;
-}
-
-/// The first characters of `text` for a message, with unprintable bytes shown as '?'.
-std::string Excerpt(std::string_view text)
-{
-  std::string shown(text.substr(0, 40));
-  for (char& c : shown)
-  {
-    c = (c < 32 || c > 126) ? '?' : c;
-  }
-  return "'" + shown + (text.size() > 40 ? "...'" : "'");
-}
-
-/**
- * True if all of `token` is a number of type T (for doubles: finite). A leading '+' is taken
- * (from_chars does not take one), but not "+-" or "++".
- */
-template <typename T>
-bool ToNumber(std::string_view token, T& value)
-{
-  if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-')
-  {
-    token.remove_prefix(1);
-  }
-  const char* end = token.data() + token.size();
-  const std::from_chars_result read = std::from_chars(token.data(), end, value);
-  return !token.empty() && read.ec == std::errc() && read.ptr == end && std::isfinite(value);
-}
-
-/**
- * Gives the lines of a file one by one, without blank lines and comments (lines whose first
- * non-blank character is '%'), and makes the errors that name the file and the line.
- */
-class LineReader
-{
-public:
-  LineReader(const std::string& path, const std::string& text)
-    : Path(path)
-    , Text(text)
-  {
-  }
-
-  /// The next line with content; false at the end of the file.
-  bool Next(Line& line)
-  {
-    while (this->At < this->Text.size())
-    {
-      const std::size_t begin = this->At;
-      std::size_t end = this->Text.find('\n', begin);
-      end = end == std::string::npos ? this->Text.size() : end;
-      this->At = end + 1;
-      ++this->Number;
-      const std::string_view text(this->Text.data() + begin, end - begin);
-      const std::string_view content = Trim(text);
-      if (!content.empty() && content.front() != '%')
-      {
-        line.Text = text.back() == '\r' ? text.substr(0, text.size() - 1) : text;
-        line.Number = this->Number;
-        line.Begin = begin;
-        return true;
-      }
-    }
-    return false;
-  }
-
-  /// How many more lines the rest of the file could hold at most (a bound for reserve()).
-  std::size_t MaxRemainingLines() const
-  {
-    return this->At >= this->Text.size() ? 0 : (this->Text.size() - this->At) / 2 + 1;
-  }
-
-  std::size_t LastLineNumber() const { return this->Number; }
-
-  [[noreturn]] void Fail(std::size_t line, const std::string& what) const
-  {
-    throw FileError(this->Path + ":" + std::to_string(line) + ": " + what);
-  }
-
-  /// The error for a file that ends where `expected` should follow.
-  [[noreturn]] void FailAtEnd(const std::string& expected) const
-  {
-    throw FileError(this->Path + ": the file ends (after line " + std::to_string(this->Number) +
-      ") where " + expected + " should follow");
-  }
-
-  /// The next line with content, or the error for a file that ends where `expected` should be.
-  Line Require(const std::string& expected)
-  {
-    Line line;
-    if (!this->Next(line))
-    {
-      this->FailAtEnd(expected);
-    }
-    return line;
-  }
-
-private:
-  const std::string& Path;
-  const std::string& Text;
-  std::size_t At = 0;
-  std::size_t Number = 0;
-};
-
-/// A "KEY= value" line: KEY is upper-case letters, digits and '_'.
-struct Keyword
-{
-  std::string_view Key;
-  std::string_view Value;
-};
-
-bool SplitKeyword(std::string_view text, Keyword& keyword)
-{
-  const std::size_t equal = text.find('=');
-  if (equal == std::string_view::npos)
-  {
-    return false;
-  }
-  keyword.Key = Trim(text.substr(0, equal));
-  keyword.Value = Trim(text.substr(equal + 1));
-  return !keyword.Key.empty() &&
-    std::all_of(keyword.Key.begin(), keyword.Key.end(),
-      [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; });
-}
+using namespace su2;
 
 /// Everything the reader and the writer need from a parsed file.
 struct ParsedFile
@@ -209,14 +46,14 @@ public:
   ParsedFile Parse();
 
 private:
-  void ParseKeywordLine(const Line& line, const Keyword& keyword);
-  std::int64_t ParseCount(const Line& line, const Keyword& keyword, bool allowSecond);
-  Line NextDataLine(const char* item, std::int64_t k, const std::string& section);
-  void ParseCellLine(const Line& line, int dimension, const std::string& section, Cells& cells,
+  void ParseKeywordLine(const TextLine& line, const Keyword& keyword);
+  std::int64_t ParseCount(const TextLine& line, const Keyword& keyword, bool allowSecond);
+  TextLine NextDataLine(const char* item, std::int64_t k, const std::string& section);
+  void ParseCellLine(const TextLine& line, int dimension, const std::string& section, Cells& cells,
     std::vector<std::size_t>& lines);
-  void ParseElements(const Line& line, const Keyword& keyword);
-  void ParsePoints(const Line& line, const Keyword& keyword);
-  void ParseMarkers(const Line& line, const Keyword& keyword);
+  void ParseElements(const TextLine& line, const Keyword& keyword);
+  void ParsePoints(const TextLine& line, const Keyword& keyword);
+  void ParseMarkers(const TextLine& line, const Keyword& keyword);
   void CheckRest();
   void CheckNodeIndices(const Cells& cells, const std::vector<std::size_t>& lines);
   bool Complete() const { return this->HasElements && this->HasPoints && this->HasMarkers; }
@@ -237,7 +74,7 @@ private:
 
 ParsedFile SU2Parser::Parse()
 {
-  Line line;
+  TextLine line;
   while (!this->Complete() && this->Reader.Next(line))
   {
     Keyword keyword;
@@ -271,7 +108,7 @@ ParsedFile SU2Parser::Parse()
   return std::move(this->Result);
 }
 
-void SU2Parser::ParseKeywordLine(const Line& line, const Keyword& keyword)
+void SU2Parser::ParseKeywordLine(const TextLine& line, const Keyword& keyword)
 {
   const std::string key(keyword.Key);
   const bool needsDimension = key == "NELEM" || key == "NPOIN" || key == "NMARK";
@@ -323,7 +160,7 @@ void SU2Parser::ParseKeywordLine(const Line& line, const Keyword& keyword)
   // Other keywords (before the four sections) are not ours: skipped.
 }
 
-std::int64_t SU2Parser::ParseCount(const Line& line, const Keyword& keyword, bool allowSecond)
+std::int64_t SU2Parser::ParseCount(const TextLine& line, const Keyword& keyword, bool allowSecond)
 {
   const std::string key(keyword.Key);
   const Tokens tokens = Split(keyword.Value);
@@ -343,9 +180,9 @@ std::int64_t SU2Parser::ParseCount(const Line& line, const Keyword& keyword, boo
  * The line of data item `k` ("element", "point") of `section` ("NPOIN= 6"): an error at the end
  * of the file, or on a keyword line (the section's count is larger than its lines).
  */
-Line SU2Parser::NextDataLine(const char* item, std::int64_t k, const std::string& section)
+TextLine SU2Parser::NextDataLine(const char* item, std::int64_t k, const std::string& section)
 {
-  Line line;
+  TextLine line;
   Keyword keyword;
   const bool found = this->Reader.Next(line);
   if (!found || (line.Text.find('=') != std::string_view::npos && SplitKeyword(line.Text, keyword)))
@@ -362,7 +199,7 @@ Line SU2Parser::NextDataLine(const char* item, std::int64_t k, const std::string
   return line;
 }
 
-void SU2Parser::ParseCellLine(const Line& line, int dimension, const std::string& section,
+void SU2Parser::ParseCellLine(const TextLine& line, int dimension, const std::string& section,
   Cells& cells, std::vector<std::size_t>& lines)
 {
   const Tokens tokens = Split(line.Text);
@@ -405,7 +242,7 @@ void SU2Parser::ParseCellLine(const Line& line, int dimension, const std::string
   lines.push_back(line.Number);
 }
 
-void SU2Parser::ParseElements(const Line& line, const Keyword& keyword)
+void SU2Parser::ParseElements(const TextLine& line, const Keyword& keyword)
 {
   const std::int64_t count = this->ParseCount(line, keyword, false);
   if (count == 0)
@@ -421,7 +258,7 @@ void SU2Parser::ParseElements(const Line& line, const Keyword& keyword)
   const std::string where = "element of " + section;
   for (std::int64_t k = 0; k < count; ++k)
   {
-    const Line element = this->NextDataLine("element", k, section);
+    const TextLine element = this->NextDataLine("element", k, section);
     this->ParseCellLine(
       element, this->Dimension, where, this->Result.Mesh.Volume, this->VolumeLines);
   }
@@ -429,7 +266,7 @@ void SU2Parser::ParseElements(const Line& line, const Keyword& keyword)
   this->LastSection = section;
 }
 
-void SU2Parser::ParsePoints(const Line& line, const Keyword& keyword)
+void SU2Parser::ParsePoints(const TextLine& line, const Keyword& keyword)
 {
   const std::int64_t count = this->ParseCount(line, keyword, true);
   const std::string section = "NPOIN= " + std::to_string(count);
@@ -442,7 +279,7 @@ void SU2Parser::ParsePoints(const Line& line, const Keyword& keyword)
   for (std::int64_t k = 0; k < count; ++k)
   {
     auto what = [k, &section]() { return "point " + std::to_string(k) + " of " + section; };
-    const Line point = this->NextDataLine("point", k, section);
+    const TextLine point = this->NextDataLine("point", k, section);
     const Tokens tokens = Split(point.Text);
     std::int64_t index = 0;
     if (tokens.Overflow || tokens.Count < coordinates || tokens.Count > coordinates + 1 ||
@@ -473,7 +310,7 @@ void SU2Parser::ParsePoints(const Line& line, const Keyword& keyword)
   this->LastSection = section;
 }
 
-void SU2Parser::ParseMarkers(const Line& line, const Keyword& keyword)
+void SU2Parser::ParseMarkers(const TextLine& line, const Keyword& keyword)
 {
   const std::int64_t count = this->ParseCount(line, keyword, false);
   std::vector<NamedBoundary>& boundaries = this->Result.Mesh.Boundaries;
@@ -482,7 +319,7 @@ void SU2Parser::ParseMarkers(const Line& line, const Keyword& keyword)
   for (std::int64_t m = 0; m < count; ++m)
   {
     const std::string what = "marker " + std::to_string(m) + " of NMARK= " + std::to_string(count);
-    const Line tagLine = this->Reader.Require("MARKER_TAG= of " + what);
+    const TextLine tagLine = this->Reader.Require("MARKER_TAG= of " + what);
     Keyword tag;
     if (!SplitKeyword(tagLine.Text, tag) || tag.Key != "MARKER_TAG" || tag.Value.empty())
     {
@@ -494,7 +331,7 @@ void SU2Parser::ParseMarkers(const Line& line, const Keyword& keyword)
     {
       this->Reader.Fail(tagLine.Number, what + ": a second marker named " + Excerpt(name));
     }
-    const Line elemsLine = this->Reader.Require("MARKER_ELEMS= of " + what);
+    const TextLine elemsLine = this->Reader.Require("MARKER_ELEMS= of " + what);
     Keyword elems;
     if (!SplitKeyword(elemsLine.Text, elems) || elems.Key != "MARKER_ELEMS")
     {
@@ -510,7 +347,7 @@ void SU2Parser::ParseMarkers(const Line& line, const Keyword& keyword)
       "marker " + Excerpt(name) + " (MARKER_ELEMS= " + std::to_string(faces) + ")";
     for (std::int64_t k = 0; k < faces; ++k)
     {
-      const Line face = this->NextDataLine("element", k, section);
+      const TextLine face = this->NextDataLine("element", k, section);
       this->ParseCellLine(
         face, this->Dimension - 1, section, boundaries.back().Faces, this->FaceLines.back());
     }
@@ -525,7 +362,7 @@ void SU2Parser::ParseMarkers(const Line& line, const Keyword& keyword)
  */
 void SU2Parser::CheckRest()
 {
-  Line line;
+  TextLine line;
   bool inOtherSection = false;
   while (this->Reader.Next(line))
   {
