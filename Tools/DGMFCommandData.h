@@ -50,6 +50,16 @@ vtkUnstructuredGrid* VolumeOf(vtkDataObject* data);
 /// Reads a .vtu (XML) or .vtk (legacy) unstructured grid; null or empty when it cannot.
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path);
 
+/// How a .vtu is encoded (dgmf-deform --vtu-mode, --compression).
+struct VTUEncoding
+{
+  bool Appended = false;           ///< appended raw data; false: inline binary (base64)
+  std::string Compression = "lz4"; ///< lz4, zlib, lzma or none
+};
+
+/// True for the compressions a .vtu may have.
+bool IsCompression(const std::string& name);
+
 /// True for the mesh files WriteMeshFile writes: .vtu and .vtk.
 bool IsMeshFileName(const std::string& path);
 
@@ -59,7 +69,8 @@ bool IsMeshFileName(const std::string& path);
  * them). The file is written beside `path` under a temporary name and renamed over it, so `path`
  * never holds half a file. False, with the reason printed, when it cannot.
  */
-bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path);
+bool WriteMeshFile(
+  vtkUnstructuredGrid* mesh, const std::string& path, const VTUEncoding& encoding = VTUEncoding());
 
 /**
  * A reader of the OpenFOAM case `path` (its directory or a .foam file): the internal mesh and

@@ -108,6 +108,10 @@ std::string Usage()
     "  --no-quality            skip the SizeSkew quality metric\n"
     "  --fail-on-inverted      exit with code 3, writing nothing, if a cell is inverted\n"
     "  --progress              show the progress from the start (default: after 2 s)\n"
+    "  --no-write              read and deform only, write nothing (see where the time goes)\n"
+    "  --vtu-mode MODE         binary (inline, default) or appended (raw; needs the expat\n"
+    "                          work-around in ParaView on Debian 12)\n"
+    "  --compression NAME      .vtu compression: lz4 (default), zlib, lzma or none\n"
     "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
     "                          (on for OpenFOAM cases)\n"
     "exit codes: 0 written; 1 could not read, deform or write; 2 bad option; 3 inverted cells\n"
@@ -227,6 +231,21 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     else if (option == "--non-orthogonality")
     {
       filter->ComputeNonOrthogonalityOn();
+    }
+    else if (option == "--no-write")
+    {
+      options.NoWrite = true;
+    }
+    else if (option == "--vtu-mode" && i + 1 < argc &&
+      (std::strcmp(argv[i + 1], "binary") == 0 || std::strcmp(argv[i + 1], "appended") == 0))
+    {
+      options.VTUAppended = std::strcmp(argv[++i], "appended") == 0;
+    }
+    else if (option == "--compression" && i + 1 < argc &&
+      (std::strcmp(argv[i + 1], "lz4") == 0 || std::strcmp(argv[i + 1], "zlib") == 0 ||
+        std::strcmp(argv[i + 1], "lzma") == 0 || std::strcmp(argv[i + 1], "none") == 0))
+    {
+      options.Compression = argv[++i];
     }
     else if (option == "--progress")
     {

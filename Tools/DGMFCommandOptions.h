@@ -35,8 +35,11 @@ struct CommandOptions
   bool DecomposePolyhedra = false;
   bool ByName = false; ///< boundaries chosen by name (--moving, --static, --slip)
   std::vector<std::string> Moving, Static, Slip; ///< the names given
-  bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
-  double ProgressDelay = 2.0;  ///< seconds before the progress is shown (--progress: 0)
+  bool FailOnInverted = false;     ///< exit 3, writing nothing, when cells are inverted
+  double ProgressDelay = 2.0;      ///< seconds before the progress is shown (--progress: 0)
+  bool NoWrite = false;            ///< --no-write: read and deform only (the timings show)
+  bool VTUAppended = false;        ///< --vtu-mode appended
+  std::string Compression = "lz4"; ///< --compression
 };
 
 /// The usage text.

@@ -53,9 +53,19 @@ long long CountValue(vtkDataObject* mesh, const char* name)
   return static_cast<long long>(FieldValue(mesh, name));
 }
 
-/// The one-line summary: size, time, quality, non-orthogonality, sub-steps.
-void PrintSummary(vtkDGMFDeformFilter* filter, double seconds, const std::string& written)
+/// Where the time of a run went (seconds).
+struct Times
 {
+  double Read = 0.0;
+  double Deform = 0.0; ///< the filter: deformation, quality
+  double Write = 0.0;
+};
+
+/// The one-line summary: size, time, quality, non-orthogonality, sub-steps, the file written ("":
+/// none).
+void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::string& written)
+{
+  const double seconds = times.Deform;
   vtkDataObject* deformed = filter->GetOutputDataObject(0);
   std::cout << "dgmf-deform: " << deformed->GetNumberOfElements(vtkDataObject::POINT) << " points, "
             << deformed->GetNumberOfElements(vtkDataObject::CELL) << " cells, " << seconds << " s";
@@ -82,7 +92,10 @@ void PrintSummary(vtkDGMFDeformFilter* filter, double seconds, const std::string
               << CountValue(deformed, "RepairedCellCount") << ", left unrepaired "
               << CountValue(deformed, "UnrepairedCellCount");
   }
-  std::cout << "; wrote " << written << std::endl;
+  std::cout << "; read " << times.Read << " s, written " << times.Write << " s";
+  std::cout << (written.empty() ? std::string("; nothing written (--no-write)")
+                                : "; wrote " + written)
+            << std::endl;
 }
 /// What the input is.
 enum class InputKind
@@ -161,6 +174,41 @@ void PrintBoundaries(
             << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
             << Listed(others) << ")" << std::endl;
 }
+/// Writes the deformed mesh where the options say; false (the error printed) when it cannot.
+bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
+  const dgmf_cli::CommandOptions& options, std::string& written)
+{
+  written = options.Output;
+  bool ok = true;
+  if (dgmf_cli::IsMeshFileName(options.Output))
+  {
+    dgmf_cli::VTUEncoding encoding;
+    encoding.Appended = options.VTUAppended;
+    encoding.Compression = options.Compression;
+    vtkUnstructuredGrid* volume = dgmf_cli::VolumeOf(filter->GetOutputDataObject(0));
+    ok = volume && dgmf_cli::WriteMeshFile(volume, options.Output, encoding);
+  }
+  else if (kind == InputKind::SolverFile)
+  {
+    ok = dgmf_cli::WriteSolverMeshFile(filter, options.Input, options.Output);
+  }
+  else
+  {
+    dgmf_cli::SetStage("writing into " + options.Output);
+    written = dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time);
+    if (written.empty())
+    {
+      std::cerr << "dgmf-deform: error: could not write the points into " << options.Output << "\n";
+      return false;
+    }
+  }
+  if (!ok)
+  {
+    std::cerr << "dgmf-deform: error: could not write " << options.Output
+              << " (any file already there is unchanged)\n";
+  }
+  return ok;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -185,6 +233,8 @@ int main(int argc, char* argv[])
     std::cerr << "dgmf-deform: " << outputProblem << "\n";
     return ExitUsage;
   }
+  Times times;
+  const double readStart = vtkTimerLog::GetUniversalTime();
   vtkSmartPointer<vtkAlgorithm> reader;
   vtkSmartPointer<vtkUnstructuredGrid> mesh;
   if (kind == InputKind::VTKFile)
@@ -225,6 +275,7 @@ int main(int argc, char* argv[])
       PrintBoundaries(options, names);
     }
   }
+  times.Read = vtkTimerLog::GetUniversalTime() - readStart;
   // Defaults: use the conventional array names when the input has them.
   if (options.MarkerGiven || (mesh && mesh->GetPointData()->GetArray(options.Marker.c_str())))
   {
@@ -262,36 +313,14 @@ int main(int argc, char* argv[])
     return ExitInvertedCells;
   }
 
-  std::string written = options.Output;
-  if (dgmf_cli::IsMeshFileName(options.Output))
+  const double writeStart = vtkTimerLog::GetUniversalTime();
+  std::string written;
+  if (!options.NoWrite && !WriteOutput(filter, kind, options, written))
   {
-    vtkUnstructuredGrid* volume = dgmf_cli::VolumeOf(deformed);
-    if (!volume || !dgmf_cli::WriteMeshFile(volume, options.Output))
-    {
-      std::cerr << "dgmf-deform: error: could not write " << options.Output
-                << " (any file already there is unchanged)\n";
-      return ExitFailure;
-    }
+    return ExitFailure;
   }
-  else if (kind == InputKind::SolverFile)
-  {
-    if (!dgmf_cli::WriteSolverMeshFile(filter, input, options.Output))
-    {
-      std::cerr << "dgmf-deform: error: could not write " << options.Output
-                << " (any file already there is unchanged)\n";
-      return ExitFailure;
-    }
-  }
-  else
-  {
-    dgmf_cli::SetStage("writing into " + options.Output);
-    written = dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time);
-    if (written.empty())
-    {
-      std::cerr << "dgmf-deform: error: could not write the points into " << options.Output << "\n";
-      return ExitFailure;
-    }
-  }
-  PrintSummary(filter, timer->GetElapsedTime(), written);
+  times.Write = vtkTimerLog::GetUniversalTime() - writeStart;
+  times.Deform = timer->GetElapsedTime();
+  PrintSummary(filter, times, written);
   return ExitSuccess;
 }
