@@ -231,8 +231,9 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
     vtkNew<vtkXMLUnstructuredGridWriter> xml;
     xml->SetFileName(temporary.c_str());
     xml->SetInputData(mesh);
-    // Inline binary by default: appended files read as empty in ParaView on Debian 12 without the
-    // expat work-around (README); the compression decides most of the writing time (speed.md).
+    // Appended raw with LZ4 by default: 2.2 times faster to write and 4 times faster to read than
+    // inline binary (speed.md); ParaView on Debian 12 reads appended files with the expat
+    // work-around only (README), inline binary without it.
     encoding.Appended ? xml->SetDataModeToAppended() : xml->SetDataModeToBinary();
     xml->SetEncodeAppendedData(0);
     const std::string& compression = encoding.Compression;

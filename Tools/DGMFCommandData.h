@@ -53,7 +53,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path);
 /// How a .vtu is encoded (dgmf-deform --vtu-mode, --compression).
 struct VTUEncoding
 {
-  bool Appended = false;           ///< appended raw data; false: inline binary (base64)
+  bool Appended = true;            ///< appended raw data; false: inline binary (base64)
   std::string Compression = "lz4"; ///< lz4, zlib, lzma or none
 };
 

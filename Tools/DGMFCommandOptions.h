@@ -38,7 +38,7 @@ struct CommandOptions
   bool FailOnInverted = false;     ///< exit 3, writing nothing, when cells are inverted
   double ProgressDelay = 2.0;      ///< seconds before the progress is shown (--progress: 0)
   bool NoWrite = false;            ///< --no-write: read and deform only (the timings show)
-  bool VTUAppended = false;        ///< --vtu-mode appended
+  bool VTUAppended = true;         ///< --vtu-mode appended (default) or binary
   std::string Compression = "lz4"; ///< --compression
 };
 

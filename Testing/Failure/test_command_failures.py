@@ -180,6 +180,27 @@ class CommandFailures(unittest.TestCase):
         code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, 30)
         self.assertNotIn("deforming", err)
 
+    # .vtu encodings: appended raw with LZ4 by default, inline binary for stock ParaView on
+    # Debian 12, each compression; all read back whole.
+    def test_vtu_encodings(self):
+        cases = [((), 'format="appended"', "vtkLZ4DataCompressor"),
+                 (("--vtu-mode", "binary"), 'format="binary"', "vtkLZ4DataCompressor"),
+                 (("--compression", "zlib"), 'format="appended"', "vtkZLibDataCompressor"),
+                 (("--vtu-mode", "binary", "--compression", "none"), 'format="binary"', None)]
+        for options, mode, compressor in cases:
+            with self.subTest(options=options):
+                output = self.path("encoded.vtu")
+                code, out, err = run(self.circle, output, "--rotate", 0, 0, 30, *options)
+                self.assertEqual(code, 0, err)
+                with open(output, "rb") as f:
+                    head = f.read(4000).decode("latin-1")
+                self.assertIn(mode, head)
+                if compressor:
+                    self.assertIn(compressor, head)
+                else:
+                    self.assertNotIn("compressor=", head)
+                self.assertEqual(meshes.read(output).GetNumberOfPoints(), CIRCLE_POINTS)
+
     # Fixed sub-steps above 256 (once "too many steps").
     def test_many_fixed_sub_steps(self):
         code, out, err = run(self.circle, self.path("steps.vtu"), "--rotate", 0, 0, 30,
