@@ -20,6 +20,8 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -209,17 +211,24 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   // Left out of the summary, though evaluated: ghost cells (counted by their owner), and cells of
   // a lower dimension than the mesh's (the boundary faces a reader gives with the volume, as the
   // OpenFOAM, gmsh and SU2 readers do): the summary is the volume mesh's.
-  int meshDimension = 0;
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  std::array<std::int8_t, 256> dimensionOf;
+  for (int type = 0; type < 256; ++type)
   {
-    meshDimension = std::max(meshDimension, vtkCellTypes::GetDimension(types[c]));
+    dimensionOf[static_cast<std::size_t>(type)] =
+      static_cast<std::int8_t>(vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+  }
+  std::int8_t meshDimension = 0;
+  for (vtkIdType c = 0; c < numberOfCells && meshDimension < 3; ++c)
+  {
+    meshDimension = std::max(meshDimension, dimensionOf[types[c]]);
   }
   std::vector<std::uint8_t> skip;
-  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  const unsigned char* ghosts =
+    mesh->GetCellGhostArray() ? mesh->GetCellGhostArray()->GetPointer(0) : nullptr;
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
-    const bool ghost = ghosts && (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0;
-    if (ghost || vtkCellTypes::GetDimension(types[c]) < meshDimension)
+    if ((ghosts && (ghosts[c] & vtkDataSetAttributes::DUPLICATECELL) != 0) ||
+      dimensionOf[types[c]] < meshDimension)
     {
       skip.resize(static_cast<std::size_t>(numberOfCells), 0);
       skip[static_cast<std::size_t>(c)] = 1;
