@@ -211,16 +211,20 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   // Left out of the summary, though evaluated: ghost cells (counted by their owner), and cells of
   // a lower dimension than the mesh's (the boundary faces a reader gives with the volume, as the
   // OpenFOAM, gmsh and SU2 readers do): the summary is the volume mesh's.
+  // The dimension of each cell type present, asked of VTK once per type (it complains about types
+  // it does not know).
   std::array<std::int8_t, 256> dimensionOf;
-  for (int type = 0; type < 256; ++type)
-  {
-    dimensionOf[static_cast<std::size_t>(type)] =
-      static_cast<std::int8_t>(vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-  }
+  dimensionOf.fill(-1);
+  std::array<bool, 256> seen{};
   std::int8_t meshDimension = 0;
-  for (vtkIdType c = 0; c < numberOfCells && meshDimension < 3; ++c)
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
-    meshDimension = std::max(meshDimension, dimensionOf[types[c]]);
+    if (!seen[types[c]])
+    {
+      seen[types[c]] = true;
+      dimensionOf[types[c]] = static_cast<std::int8_t>(vtkCellTypes::GetDimension(types[c]));
+      meshDimension = std::max(meshDimension, dimensionOf[types[c]]);
+    }
   }
   std::vector<std::uint8_t> skip;
   const unsigned char* ghosts =
