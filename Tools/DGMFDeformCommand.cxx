@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -114,9 +115,7 @@ InputKind KindOf(const std::string& input)
 
 std::string ExtensionOf(const std::string& path)
 {
-  const std::size_t dot = path.rfind('.');
-  return dot == std::string::npos || path.find('/', dot) != std::string::npos ? ""
-                                                                              : path.substr(dot);
+  return std::filesystem::path(path).extension().string();
 }
 
 /// Why `output` cannot be written from `input` ("" when it can): .vtu and .vtk always; the

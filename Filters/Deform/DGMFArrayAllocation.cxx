@@ -34,14 +34,23 @@ void AllocatePoints(vtkPoints* points, vtkIdType count)
   points->Modified();
 }
 
-void EnsureAvailableMemory(std::size_t bytes)
+namespace
+{
+/// True when `bytes` bytes can be allocated now (the probe is freed at once).
+bool CanAllocate(std::size_t bytes)
 {
   void* probe = std::malloc(bytes);
-  if (!probe)
+  std::free(probe);
+  return probe != nullptr;
+}
+} // namespace
+
+void EnsureAvailableMemory(std::size_t bytes)
+{
+  if (!CanAllocate(bytes))
   {
     throw std::bad_alloc();
   }
-  std::free(probe);
 }
 
 bool CanStartThreads(int threads)
@@ -62,10 +71,7 @@ bool CanStartThreads(int threads)
     getrlimit(RLIMIT_STACK, &stack) == 0 && stack.rlim_cur != RLIM_INFINITY
     ? static_cast<std::size_t>(stack.rlim_cur)
     : std::size_t(8) << 20;
-  void* probe =
-    std::malloc(static_cast<std::size_t>(threads) * (stackBytes + (std::size_t(1) << 20)));
-  std::free(probe);
-  return probe != nullptr;
+  return CanAllocate(static_cast<std::size_t>(threads) * (stackBytes + (std::size_t(1) << 20)));
 }
 
 } // namespace dgmf_vtk

@@ -36,10 +36,7 @@ inline dgmf::ParallelFor MakeSMPParallelFor()
     // (the results do not depend on the threads).
     if (!CanStartThreads(vtkSMPTools::GetEstimatedNumberOfThreads()))
     {
-      for (std::size_t b = begin; b < end; b += chunk)
-      {
-        body(b, std::min(end, b + chunk));
-      }
+      dgmf::SerialFor(begin, end, grain, body);
       return;
     }
     // An exception escaping a worker of the STDThread backend would terminate the process (out of
