@@ -74,7 +74,11 @@ std::string Usage()
   std::string usage =
     "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
     "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
+    "       dgmf-deform MESH_FILE OUTPUT --moving NAME[,NAME...] [options]\n"
     "  INPUT                   .vtu or .vtk unstructured grid\n"
+    "  MESH_FILE               a solver's mesh with boundary names: gmsh .msh, SU2 .su2,\n"
+    "                          Exodus II .exo/.e/.ex2, CGNS .cgns; OUTPUT: .vtu, .vtk, or the\n"
+    "                          same format (a copy of MESH_FILE with the deformed points)\n"
     "  CASE_DIR                OpenFOAM case (directory or .foam file); OUT_CASE_DIR gets the\n"
     "                          deformed points (a copy of the case if new; may be CASE_DIR)\n"
     "  --moving NAMES          moving boundaries by name (patches), comma-separated: one body "

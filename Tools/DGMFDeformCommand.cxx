@@ -17,6 +17,8 @@
 #include "DGMFCommandMessages.h"
 #include "DGMFCommandOptions.h"
 
+#include "dgmf/meshfile/MeshFileFormat.h"
+
 #include "vtkDGMFDeformFilter.h"
 
 #include "vtkCompositeDataSet.h"
@@ -102,7 +104,7 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
 enum class InputKind
 {
   VTKFile,      ///< .vtu or .vtk, boundaries by marker array
-  SolverFile,   ///< .msh or .su2, boundaries by name
+  SolverFile,   ///< .msh, .su2, .exo/.e/.ex2 or .cgns, boundaries by name
   OpenFOAMCase, ///< a case directory, its controlDict or a .foam file, patches by name
 };
 
@@ -126,7 +128,8 @@ std::string OutputProblem(InputKind kind, const std::string& input, const std::s
   {
     return "";
   }
-  if (kind == InputKind::SolverFile && ExtensionOf(output) == ExtensionOf(input))
+  if (kind == InputKind::SolverFile &&
+    dgmf::meshfile::FormatOfFileName(output) == dgmf::meshfile::FormatOfFileName(input))
   {
     return "";
   }

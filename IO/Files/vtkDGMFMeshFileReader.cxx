@@ -2,8 +2,7 @@
 
 #include "DGMFNamedMeshBlocks.h"
 
-#include "dgmf/meshfile/GmshFile.h"
-#include "dgmf/meshfile/SU2File.h"
+#include "dgmf/meshfile/MeshFileFormat.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -15,15 +14,6 @@
 #include <string>
 
 vtkStandardNewMacro(vtkDGMFMeshFileReader);
-
-namespace
-{
-bool EndsWith(const std::string& text, const std::string& suffix)
-{
-  return text.size() >= suffix.size() &&
-    text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-} // namespace
 
 vtkDGMFMeshFileReader::vtkDGMFMeshFileReader()
 {
@@ -37,8 +27,8 @@ vtkDGMFMeshFileReader::~vtkDGMFMeshFileReader()
 
 bool vtkDGMFMeshFileReader::CanReadFileName(const char* fileName)
 {
-  const std::string name = fileName ? fileName : "";
-  return EndsWith(name, ".msh") || EndsWith(name, ".su2");
+  return dgmf::meshfile::FormatOfFileName(fileName ? fileName : "") !=
+    dgmf::meshfile::MeshFileFormat::None;
 }
 
 int vtkDGMFMeshFileReader::RequestData(
@@ -48,13 +38,14 @@ int vtkDGMFMeshFileReader::RequestData(
   const std::string name = this->FileName ? this->FileName : "";
   if (!CanReadFileName(name.c_str()))
   {
-    vtkErrorMacro("Cannot read '" << name << "': give a gmsh .msh or an SU2 .su2 file.");
+    vtkErrorMacro("Cannot read '" << name
+                                  << "': give a gmsh .msh, SU2 .su2, Exodus II .exo/.e/.ex2 or "
+                                     "CGNS .cgns file.");
     return 0;
   }
   try
   {
-    const dgmf::meshfile::NamedMesh mesh =
-      EndsWith(name, ".su2") ? dgmf::meshfile::ReadSU2(name) : dgmf::meshfile::ReadGmsh(name);
+    const dgmf::meshfile::NamedMesh mesh = dgmf::meshfile::ReadMeshFile(name);
     output->ShallowCopy(dgmf_vtk::ToBlocks(mesh));
     return 1;
   }

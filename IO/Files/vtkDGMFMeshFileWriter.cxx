@@ -3,8 +3,7 @@
 #include "DGMFWriterInputs.h"
 #include "vtkDGMFMeshFileReader.h"
 
-#include "dgmf/meshfile/GmshFile.h"
-#include "dgmf/meshfile/SU2File.h"
+#include "dgmf/meshfile/MeshFileFormat.h"
 
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
@@ -12,7 +11,6 @@
 #include "vtkPointSet.h"
 
 #include <exception>
-#include <filesystem>
 #include <new>
 #include <string>
 
@@ -46,22 +44,15 @@ void vtkDGMFMeshFileWriter::WriteData()
     auto* reader = dgmf_vtk::FindUpstream<vtkDGMFMeshFileReader>(this);
     source = reader && reader->GetFileName() ? reader->GetFileName() : "";
   }
-  const std::string extension = std::filesystem::path(target).extension().string();
   if (target.empty() || !vtkDGMFMeshFileReader::CanReadFileName(target.c_str()))
   {
-    fail("FileName must end in .msh or .su2 (got '" + target + "').");
+    fail("FileName must end in .msh, .su2, .exo, .e, .ex2 or .cgns (got '" + target + "').");
     return;
   }
   if (source.empty())
   {
     fail("No source file: read the mesh with vtkDGMFMeshFileReader upstream, or set "
          "SourceFileName.");
-    return;
-  }
-  if (std::filesystem::path(source).extension().string() != extension)
-  {
-    fail("The source file " + source + " and the file to write " + target +
-      " must have the same format.");
     return;
   }
   vtkPointSet* nodes = dgmf_vtk::InternalMeshOf(this->GetInput());
@@ -74,14 +65,8 @@ void vtkDGMFMeshFileWriter::WriteData()
   {
     const std::vector<double> points = dgmf_vtk::PointsOf(nodes);
     const std::size_t count = static_cast<std::size_t>(nodes->GetNumberOfPoints());
-    if (extension == ".su2")
-    {
-      dgmf::meshfile::WriteSU2WithPoints(source, target, points.data(), count);
-    }
-    else
-    {
-      dgmf::meshfile::WriteGmshWithPoints(source, target, points.data(), count);
-    }
+    // The format checks (one format for source and target) are the library's.
+    dgmf::meshfile::WriteMeshFileWithPoints(source, target, points.data(), count);
   }
   catch (const std::bad_alloc&)
   {

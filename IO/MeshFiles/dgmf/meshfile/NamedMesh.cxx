@@ -114,7 +114,9 @@ void ValidateNamedMesh(const NamedMesh& mesh, const std::string& file)
       throw FileError(
         file + ": boundary names must be non-empty and unique ('" + boundary.Name + "')");
     }
-    CheckCells(boundary.Faces, mesh.NumberOfNodes(), mesh.Dimension - 1,
+    // Faces, or a set of nodes (Vertex cells only).
+    const bool nodeSet = !boundary.Faces.Types.empty() && boundary.Faces.Types.front() == Vertex;
+    CheckCells(boundary.Faces, mesh.NumberOfNodes(), nodeSet ? 0 : mesh.Dimension - 1,
       file + ": boundary '" + boundary.Name + "'");
   }
 }

@@ -1,8 +1,9 @@
 /**
  * @file NamedMesh.h
  * @brief A solver's mesh as the mesh-file readers give it: the nodes in the file's order, the
- * cells of the mesh's dimension, and the named boundaries (gmsh physical groups, SU2 markers).
- * VTK-free: cell types are VTK's numbers (as SU2 files use them), so the VTK reader only copies.
+ * cells of the mesh's dimension, and the named boundaries (gmsh physical groups, SU2 markers,
+ * Exodus side sets and node sets, CGNS boundary conditions). VTK-free: cell types are VTK's numbers
+ * (as SU2 files use them), so the VTK reader only copies.
  */
 #ifndef dgmf_meshfile_NamedMesh_h
 #define dgmf_meshfile_NamedMesh_h
@@ -47,7 +48,8 @@ struct Cells
   }
 };
 
-/// A named boundary: its faces (edges in 2D), on the mesh's nodes.
+/// A named boundary: its faces (edges in 2D), on the mesh's nodes; or, for a set of nodes (an
+/// Exodus node set, a CGNS boundary condition on vertices), one Vertex cell per node.
 struct NamedBoundary
 {
   std::string Name;
@@ -80,8 +82,9 @@ public:
 /**
  * Checks what every reader promises: Points a multiple of 3 and finite, NodeIds one per node,
  * Offsets consistent with Connectivity, every node index in range, node counts matching the cell
- * types, Volume of the mesh's dimension, named faces one dimension lower, names non-empty and
- * unique. Throws FileError("<file>: ...") on the first violation.
+ * types, Volume of the mesh's dimension, named faces one dimension lower (or all Vertex cells, a
+ * set of nodes), names non-empty and unique. Throws FileError("<file>: ...") on the first
+ * violation.
  */
 void ValidateNamedMesh(const NamedMesh& mesh, const std::string& file);
 
