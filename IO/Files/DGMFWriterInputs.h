@@ -8,6 +8,7 @@
 
 #include "vtkAlgorithm.h"
 
+#include <cstdint>
 #include <set>
 #include <vector>
 
@@ -26,18 +27,28 @@ vtkPointSet* InternalMeshOf(vtkDataObject* data);
 /// The points of `mesh` as doubles, 3 per point.
 std::vector<double> PointsOf(vtkPointSet* mesh);
 
-/// The first algorithm of class `Reader` upstream of `algorithm`'s inputs (breadth first), or
-/// null.
-template <typename Reader>
-Reader* FindUpstream(vtkAlgorithm* algorithm)
+/**
+ * The points of a reader's blocks (ParaView's ExodusIIReader: "GlobalNodeId", its IOSSReader:
+ * "ids") placed by node id: `points` (3 per file node, the file's coordinates on entry) gets,
+ * for every point of every leaf of `data` that has the id array `idArray`, its position at the
+ * index of its id in `fileNodeIds`. Returns the number of file nodes placed; -1 when a leaf has
+ * an id the file does not have.
+ */
+long long PlacePointsByNodeId(vtkDataObject* data, const char* idArray,
+  const std::vector<std::int64_t>& fileNodeIds, std::vector<double>& points);
+
+/// The first algorithm upstream of `algorithm`'s inputs (breadth first) for which `accept`
+/// holds, or null.
+template <typename Predicate>
+vtkAlgorithm* FindUpstreamIf(vtkAlgorithm* algorithm, Predicate accept)
 {
   std::vector<vtkAlgorithm*> queue{ algorithm };
   std::set<vtkAlgorithm*> seen{ algorithm };
   for (std::size_t k = 0; k < queue.size(); ++k)
   {
-    if (auto* reader = Reader::SafeDownCast(queue[k]))
+    if (k > 0 && accept(queue[k]))
     {
-      return reader;
+      return queue[k];
     }
     for (int port = 0; port < queue[k]->GetNumberOfInputPorts(); ++port)
     {
@@ -52,6 +63,15 @@ Reader* FindUpstream(vtkAlgorithm* algorithm)
     }
   }
   return nullptr;
+}
+
+/// The first algorithm of class `Reader` upstream of `algorithm`'s inputs (breadth first), or
+/// null.
+template <typename Reader>
+Reader* FindUpstream(vtkAlgorithm* algorithm)
+{
+  return Reader::SafeDownCast(
+    FindUpstreamIf(algorithm, [](vtkAlgorithm* a) { return Reader::SafeDownCast(a) != nullptr; }));
 }
 } // namespace dgmf_vtk
 

@@ -23,4 +23,11 @@ target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/CGNSFile.cxx"
   "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/FileReplacement.cxx")
 target_include_directories(DGMFMeshFiles SYSTEM PRIVATE "${DGMF_VTK_THIRDPARTY_INCLUDE_DIR}")
-target_link_libraries(DGMFMeshFiles PRIVATE "${DGMF_EXODUSII_LIBRARY}" "${DGMF_CGNS_LIBRARY}")
+# netCDF (the library under Exodus, the system's: ParaView's vtk_netcdf.h includes <netcdf.h>):
+# coordinates of the old combined layout are written through it.
+find_library(DGMF_NETCDF_LIBRARY NAMES netcdf DOC "netCDF's C library")
+if(NOT DGMF_NETCDF_LIBRARY)
+  message(FATAL_ERROR "netCDF's library was not found: install libnetcdf-dev")
+endif()
+target_link_libraries(DGMFMeshFiles PRIVATE "${DGMF_EXODUSII_LIBRARY}" "${DGMF_CGNS_LIBRARY}"
+  "${DGMF_NETCDF_LIBRARY}")

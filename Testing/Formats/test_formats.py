@@ -4,12 +4,14 @@
 gmsh makes the meshes in the test: a unit box around a sphere of radius 0.2 (physical groups
 "wing" on the sphere, "farfield" on the box, "fluid" the volume) and a 2D square around a circle.
 gmsh writes them as .msh 4.1 ASCII, 4.1 binary, 2.2 ASCII, 2.2 binary, and as .su2 (gmsh's SU2
-export names the markers after the physical groups). Every round trip asserts: the same node count
+export names the markers after the physical groups); dgmf-test-convert-mesh writes them as Exodus
+II (side sets) and CGNS (BCWall boundary conditions with families) with those formats' own
+libraries. Every round trip asserts: the same node count
 and order, the names present, the static boundary unmoved to the bit, the moving boundary at its
 rigid position to 1e-12, and the quality summary of the .vtu route (the same mesh with a
 BoundaryMarker array instead of names).
 
-  pvpython test_formats.py --deform DGMF_DEFORM --plugin PLUGIN --work WORK_DIR [-k NAME]
+  pvpython test_formats.py --deform DGMF_DEFORM --convert CONVERTER --plugin PLUGIN --work DIR
 """
 import argparse
 import math
@@ -66,6 +68,12 @@ def make_meshes(work):
         gmsh.write(files["%dd_su2" % dimension])
         gmsh.model.remove()
     gmsh.finalize()
+    for dimension in (3, 2):
+        for extension in ("exo", "cgns"):
+            label = "%dd_%s" % (dimension, extension)
+            files[label] = os.path.join(work, "%dd.%s" % (dimension, extension))
+            subprocess.run([ARGS.convert, files["%dd_msh4.1" % dimension], files[label]],
+                           check=True)
     return files
 
 
@@ -276,7 +284,7 @@ class Formats(unittest.TestCase):
         from paraview import servermanager
         from vtkmodules.util.numpy_support import vtk_to_numpy
 
-        exodus = os.path.join(ARGS.work, "3d.exo")
+        exodus = os.path.join(ARGS.work, "3d_meshio.exo")
         script = (
             "import sys, gmsh, meshio, numpy as np\n"
             "gmsh.initialize(); gmsh.option.setNumber('General.Terminal', 0)\n"
@@ -333,6 +341,139 @@ class Formats(unittest.TestCase):
                 self.simple.Delete(merged)
                 self.simple.Delete(deform)
                 self.simple.Delete(reader)
+        # The same file (node sets; coordinates in meshio's combined "coord" variable) through
+        # dgmf-deform and back into Exodus.
+        written = os.path.join(ARGS.work, "cli_3d_meshio.exo")
+        code, out, err = run(exodus, written, "--moving", "wing", *motion(3))
+        self.assertEqual(code, 0, err)
+        self.check_deformed(exodus, written, 3)
+
+    def leaves(self, data):
+        """{block name: leaf} of a composite data set."""
+        named = {}
+        iterator = data.NewIterator()
+        iterator.InitTraversal()
+        while not iterator.IsDoneWithTraversal():
+            named[iterator.GetCurrentMetaData().Get(data.NAME())] = \
+                iterator.GetCurrentDataObject()
+            iterator.GoToNextItem()
+        return named
+
+    def cell_points(self, block):
+        """The points the cells of `block` use, sorted by their index in the block."""
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        used = sorted({block.GetCell(c).GetPointId(k) for c in range(block.GetNumberOfCells())
+                       for k in range(block.GetCell(c).GetNumberOfPoints())})
+        return vtk_to_numpy(block.GetPoints().GetData())[used]
+
+    def check_paraview_reads_back(self, source, written, open_reader, tolerance=1e-12):
+        """ParaView's own reader (open_reader(path) -> {name: block}) finds the wing and the
+        farfield in the written file, the wing at its rigid position and the farfield unmoved."""
+        before, after = open_reader(source), open_reader(written)
+        for name in ("wing", "farfield"):
+            self.assertIn(name, after)
+            self.assertGreater(after[name].GetNumberOfCells(), 0)
+            self.assertEqual(after[name].GetNumberOfCells(), before[name].GetNumberOfCells())
+        center = np.array([0.5, 0.5, 0.5])
+        wing = self.cell_points(before["wing"])
+        expected = (wing - center) @ rotation(3).T + center
+        self.assertLess(np.abs(self.cell_points(after["wing"]) - expected).max(), tolerance)
+        np.testing.assert_array_equal(self.cell_points(after["farfield"]),
+                                      self.cell_points(before["farfield"]))
+
+    def deformed(self, reader):
+        deform = self.simple.DGMFDeform(Input=reader)
+        deform.MovingBoundaries = ["wing"]
+        deform.RotationCenter = [0.5, 0.5, 0.5]
+        deform.RotationAngles = list(ANGLES_3D)
+        return deform
+
+    def test_exodus_written_back_reads_in_paraviews_exodus_reader(self):
+        """DGMF Mesh File Reader, DGMF Deform, SaveData(.exo) (the DGMF writer: ParaView has no
+        .exo writer); the file read back by ParaView's ExodusIIReader with its side sets."""
+        from paraview import servermanager
+
+        def open_exodus(path):
+            reader = self.simple.ExodusIIReader(FileName=[path])
+            reader.SideSetArrayStatus = ["wing", "farfield"]
+            blocks = self.leaves(servermanager.Fetch(reader))
+            self.simple.Delete(reader)
+            return blocks
+
+        source = self.files["3d_exo"]
+        reader = self.simple.DGMFMeshFileReader(FileName=source)
+        deform = self.deformed(reader)
+        written = os.path.join(ARGS.work, "pv_3d.exo")
+        self.simple.SaveData(written, proxy=deform)
+        self.check_deformed(source, written, 3)
+        # ExodusIIReader gives the points in single precision.
+        self.check_paraview_reads_back(source, written, open_exodus, tolerance=1e-6)
+        self.assertEqual(open_exodus(written)["fluid"].GetNumberOfPoints(),
+                         len(self.read(source)[0]))
+        self.simple.Delete(deform)
+        self.simple.Delete(reader)
+
+    def test_exodus_from_paraviews_reader_saved_as_exo(self):
+        """ParaView's own ExodusIIReader (side sets ticked), DGMF Deform by name, SaveData(.exo)
+        with SourceFileName: the DGMF writer places the points by GlobalNodeId into a copy of
+        the file."""
+        source = self.files["3d_exo"]
+        reader = self.simple.ExodusIIReader(FileName=[source])
+        reader.SideSetArrayStatus = ["wing", "farfield"]
+        deform = self.deformed(reader)
+        written = os.path.join(ARGS.work, "pv_exodus_reader_3d.exo")
+        # ParaView wraps its Exodus reader in a file-series reader: the source file is named.
+        self.simple.SaveData(written, proxy=deform, SourceFileName=source)
+        # The same file with the same names; the static nodes keep every bit of the file's
+        # doubles; the wing at its rigid position to the single precision ExodusIIReader reads.
+        points, ids, names = self.read(source)
+        moved, moved_ids, moved_names = self.read(written)
+        np.testing.assert_array_equal(moved_ids, ids)
+        self.assertEqual(set(moved_names), {"wing", "farfield"})
+        np.testing.assert_array_equal(moved[names["farfield"]], points[names["farfield"]])
+        center = np.array([0.5, 0.5, 0.5])
+        expected = (points[names["wing"]] - center) @ rotation(3).T + center
+        self.assertLess(np.abs(moved[names["wing"]] - expected).max(), 1e-6)
+        cli = os.path.join(ARGS.work, "cli_3d_exo.exo")
+        if os.path.exists(cli):
+            np.testing.assert_allclose(moved, self.read(cli)[0], atol=1e-6)
+        self.simple.Delete(deform)
+        self.simple.Delete(reader)
+
+    def test_cgns_written_back_reads_in_paraviews_cgns_reader(self):
+        """DGMF Mesh File Reader, DGMF Deform, the DGMF writer (SaveData(.cgns) picks ParaView's
+        CGNS writer, which writes no boundary conditions); the file read back by ParaView's
+        CGNSSeriesReader with its boundary conditions as patches."""
+        from paraview import servermanager
+
+        def open_cgns(path):
+            reader = self.simple.CGNSSeriesReader(FileNames=[path])
+            reader.LoadPatches = 1
+            blocks = self.leaves(servermanager.Fetch(reader))
+            self.simple.Delete(reader)
+            return blocks
+
+        for label in ("3d_cgns", "2d_cgns"):
+            with self.subTest(file=label):
+                source = self.files[label]
+                dimension = int(label[0])
+                reader = self.simple.DGMFMeshFileReader(FileName=source)
+                deform = self.deformed(reader)
+                if dimension == 2:
+                    deform.RotationCenter = [0.5, 0.5, 0.0]
+                    deform.RotationAngles = [0, 0, ANGLE_2D]
+                written = os.path.join(ARGS.work, "pv_" + label + ".cgns")
+                writer = servermanager.writers.DGMFMeshFileWriter(Input=deform, FileName=written)
+                writer.UpdatePipeline()
+                self.check_deformed(source, written, dimension)
+                if dimension == 3:
+                    self.check_paraview_reads_back(source, written, open_cgns)
+                    self.assertEqual(open_cgns(written)["Internal"].GetNumberOfPoints(),
+                                     len(self.read(source)[0]))
+                del writer
+                self.simple.Delete(deform)
+                self.simple.Delete(reader)
 
     def test_vtu_output_reads_in_meshio(self):
         vtu = os.path.join(ARGS.work, "meshio.vtu")
@@ -351,6 +492,7 @@ class Formats(unittest.TestCase):
 if __name__ == "__main__":
     parser = argparse.ArgumentParser()
     parser.add_argument("--deform", required=True)
+    parser.add_argument("--convert", required=True)
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--work", required=True)
     ARGS, rest = parser.parse_known_args()

@@ -437,8 +437,30 @@ void WriteExodusWithPoints(
     {
       ExodusHandle file(temporary, EX_WRITE);
       const ex_init_params sizes = ReadSizes(file);
-      file.Check(ex_put_coord(file.Id, x.data(), y.data(), sizes.num_dim == 3 ? z.data() : nullptr),
-        "(writing) the coordinates");
+      const int dimensions = static_cast<int>(sizes.num_dim);
+      int combined = -1;
+      if (nc_inq_varid(file.Id, "coord", &combined) == NC_NOERR)
+      {
+        // The old layout, one variable coord[num_dim][num_nodes] (meshio writes it), which
+        // ex_put_coord does not write: written through netCDF, converted to its type by it.
+        std::vector<double> all(x);
+        all.insert(all.end(), y.begin(), y.end());
+        if (dimensions == 3)
+        {
+          all.insert(all.end(), z.begin(), z.end());
+        }
+        const int status = nc_put_var_double(file.Id, combined, all.data());
+        if (status != NC_NOERR)
+        {
+          throw FileError(
+            temporary + ": cannot write the coordinates (" + nc_strerror(status) + ")");
+        }
+      }
+      else
+      {
+        file.Check(ex_put_coord(file.Id, x.data(), y.data(), dimensions == 3 ? z.data() : nullptr),
+          "(writing) the coordinates");
+      }
       file.Close();
     });
 }
