@@ -9,7 +9,6 @@ if(NOT DGMF_GMSH_INCLUDE_DIR OR NOT DGMF_GMSH_LIBRARY)
 endif()
 target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshFile.cxx"
-  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshIsolation.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshSession.cxx")
 target_include_directories(DGMFMeshFiles SYSTEM PRIVATE "${DGMF_GMSH_INCLUDE_DIR}")
 target_link_libraries(DGMFMeshFiles PRIVATE "${DGMF_GMSH_LIBRARY}")

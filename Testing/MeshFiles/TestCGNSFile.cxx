@@ -2,6 +2,8 @@
 // (ParaView's vtkcgns), read back field by field; write-back; files the reader refuses.
 #include "dgmf/meshfile/CGNSFile.h"
 
+#include "ByteMutations.h"
+
 #include <vtkcgns/src/cgnslib.h>
 
 #include <gtest/gtest.h>
@@ -14,6 +16,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -667,4 +670,40 @@ TEST(CGNSFile, RefusesHigherOrderElements)
   WriteCGNS(directory / "tetra10.cgns", c);
   const std::string error = ErrorOf(directory / "tetra10.cgns");
   EXPECT_TRUE(Contains(error, "TETRA_10")) << error;
+}
+
+TEST(CGNSFile, SeededMutantsReadAsMeshesOrFileErrors)
+{
+  // Bytes flipped, runs overwritten, the file cut (ByteMutations.h): each mutant reads as a valid
+  // mesh (ReadCGNS validates it) that writes back, or is a FileError; HDF5's and the CGNS
+  // library's failures stay in the reader's child.
+  const fs::path directory = WorkDirectory();
+  const fs::path valid = directory / "valid.cgns";
+  WriteCGNS(valid, SplitCube());
+  std::ifstream in(valid, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::mt19937_64 random(20261124);
+  int meshes = 0, errors = 0;
+  for (int k = 0; k < 150; ++k)
+  {
+    const fs::path mutant = directory / "mutant.cgns";
+    {
+      std::ofstream out(mutant, std::ios::binary | std::ios::trunc);
+      out << dgmf_test::MutateBytes(bytes, random);
+    }
+    try
+    {
+      const mf::NamedMesh mesh = mf::ReadCGNS(mutant.string());
+      mf::WriteCGNSWithPoints(mutant.string(), (directory / "written.cgns").string(),
+        mesh.Points.data(), mesh.NumberOfNodes());
+      EXPECT_EQ(mf::ReadCGNS((directory / "written.cgns").string()).Points, mesh.Points) << k;
+      ++meshes;
+    }
+    catch (const mf::FileError&)
+    {
+      ++errors;
+    }
+  }
+  EXPECT_EQ(meshes + errors, 150);
+  EXPECT_GT(errors, 0);
 }

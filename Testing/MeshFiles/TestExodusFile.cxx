@@ -2,6 +2,8 @@
 // itself (ParaView's vtkexodusII), read back field by field; write-back; files the reader refuses.
 #include "dgmf/meshfile/ExodusFile.h"
 
+#include "ByteMutations.h"
+
 #include <vtkexodusII/include/exodusII.h>
 
 #include <gtest/gtest.h>
@@ -10,8 +12,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -389,4 +393,40 @@ TEST(ExodusFile, RefusesWhatItCannotRead)
   fs::copy_file(directory / "whole.exo", directory / "truncated.exo");
   fs::resize_file(directory / "truncated.exo", fs::file_size(directory / "whole.exo") / 2);
   EXPECT_NE(ErrorOf(directory / "truncated.exo"), "");
+}
+
+TEST(ExodusFile, SeededMutantsReadAsMeshesOrFileErrors)
+{
+  // Bytes flipped, runs overwritten, the file cut (ByteMutations.h): each mutant reads as a valid
+  // mesh (ReadExodus validates it) that writes back, or is a FileError; netCDF's allocations
+  // driven by a corrupted header and the Exodus library's crashes stay in the reader's child.
+  const fs::path directory = WorkDirectory();
+  const fs::path valid = directory / "valid.exo";
+  WriteExodus(valid, TwoHexahedra());
+  std::ifstream in(valid, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::mt19937_64 random(20261124);
+  int meshes = 0, errors = 0;
+  for (int k = 0; k < 150; ++k)
+  {
+    const fs::path mutant = directory / "mutant.exo";
+    {
+      std::ofstream out(mutant, std::ios::binary | std::ios::trunc);
+      out << dgmf_test::MutateBytes(bytes, random);
+    }
+    try
+    {
+      const mf::NamedMesh mesh = mf::ReadExodus(mutant.string());
+      mf::WriteExodusWithPoints(mutant.string(), (directory / "written.exo").string(),
+        mesh.Points.data(), mesh.NumberOfNodes());
+      EXPECT_EQ(mf::ReadExodus((directory / "written.exo").string()).Points, mesh.Points) << k;
+      ++meshes;
+    }
+    catch (const mf::FileError&)
+    {
+      ++errors;
+    }
+  }
+  EXPECT_EQ(meshes + errors, 150);
+  EXPECT_GT(errors, 0);
 }

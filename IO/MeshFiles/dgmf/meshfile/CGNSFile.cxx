@@ -1,6 +1,7 @@
 #include "dgmf/meshfile/CGNSFile.h"
 
 #include "dgmf/meshfile/FileReplacement.h"
+#include "dgmf/meshfile/LibraryIsolation.h"
 
 #include <vtkcgns/src/cgnslib.h>
 
@@ -551,11 +552,23 @@ NamedMesh ReadMesh(const CGNSHandle& file, ZoneLayout& layout)
 }
 } // namespace
 
-NamedMesh ReadCGNS(const std::string& path)
+/// ReadCGNS in this process (ReadCGNS runs it in a child).
+static NamedMesh ReadCGNSInThisProcess(const std::string& path)
 {
   CGNSHandle file(path, CG_MODE_READ);
   ZoneLayout layout;
   return ReadMesh(file, layout);
+}
+
+NamedMesh ReadCGNS(const std::string& path)
+{
+  // In a child process with a bounded address space: the library under the reader allocates
+  // what a corrupted header declares, and reads out of bounds on some corrupted files.
+  std::error_code error;
+  const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+  const std::size_t budget = (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
+  return MeshFromBytes(RunIsolated(path, "the CGNS library", TimeAllowed(path), budget,
+    [&]() { return MeshToBytes(ReadCGNSInThisProcess(path)); }));
 }
 
 void WriteCGNSWithPoints(

@@ -1,6 +1,7 @@
 #include "dgmf/meshfile/ExodusFile.h"
 
 #include "dgmf/meshfile/FileReplacement.h"
+#include "dgmf/meshfile/LibraryIsolation.h"
 
 #include <vtkexodusII/include/exodusII.h>
 
@@ -343,7 +344,8 @@ std::vector<std::int64_t> NodesOf(const Cells& cells)
 }
 } // namespace
 
-NamedMesh ReadExodus(const std::string& path)
+/// ReadExodus in this process (ReadExodus runs it in a child).
+static NamedMesh ReadExodusInThisProcess(const std::string& path)
 {
   ExodusHandle file(path, EX_READ);
   const ex_init_params sizes = ReadSizes(file);
@@ -405,6 +407,17 @@ NamedMesh ReadExodus(const std::string& path)
     mesh.Boundaries.end());
   ValidateNamedMesh(mesh, path);
   return mesh;
+}
+
+NamedMesh ReadExodus(const std::string& path)
+{
+  // In a child process with a bounded address space: the library under the reader allocates
+  // what a corrupted header declares, and reads out of bounds on some corrupted files.
+  std::error_code error;
+  const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+  const std::size_t budget = (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
+  return MeshFromBytes(RunIsolated(path, "the Exodus library", TimeAllowed(path), budget,
+    [&]() { return MeshToBytes(ReadExodusInThisProcess(path)); }));
 }
 
 void WriteExodusWithPoints(

@@ -2,8 +2,8 @@
 // (GmshSession.h): serialized, silent, errors collected from gmsh's logger.
 #include "dgmf/meshfile/GmshFile.h"
 
-#include "dgmf/meshfile/GmshIsolation.h"
 #include "dgmf/meshfile/GmshSession.h"
+#include "dgmf/meshfile/LibraryIsolation.h"
 
 #include <gmsh.h>
 
@@ -345,18 +345,12 @@ auto TranslatingGmshErrors(GmshSession& session, Body body) -> decltype(body())
 namespace
 {
 /// How long gmsh may take on `path` before it is taken as hanging: 2 minutes and 10 s per MiB.
-double TimeAllowed(const std::string& path)
-{
-  std::error_code error;
-  const std::uintmax_t bytes = fs::file_size(path, error);
-  return 120.0 + (error ? 0.0 : 10.0 * static_cast<double>(bytes) / (1 << 20));
-}
 } // namespace
 
 NamedMesh ReadGmsh(const std::string& path)
 {
   const MshFormat format = CheckMshHeader(path);
-  const std::string answer = RunIsolated(path, TimeAllowed(path),
+  const std::string answer = RunIsolated(path, "gmsh", TimeAllowed(path), 0,
     [&]()
     {
       GmshSession session(path);
@@ -521,7 +515,7 @@ void WriteGmshWithPoints(
   const fs::path temporary = TemporaryBeside(target);
   try
   {
-    RunIsolated(source, TimeAllowed(source),
+    RunIsolated(source, "gmsh", TimeAllowed(source), 0,
       [&]()
       {
         GmshSession session(source);

@@ -1,9 +1,10 @@
-#include "dgmf/meshfile/GmshIsolation.h"
+#include "dgmf/meshfile/LibraryIsolation.h"
 
 #include "dgmf/meshfile/NamedMesh.h"
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +12,8 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 namespace dgmf
@@ -38,8 +41,34 @@ void WriteAll(int fd, const std::string& bytes)
   }
 }
 
-[[noreturn]] void ChildMain(int fd, const std::function<std::string()>& work)
+/// Limits this process's address space to what it has now plus `budget` bytes.
+void LimitAddressSpace(std::size_t budget)
 {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0;
+  statm >> pages;
+  const auto now = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE));
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0)
+  {
+    const rlim_t wanted = now + static_cast<rlim_t>(budget);
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+    ::setrlimit(RLIMIT_AS, &limit);
+  }
+}
+
+[[noreturn]] void ChildMain(
+  int fd, std::size_t memoryBudget, const std::function<std::string()>& work)
+{
+#if !defined(__SANITIZE_ADDRESS__)
+  // (AddressSanitizer maps its own memory as it goes: no limit under it.)
+  if (memoryBudget > 0)
+  {
+    LimitAddressSpace(memoryBudget);
+  }
+#else
+  (void)memoryBudget;
+#endif
   std::string answer;
   try
   {
@@ -63,25 +92,32 @@ void WriteAll(int fd, const std::string& bytes)
 }
 } // namespace
 
-std::string RunIsolated(
-  const std::string& file, double seconds, const std::function<std::string()>& work)
+double TimeAllowed(const std::string& path)
+{
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  return 120.0 + (error ? 0.0 : 10.0 * static_cast<double>(bytes) / (1 << 20));
+}
+
+std::string RunIsolated(const std::string& file, const std::string& library, double seconds,
+  std::size_t memoryBudget, const std::function<std::string()>& work)
 {
   int fds[2];
   if (::pipe(fds) != 0)
   {
-    throw FileError(file + ": cannot create a pipe for gmsh: " + std::strerror(errno));
+    throw FileError(file + ": cannot create a pipe for " + library + ": " + std::strerror(errno));
   }
   const pid_t child = ::fork();
   if (child < 0)
   {
     ::close(fds[0]);
     ::close(fds[1]);
-    throw FileError(file + ": cannot start a process for gmsh: " + std::strerror(errno));
+    throw FileError(file + ": cannot start a process for " + library + ": " + std::strerror(errno));
   }
   if (child == 0)
   {
     ::close(fds[0]);
-    ChildMain(fds[1], work);
+    ChildMain(fds[1], memoryBudget, work);
   }
   ::close(fds[1]);
   std::string answer;
@@ -130,16 +166,16 @@ std::string RunIsolated(
   if (timedOut)
   {
     throw FileError(
-      file + ": gmsh did not finish within " + std::to_string(seconds) + " s (stopped)");
+      file + ": " + library + " did not finish within " + std::to_string(seconds) + " s (stopped)");
   }
   if (WIFSIGNALED(status))
   {
-    throw FileError(file + ": gmsh crashed on it (signal " + std::to_string(WTERMSIG(status)) +
-      ": " + ::strsignal(WTERMSIG(status)) + ")");
+    throw FileError(file + ": " + library + " crashed on it (signal " +
+      std::to_string(WTERMSIG(status)) + ": " + ::strsignal(WTERMSIG(status)) + ")");
   }
   if (answer.empty())
   {
-    throw FileError(file + ": gmsh's process ended without an answer");
+    throw FileError(file + ": " + library + "'s process ended without an answer");
   }
   if (answer[0] == 'E')
   {
@@ -172,13 +208,13 @@ void Get(const std::string& in, std::size_t& at, std::vector<T>& values)
   std::uint64_t count = 0;
   if (in.size() - at < sizeof(count))
   {
-    throw FileError("short answer from gmsh's process");
+    throw FileError("short answer from a reader's process");
   }
   std::memcpy(&count, in.data() + at, sizeof(count));
   at += sizeof(count);
   if ((in.size() - at) / sizeof(T) < count)
   {
-    throw FileError("short answer from gmsh's process");
+    throw FileError("short answer from a reader's process");
   }
   values.resize(count);
   if (count > 0) // an empty vector's data() may be null, which memcpy does not take

@@ -1,0 +1,44 @@
+/**
+ * @file LibraryIsolation.h
+ * @brief Private to the readers that go through a format's library (gmsh, Exodus II, CGNS): the
+ * library's work on a file runs in a child process, so that a crash, a hang or a runaway
+ * allocation of the library on a hostile file is a FileError, not the end of the caller's process.
+ * (gmsh 4.8.4 corrupts its heap on some malformed files; netCDF allocates what a corrupted Exodus
+ * header declares, and the Exodus library reads out of bounds on corrupted side sets.)
+ */
+#ifndef dgmf_meshfile_LibraryIsolation_h
+#define dgmf_meshfile_LibraryIsolation_h
+
+#include "dgmf/meshfile/NamedMesh.h"
+
+#include <functional>
+#include <string>
+
+namespace dgmf
+{
+namespace meshfile
+{
+
+/**
+ * Runs `work` in a forked child and returns the bytes it returned. A FileError thrown by `work`
+ * is thrown again here with its message; a child that dies, exits without an answer, or takes
+ * longer than `seconds` (then killed) is a FileError("<file>: <library> ..."). With
+ * `memoryBudget` > 0 the child's address space may grow by that many bytes only (RLIMIT_AS), so
+ * that an allocation a corrupted count drives fails instead of taking the machine's memory. The
+ * child leaves with _exit: no atexit handlers, no flushing of the parent's streams.
+ */
+std::string RunIsolated(const std::string& file, const std::string& library, double seconds,
+  std::size_t memoryBudget, const std::function<std::string()>& work);
+
+/// The time a library may take on `path`: 2 minutes plus 10 s per MiB.
+double TimeAllowed(const std::string& path);
+
+/// A mesh as bytes, from gmsh's process to the caller's (MeshFromBytes reads them back; it throws
+/// FileError on a short answer).
+std::string MeshToBytes(const NamedMesh& mesh);
+NamedMesh MeshFromBytes(const std::string& bytes);
+
+} // namespace meshfile
+} // namespace dgmf
+
+#endif
