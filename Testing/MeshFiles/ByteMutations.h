@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -50,6 +53,26 @@ inline std::string MutateBytes(std::string bytes, std::mt19937_64& random)
     }
   }
   return bytes;
+}
+/**
+ * Writes `count` mutants of the file `valid` (seed `seed`) to `mutant`, one after the other, and
+ * calls `check(k)` after writing mutant k.
+ */
+template <typename Check>
+void ForEachMutant(const std::filesystem::path& valid, const std::filesystem::path& mutant,
+  int count, std::uint64_t seed, Check check)
+{
+  std::ifstream in(valid, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::mt19937_64 random(seed);
+  for (int k = 0; k < count; ++k)
+  {
+    {
+      std::ofstream out(mutant, std::ios::binary | std::ios::trunc);
+      out << MutateBytes(bytes, random);
+    }
+    check(k);
+  }
 }
 } // namespace dgmf_test
 

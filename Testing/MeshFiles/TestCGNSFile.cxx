@@ -680,30 +680,25 @@ TEST(CGNSFile, SeededMutantsReadAsMeshesOrFileErrors)
   const fs::path directory = WorkDirectory();
   const fs::path valid = directory / "valid.cgns";
   WriteCGNS(valid, SplitCube());
-  std::ifstream in(valid, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::mt19937_64 random(20261124);
+  const fs::path mutant = directory / "mutant.cgns";
+  const fs::path written = directory / "written.cgns";
   int meshes = 0, errors = 0;
-  for (int k = 0; k < 150; ++k)
-  {
-    const fs::path mutant = directory / "mutant.cgns";
+  dgmf_test::ForEachMutant(valid, mutant, 150, 20261124,
+    [&](int k)
     {
-      std::ofstream out(mutant, std::ios::binary | std::ios::trunc);
-      out << dgmf_test::MutateBytes(bytes, random);
-    }
-    try
-    {
-      const mf::NamedMesh mesh = mf::ReadCGNS(mutant.string());
-      mf::WriteCGNSWithPoints(mutant.string(), (directory / "written.cgns").string(),
-        mesh.Points.data(), mesh.NumberOfNodes());
-      EXPECT_EQ(mf::ReadCGNS((directory / "written.cgns").string()).Points, mesh.Points) << k;
-      ++meshes;
-    }
-    catch (const mf::FileError&)
-    {
-      ++errors;
-    }
-  }
+      try
+      {
+        const mf::NamedMesh mesh = mf::ReadCGNS(mutant.string());
+        mf::WriteCGNSWithPoints(
+          mutant.string(), written.string(), mesh.Points.data(), mesh.NumberOfNodes());
+        EXPECT_EQ(mf::ReadCGNS(written.string()).Points, mesh.Points) << k;
+        ++meshes;
+      }
+      catch (const mf::FileError&)
+      {
+        ++errors;
+      }
+    });
   EXPECT_EQ(meshes + errors, 150);
   EXPECT_GT(errors, 0);
 }

@@ -403,30 +403,25 @@ TEST(ExodusFile, SeededMutantsReadAsMeshesOrFileErrors)
   const fs::path directory = WorkDirectory();
   const fs::path valid = directory / "valid.exo";
   WriteExodus(valid, TwoHexahedra());
-  std::ifstream in(valid, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::mt19937_64 random(20261124);
+  const fs::path mutant = directory / "mutant.exo";
+  const fs::path written = directory / "written.exo";
   int meshes = 0, errors = 0;
-  for (int k = 0; k < 150; ++k)
-  {
-    const fs::path mutant = directory / "mutant.exo";
+  dgmf_test::ForEachMutant(valid, mutant, 150, 20261124,
+    [&](int k)
     {
-      std::ofstream out(mutant, std::ios::binary | std::ios::trunc);
-      out << dgmf_test::MutateBytes(bytes, random);
-    }
-    try
-    {
-      const mf::NamedMesh mesh = mf::ReadExodus(mutant.string());
-      mf::WriteExodusWithPoints(mutant.string(), (directory / "written.exo").string(),
-        mesh.Points.data(), mesh.NumberOfNodes());
-      EXPECT_EQ(mf::ReadExodus((directory / "written.exo").string()).Points, mesh.Points) << k;
-      ++meshes;
-    }
-    catch (const mf::FileError&)
-    {
-      ++errors;
-    }
-  }
+      try
+      {
+        const mf::NamedMesh mesh = mf::ReadExodus(mutant.string());
+        mf::WriteExodusWithPoints(
+          mutant.string(), written.string(), mesh.Points.data(), mesh.NumberOfNodes());
+        EXPECT_EQ(mf::ReadExodus(written.string()).Points, mesh.Points) << k;
+        ++meshes;
+      }
+      catch (const mf::FileError&)
+      {
+        ++errors;
+      }
+    });
   EXPECT_EQ(meshes + errors, 150);
   EXPECT_GT(errors, 0);
 }

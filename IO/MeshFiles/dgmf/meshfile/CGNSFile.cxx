@@ -562,13 +562,7 @@ static NamedMesh ReadCGNSInThisProcess(const std::string& path)
 
 NamedMesh ReadCGNS(const std::string& path)
 {
-  // In a child process with a bounded address space: the library under the reader allocates
-  // what a corrupted header declares, and reads out of bounds on some corrupted files.
-  std::error_code error;
-  const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
-  const std::size_t budget = (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
-  return MeshFromBytes(RunIsolated(path, "the CGNS library", TimeAllowed(path), budget,
-    [&]() { return MeshToBytes(ReadCGNSInThisProcess(path)); }));
+  return ReadMeshIsolated(path, "the CGNS library", [&]() { return ReadCGNSInThisProcess(path); });
 }
 
 void WriteCGNSWithPoints(

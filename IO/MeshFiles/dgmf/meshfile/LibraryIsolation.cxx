@@ -99,6 +99,16 @@ double TimeAllowed(const std::string& path)
   return 120.0 + (error ? 0.0 : 10.0 * static_cast<double>(bytes) / (1 << 20));
 }
 
+NamedMesh ReadMeshIsolated(
+  const std::string& path, const std::string& library, const std::function<NamedMesh()>& read)
+{
+  std::error_code error;
+  const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+  const std::size_t budget = (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
+  return MeshFromBytes(
+    RunIsolated(path, library, TimeAllowed(path), budget, [&]() { return MeshToBytes(read()); }));
+}
+
 std::string RunIsolated(const std::string& file, const std::string& library, double seconds,
   std::size_t memoryBudget, const std::function<std::string()>& work)
 {

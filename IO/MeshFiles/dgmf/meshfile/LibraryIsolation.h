@@ -33,6 +33,14 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
 /// The time a library may take on `path`: 2 minutes plus 10 s per MiB.
 double TimeAllowed(const std::string& path);
 
+/**
+ * The mesh `read` gives, read in a child process (RunIsolated) with TimeAllowed(path) and an
+ * address space that may grow by 1 GiB plus 64 times the file's size: for the readers whose
+ * library allocates what a corrupted header declares (netCDF, HDF5).
+ */
+NamedMesh ReadMeshIsolated(
+  const std::string& path, const std::string& library, const std::function<NamedMesh()>& read);
+
 /// A mesh as bytes, from gmsh's process to the caller's (MeshFromBytes reads them back; it throws
 /// FileError on a short answer).
 std::string MeshToBytes(const NamedMesh& mesh);
