@@ -2,15 +2,20 @@
  * dgmf-benchmark: the paper's Table 3 on this machine.
  *
  *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
- *                  [--repeats N] [--idw-max-size K] [--csv FILE]
+ *                  [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]
+ *                  [--csv FILE]
  *
  * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
  * their generation is not timed), each method and each thread count: the first deformation
  * (graph, location and mapping, from an empty cache) and a repeated deformation with a new motion
  * (cache reused), through vtkDGMFDeformFilter with the quality metric off; then the quality
  * metric alone. Times are medians over the repeats. Writes one CSV row per configuration.
+ *
+ * --numberings: the node numberings of each mesh (Renumbering.h): the generator's layer by layer
+ * (default), a Hilbert curve's (a renumbered unstructured mesh), a random permutation.
  */
 #include "LayeredMesh.h"
+#include "Renumbering.h"
 
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
@@ -27,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -78,6 +84,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> sizes = { "0", "1", "2", "3" };
   std::vector<std::string> methods = { "dgm", "dgmf", "dgrbf", "idw" };
   std::vector<std::string> threads = { "1", "2" };
+  std::vector<std::string> numberings = { "layered" };
   int repeats = 3;
   int idwMaxSize = 1;
   std::string csvPath = "benchmark.csv";
@@ -95,6 +102,8 @@ int main(int argc, char* argv[])
       repeats = std::max(1, std::atoi(value.c_str()));
     else if (option == "--idw-max-size")
       idwMaxSize = std::atoi(value.c_str());
+    else if (option == "--numberings")
+      numberings = Split(value);
     else if (option == "--csv")
       csvPath = value;
     else
@@ -105,107 +114,122 @@ int main(int argc, char* argv[])
   }
 
   std::ofstream csv(csvPath);
-  csv << "nodes,boundary_nodes,method,threads,graph_s,location_s,mapping_s,first_s,repeated_s,"
+  csv << "nodes,boundary_nodes,numbering,method,threads,graph_s,location_s,mapping_s,first_s,"
+         "repeated_s,"
          "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s\n";
   for (const std::string& sizeName : sizes)
   {
     const int sizeIndex = std::atoi(sizeName.c_str());
     const dgmf_bench::LayeredMeshSize size = dgmf_bench::PaperSize(sizeIndex);
-    const Clock::time_point made = Clock::now();
-    vtkSmartPointer<vtkUnstructuredGrid> mesh = dgmf_bench::MakeLayeredMesh(size);
-    std::cerr << "mesh " << size.Name << ": " << mesh->GetNumberOfPoints() << " nodes, "
-              << size.BoundaryNodes() << " boundary nodes, " << mesh->GetNumberOfCells()
-              << " hexahedra (generated in " << Seconds(made) << " s)\n";
-    for (const std::string& methodName : methods)
+    for (const std::string& numbering : numberings)
     {
-      const int method = vtkDGMFDeformFilter::GetMethodFromName(methodName.c_str());
-      if (method < 0)
+      const Clock::time_point made = Clock::now();
+      vtkSmartPointer<vtkUnstructuredGrid> mesh = dgmf_bench::MakeLayeredMesh(size);
+      try
       {
-        std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";
+        dgmf_bench::Renumber(mesh, dgmf_bench::NumberingFromName(numbering));
+      }
+      catch (const std::invalid_argument& e)
+      {
+        std::cerr << "dgmf-benchmark: " << e.what() << "\n";
         return 2;
       }
-      if (method == vtkDGMFDeformFilter::IDW && sizeIndex > idwMaxSize)
+      std::cerr << "mesh " << size.Name << ", " << numbering
+                << " numbering: " << mesh->GetNumberOfPoints() << " nodes, " << size.BoundaryNodes()
+                << " boundary nodes, " << mesh->GetNumberOfCells() << " hexahedra (generated in "
+                << Seconds(made) << " s)\n";
+      for (const std::string& methodName : methods)
       {
-        continue; // O(N Nb): hours on the large meshes
-      }
-      const int methodRepeats = method == vtkDGMFDeformFilter::IDW ? 1 : repeats;
-      for (const std::string& threadName : threads)
-      {
-        const int threadCount = std::atoi(threadName.c_str());
-        std::vector<double> graph, location, mapping, first, repeated;
-        Result result;
-        vtkNew<vtkDGMFDeformFilter> filter;
-        filter->SetInputData(mesh);
-        filter->SetBoundaryMarkerArrayName("BoundaryMarker");
-        filter->SetMethod(method);
-        filter->SetNumberOfThreads(threadCount);
-        filter->ComputeQualityOff();
-        for (int r = 0; r < methodRepeats; ++r)
+        const int method = vtkDGMFDeformFilter::GetMethodFromName(methodName.c_str());
+        if (method < 0)
         {
-          filter->ReleaseCache();
-          filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
-          filter->SetTranslation(0.1, 0.0, 0.0);
-          Clock::time_point start = Clock::now();
-          filter->Update();
-          first.push_back(Seconds(start));
-          graph.push_back(filter->GetLastGraphSeconds());
-          location.push_back(filter->GetLastLocationSeconds());
-          mapping.push_back(filter->GetLastDeformationSeconds());
-          // A new motion: only the mapping runs again.
-          filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
-          start = Clock::now();
-          filter->Update();
-          repeated.push_back(Seconds(start));
-          if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
-          {
-            std::cerr << "dgmf-benchmark: the cache was not reused\n";
-            return 1;
-          }
+          std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";
+          return 2;
         }
-        result.Graph = Median(graph);
-        result.Location = Median(location);
-        result.Mapping = Median(mapping);
-        result.First = Median(first);
-        result.Repeated = Median(repeated);
-        result.CacheBytesPerNode =
-          static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
+        if (method == vtkDGMFDeformFilter::IDW && sizeIndex > idwMaxSize)
+        {
+          continue; // O(N Nb): hours on the large meshes
+        }
+        const int methodRepeats = method == vtkDGMFDeformFilter::IDW ? 1 : repeats;
+        for (const std::string& threadName : threads)
+        {
+          const int threadCount = std::atoi(threadName.c_str());
+          std::vector<double> graph, location, mapping, first, repeated;
+          Result result;
+          vtkNew<vtkDGMFDeformFilter> filter;
+          filter->SetInputData(mesh);
+          filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+          filter->SetMethod(method);
+          filter->SetNumberOfThreads(threadCount);
+          filter->ComputeQualityOff();
+          for (int r = 0; r < methodRepeats; ++r)
+          {
+            filter->ReleaseCache();
+            filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
+            filter->SetTranslation(0.1, 0.0, 0.0);
+            Clock::time_point start = Clock::now();
+            filter->Update();
+            first.push_back(Seconds(start));
+            graph.push_back(filter->GetLastGraphSeconds());
+            location.push_back(filter->GetLastLocationSeconds());
+            mapping.push_back(filter->GetLastDeformationSeconds());
+            // A new motion: only the mapping runs again.
+            filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
+            start = Clock::now();
+            filter->Update();
+            repeated.push_back(Seconds(start));
+            if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
+            {
+              std::cerr << "dgmf-benchmark: the cache was not reused\n";
+              return 1;
+            }
+          }
+          result.Graph = Median(graph);
+          result.Location = Median(location);
+          result.Mapping = Median(mapping);
+          result.First = Median(first);
+          result.Repeated = Median(repeated);
+          result.CacheBytesPerNode =
+            static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
 
-        // The quality metric alone, on the last output.
-        vtkNew<vtkSizeSkewQualityFilter> quality;
-        quality->SetInputData(filter->GetOutput());
-        quality->SetReferenceData(mesh);
-        quality->SetNumberOfThreads(threadCount);
-        const Clock::time_point qualityStart = Clock::now();
-        quality->Update();
-        result.Quality = Seconds(qualityStart);
-        // With the face non-orthogonality: the first run finds the internal faces, the second
-        // reuses them (a new motion of the same mesh).
-        vtkNew<vtkSizeSkewQualityFilter> withFaces;
-        withFaces->SetInputData(filter->GetOutput());
-        withFaces->SetReferenceData(mesh);
-        withFaces->SetNumberOfThreads(threadCount);
-        withFaces->ComputeNonOrthogonalityOn();
-        Clock::time_point facesStart = Clock::now();
-        withFaces->Update();
-        result.QualityWithFacesFirst = Seconds(facesStart);
-        withFaces->Modified();
-        facesStart = Clock::now();
-        withFaces->Update();
-        result.QualityWithFaces = Seconds(facesStart);
+          // The quality metric alone, on the last output.
+          vtkNew<vtkSizeSkewQualityFilter> quality;
+          quality->SetInputData(filter->GetOutput());
+          quality->SetReferenceData(mesh);
+          quality->SetNumberOfThreads(threadCount);
+          const Clock::time_point qualityStart = Clock::now();
+          quality->Update();
+          result.Quality = Seconds(qualityStart);
+          // With the face non-orthogonality: the first run finds the internal faces, the second
+          // reuses them (a new motion of the same mesh).
+          vtkNew<vtkSizeSkewQualityFilter> withFaces;
+          withFaces->SetInputData(filter->GetOutput());
+          withFaces->SetReferenceData(mesh);
+          withFaces->SetNumberOfThreads(threadCount);
+          withFaces->ComputeNonOrthogonalityOn();
+          Clock::time_point facesStart = Clock::now();
+          withFaces->Update();
+          result.QualityWithFacesFirst = Seconds(facesStart);
+          withFaces->Modified();
+          facesStart = Clock::now();
+          withFaces->Update();
+          result.QualityWithFaces = Seconds(facesStart);
 
-        csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << methodName << ","
-            << threadCount << "," << result.Graph << "," << result.Location << "," << result.Mapping
-            << "," << result.First << "," << result.Repeated << "," << result.Quality << ","
-            << result.CacheBytesPerNode << "," << PeakResidentMegabytes() << ","
-            << result.QualityWithFacesFirst << "," << result.QualityWithFaces << "\n";
-        csv.flush();
-        std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", " << threadCount
-                  << " thread(s): first " << result.First << " s (graph " << result.Graph
-                  << ", location " << result.Location << ", mapping " << result.Mapping
-                  << "), repeated " << result.Repeated << " s, quality " << result.Quality
-                  << " s (with non-orthogonality " << result.QualityWithFacesFirst << " s first, "
-                  << result.QualityWithFaces << " s repeated), cache " << std::setprecision(1)
-                  << result.CacheBytesPerNode << " B/node\n";
+          csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << numbering << ","
+              << methodName << "," << threadCount << "," << result.Graph << "," << result.Location
+              << "," << result.Mapping << "," << result.First << "," << result.Repeated << ","
+              << result.Quality << "," << result.CacheBytesPerNode << "," << PeakResidentMegabytes()
+              << "," << result.QualityWithFacesFirst << "," << result.QualityWithFaces << "\n";
+          csv.flush();
+          std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", "
+                    << threadCount << " thread(s): first " << result.First << " s (graph "
+                    << result.Graph << ", location " << result.Location << ", mapping "
+                    << result.Mapping << "), repeated " << result.Repeated << " s, quality "
+                    << result.Quality << " s (with non-orthogonality "
+                    << result.QualityWithFacesFirst << " s first, " << result.QualityWithFaces
+                    << " s repeated), cache " << std::setprecision(1) << result.CacheBytesPerNode
+                    << " B/node\n";
+        }
       }
     }
   }

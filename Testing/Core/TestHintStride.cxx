@@ -168,3 +168,48 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
     }
   }
 }
+
+TEST(LocationOrder, AShuffledNumberingIsLocatedInSpatialOrderRightAndThreadIndependent)
+{
+  // A mesh reassembled from pieces numbers its nodes at random: IsNumberingCoherent says so, and
+  // the nodes are located in a spatial order (SpatialLocationOrder) instead of their own.
+  const LayeredMesh layered = MakeLayeredMesh(40, 12);
+  const std::size_t n = layered.Kinds.size();
+  std::vector<std::size_t> oldOf(n);
+  std::iota(oldOf.begin(), oldOf.end(), std::size_t{ 0 });
+  std::shuffle(oldOf.begin(), oldOf.end(), std::mt19937(11));
+  std::vector<double> points(3 * n);
+  std::vector<dgmf::NodeKind> kinds(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    std::copy_n(layered.Points.data() + 3 * oldOf[k], 3, points.data() + 3 * k);
+    kinds[k] = layered.Kinds[oldOf[k]];
+  }
+  const dgmf::DelaunayMapping ordered(
+    3, layered.Points.data(), n, layered.Kinds.data(), dgmf::SerialFor);
+  const dgmf::DelaunayMapping one(3, points.data(), n, kinds.data(), dgmf::SerialFor);
+  const dgmf::DelaunayMapping two(3, points.data(), n, kinds.data(), TwoThreads());
+  EXPECT_FALSE(ordered.GetLocatedInSpatialOrder());
+  EXPECT_TRUE(one.GetLocatedInSpatialOrder());
+  EXPECT_EQ(one.GetNumberOfOutsideNodes(), 0u);
+  const dgmf::DelaunayGraph& graph = one.GetGraph();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
+    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
+      << "node " << i;
+    if (one.IsBoundaryNode(i))
+      continue;
+    const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
+    for (int c = 0; c < 3; ++c)
+    {
+      double x = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        ASSERT_GE(one.GetWeights(i)[k], 0.0);
+        x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
+      }
+      ASSERT_NEAR(x, points[3 * i + c], 1e-10) << "node " << i;
+    }
+  }
+}

@@ -390,7 +390,7 @@ void DelaunayGraph::BuildSeedGrid()
         centroid[c] += this->Records[e].Corners[k][c] / n;
       }
     }
-    std::int32_t& cell = this->SeedGrid[this->SeedCell(centroid)];
+    std::int32_t& cell = this->SeedGrid[this->GetSeedCell(centroid)];
     cell = cell < 0 ? static_cast<std::int32_t>(e) : cell;
   }
   // ... and empty cells the element of a filled neighbour, by sweeps along each axis.
@@ -420,7 +420,7 @@ void DelaunayGraph::BuildSeedGrid()
   }
 }
 
-std::size_t DelaunayGraph::SeedCell(const double p[3]) const
+std::size_t DelaunayGraph::GetSeedCell(const double p[3]) const
 {
   std::size_t index = 0, stride = 1;
   for (int c = 0; c < 3; ++c)
@@ -437,7 +437,7 @@ std::size_t DelaunayGraph::SeedCell(const double p[3]) const
 
 std::int32_t DelaunayGraph::GetSeedElement(const double p[3]) const
 {
-  return this->SeedGrid[this->SeedCell(p)];
+  return this->SeedGrid[this->GetSeedCell(p)];
 }
 
 DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int32_t hint) const

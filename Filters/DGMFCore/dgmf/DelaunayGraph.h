@@ -8,6 +8,7 @@
 #include "dgmf/Simd.h"
 #include "dgmf/WalkRecord.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -121,6 +122,27 @@ public:
    */
   std::int32_t GetSeedElement(const double p[3]) const;
 
+  /// The seed grid's cell containing `p` (clamped to the grid): i + nx (j + ny k) for the cell
+  /// (i, j, k) of a grid of nx x ny x nz cells (GetSeedGridGeometry).
+  std::size_t GetSeedCell(const double p[3]) const;
+
+  /// The seed grid's geometry: cell (i, j, k) spans Origin + [i, i + 1) / InverseCellSize along x,
+  /// and so on; Cells per axis (1 along z in 2D).
+  struct SeedGridGeometry
+  {
+    double Origin[3];
+    double InverseCellSize;
+    std::int64_t Cells[3];
+  };
+  SeedGridGeometry GetSeedGridGeometry() const
+  {
+    SeedGridGeometry grid{};
+    std::copy(this->SeedOrigin, this->SeedOrigin + 3, grid.Origin);
+    grid.InverseCellSize = this->SeedInverseSize;
+    std::copy(this->SeedCells, this->SeedCells + 3, grid.Cells);
+    return grid;
+  }
+
   /**
    * Locates `p` with CGAL's exact walk, starting from element `hint` (or CGAL's default start
    * when `hint` < 0). A point outside the convex hull gets the hull element across the hull face
@@ -155,7 +177,6 @@ private:
   std::int64_t SeedCells[3] = { 1, 1, 1 };
   std::vector<std::int32_t> SeedGrid;
   void BuildSeedGrid();
-  std::size_t SeedCell(const double p[3]) const;
 };
 
 } // namespace dgmf

@@ -2,6 +2,7 @@
 
 #include "dgmf/DeformationProblem.h"
 #include "dgmf/Finite.h"
+#include "dgmf/LocationOrder.h"
 #include "dgmf/NodeLocation.h"
 
 #include <algorithm>
@@ -124,6 +125,50 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     const auto node = static_cast<std::size_t>(this->BoundaryNodes[b]);
     this->NodeElement[node] = -vertexOfPoint[b] - 1;
     this->Weights[node * n] = 1.0;
+  }
+
+  // A numbering without spatial coherence (and without a hint stride) is located in a spatial
+  // order instead: else every walk would start far from its node.
+  if (hintStride == 0 &&
+    !IsNumberingCoherent(*this->Graph, points, this->Kinds.data(), numberOfNodes))
+  {
+    const std::vector<std::int32_t> order =
+      SpatialLocationOrder(*this->Graph, points, this->Kinds.data(), numberOfNodes);
+    // Each block gathers its nodes' coordinates, is located as one contiguous run, and scatters
+    // its results: the nodes' own arrays are read and written with independent accesses, which
+    // the processor overlaps, instead of inside the walks.
+    const std::size_t pieces = (order.size() + BlockSize - 1) / BlockSize;
+    std::vector<NodeLocationCounts> counts(pieces);
+    const std::vector<NodeKind> interior(BlockSize, NodeKind::Interior);
+    ForEachBlock(parallelFor, pieces,
+      [&](std::size_t piece)
+      {
+        const std::size_t begin = piece * BlockSize;
+        const std::size_t count = std::min(begin + BlockSize, order.size()) - begin;
+        const std::int32_t* nodes = order.data() + begin;
+        const auto m = static_cast<std::size_t>(n);
+        std::vector<double> xyz(3 * count), w(m * count);
+        std::vector<std::int32_t> element(count, NotLocated);
+        for (std::size_t k = 0; k < count; ++k)
+        {
+          std::copy_n(points + 3 * static_cast<std::size_t>(nodes[k]), 3, xyz.data() + 3 * k);
+        }
+        counts[piece] = LocateNodes(
+          *this->Graph, xyz.data(), interior.data(), 0, count, element.data(), w.data());
+        for (std::size_t k = 0; k < count; ++k)
+        {
+          const auto node = static_cast<std::size_t>(nodes[k]);
+          this->NodeElement[node] = element[k];
+          std::copy_n(w.data() + m * k, m, this->Weights.data() + m * node);
+        }
+      });
+    for (const NodeLocationCounts& count : counts)
+    {
+      this->OutsideNodes += count.Outside;
+    }
+    this->SpatialOrder = true;
+    this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
+    return;
   }
 
   // The pieces located in parallel. With a hint stride of at least a block, the nodes go in

@@ -31,10 +31,11 @@ namespace dgmf
  * runs of consecutive nodes; a node walks from the element of its stride neighbour (node
  * i - hintStride, for structured and layered meshes), else from the element of the run's
  * previous node (mesh generators number nodes with spatial coherence), else from the graph's
- * seed element, with CGAL as the exact fallback. The runs of a block walk in turn so that their
- * cache misses overlap. With a hint stride of at least a block, the nodes go in waves of one
- * stride, each cut into WavePieces blocks. Because blocks, runs and waves are fixed, the result
- * does not depend on the number of threads.
+ * seed element, with CGAL as the exact fallback. A numbering without spatial coherence
+ * (IsNumberingCoherent) is located in a spatial order instead (SpatialLocationOrder). The runs of a
+ * block walk in turn so that their cache misses overlap. With a hint stride of at least a block,
+ * the nodes go in waves of one stride, each cut into WavePieces blocks. Because blocks, runs and
+ * waves are fixed, the result does not depend on the number of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
@@ -134,6 +135,9 @@ public:
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
   /// Number of interior nodes found from their stride neighbour's element (see hintStride).
   std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
+  /// True when the nodes were located in a spatial order (SpatialLocationOrder) because their
+  /// numbering is not spatially coherent (IsNumberingCoherent).
+  bool GetLocatedInSpatialOrder() const { return this->SpatialOrder; }
   /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
   std::size_t GetNumberOfConflictingNodes() const { return this->ConflictingNodes; }
 
@@ -156,6 +160,7 @@ private:
   std::size_t OutsideNodes = 0;
   std::size_t StrideHits = 0;
   std::size_t ConflictingNodes = 0;
+  bool SpatialOrder = false;
   double GraphSeconds = 0.0;
   double LocationSeconds = 0.0;
 };

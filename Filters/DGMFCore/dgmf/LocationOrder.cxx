@@ -1,0 +1,208 @@
+#include "dgmf/LocationOrder.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace dgmf
+{
+namespace
+{
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Grid = DelaunayGraph::SeedGridGeometry;
+
+/// Sub-cells per axis of a crowded seed cell.
+constexpr std::int64_t SubCells = 8;
+
+/// A seed cell with more nodes than this is ordered by its sub-cells too.
+constexpr std::size_t CrowdedCell = 32;
+
+/// The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k)) along CGAL's
+/// Hilbert curve through the cells' centres.
+std::vector<std::uint32_t> HilbertRanks(const std::int64_t cells[3], int dimension)
+{
+  const auto total = static_cast<std::size_t>(cells[0] * cells[1] * cells[2]);
+  std::vector<std::size_t> byCurve(total);
+  std::iota(byCurve.begin(), byCurve.end(), std::size_t{ 0 });
+  auto coordinate = [&](std::size_t c, int axis)
+  {
+    const auto index = static_cast<std::int64_t>(c);
+    const std::int64_t along = axis == 0 ? index % cells[0]
+      : axis == 1                        ? (index / cells[0]) % cells[1]
+                                         : index / (cells[0] * cells[1]);
+    return static_cast<double>(along);
+  };
+  if (dimension == 2)
+  {
+    std::vector<Kernel::Point_2> centres;
+    centres.reserve(total);
+    for (std::size_t c = 0; c < total; ++c)
+    {
+      centres.emplace_back(coordinate(c, 0), coordinate(c, 1));
+    }
+    using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel,
+      CGAL::Pointer_property_map<Kernel::Point_2>::type>;
+    CGAL::hilbert_sort(byCurve.begin(), byCurve.end(),
+      Traits(CGAL::make_property_map(centres.data())), CGAL::Hilbert_sort_middle_policy());
+  }
+  else
+  {
+    std::vector<Kernel::Point_3> centres;
+    centres.reserve(total);
+    for (std::size_t c = 0; c < total; ++c)
+    {
+      centres.emplace_back(coordinate(c, 0), coordinate(c, 1), coordinate(c, 2));
+    }
+    using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel,
+      CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+    CGAL::hilbert_sort(byCurve.begin(), byCurve.end(),
+      Traits(CGAL::make_property_map(centres.data())), CGAL::Hilbert_sort_middle_policy());
+  }
+  std::vector<std::uint32_t> rank(total);
+  for (std::size_t r = 0; r < total; ++r)
+  {
+    rank[byCurve[r]] = static_cast<std::uint32_t>(r);
+  }
+  return rank;
+}
+
+/// Where a node lies in the seed grid: its cell (i, j, k) and, in units of sub-cells, its
+/// position inside the cell (0 .. SubCells - 1 per axis). Points outside the grid are clamped.
+struct GridPosition
+{
+  std::int64_t Cell[3] = { 0, 0, 0 };
+  std::int64_t Sub[3] = { 0, 0, 0 };
+
+  GridPosition(const Grid& grid, const double* x, int dimension)
+  {
+    for (int c = 0; c < dimension; ++c)
+    {
+      const double along = std::clamp((x[c] - grid.Origin[c]) * grid.InverseCellSize, 0.0,
+        static_cast<double>(grid.Cells[c]) - 1e-9);
+      this->Cell[c] = static_cast<std::int64_t>(along);
+      this->Sub[c] = std::min<std::int64_t>(
+        static_cast<std::int64_t>((along - static_cast<double>(this->Cell[c])) * SubCells),
+        SubCells - 1);
+    }
+  }
+
+  std::size_t CellIndex(const Grid& grid) const
+  {
+    return static_cast<std::size_t>(
+      this->Cell[0] + grid.Cells[0] * (this->Cell[1] + grid.Cells[1] * this->Cell[2]));
+  }
+  std::size_t SubIndex() const
+  {
+    return static_cast<std::size_t>(
+      this->Sub[0] + SubCells * (this->Sub[1] + SubCells * this->Sub[2]));
+  }
+};
+
+/// Stable counting sort of `nodes` by key(node) < keys.
+template <typename Key>
+void CountingSort(std::int32_t* nodes, std::size_t count, std::size_t keys, Key&& key,
+  std::vector<std::size_t>& start, std::vector<std::int32_t>& scratch)
+{
+  start.assign(keys + 1, 0);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    ++start[key(nodes[k]) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  scratch.resize(count);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    scratch[start[key(nodes[k])]++] = nodes[k];
+  }
+  std::copy(scratch.begin(), scratch.end(), nodes);
+}
+} // namespace
+
+bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
+  std::size_t numberOfNodes)
+{
+  const Grid grid = graph.GetSeedGridGeometry();
+  const int dimension = graph.GetDimension();
+  const std::size_t step = std::max<std::size_t>(1, numberOfNodes / CoherenceSamples);
+  std::size_t pairs = 0, near = 0;
+  for (std::size_t i = 0; i + 1 < numberOfNodes; i += step)
+  {
+    if (IsBoundary(kinds[i]) || IsBoundary(kinds[i + 1]))
+    {
+      continue;
+    }
+    const GridPosition a(grid, points + 3 * i, dimension);
+    const GridPosition b(grid, points + 3 * (i + 1), dimension);
+    ++pairs;
+    bool adjacent = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      adjacent = adjacent && std::abs(a.Cell[c] - b.Cell[c]) <= 1;
+    }
+    near += adjacent ? 1 : 0;
+  }
+  return 2 * near >= pairs;
+}
+
+std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
+  const NodeKind* kinds, std::size_t numberOfNodes)
+{
+  const Grid grid = graph.GetSeedGridGeometry();
+  const int dimension = graph.GetDimension();
+  std::vector<std::int32_t> order;
+  order.reserve(numberOfNodes);
+  for (std::size_t i = 0; i < numberOfNodes; ++i)
+  {
+    if (!IsBoundary(kinds[i]))
+    {
+      order.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  // The cells along the curve; each node's rank, computed once.
+  const std::vector<std::uint32_t> cellRank = HilbertRanks(grid.Cells, dimension);
+  std::vector<std::uint32_t> rankOfNode(numberOfNodes);
+  for (std::int32_t node : order)
+  {
+    const auto i = static_cast<std::size_t>(node);
+    rankOfNode[i] = cellRank[GridPosition(grid, points + 3 * i, dimension).CellIndex(grid)];
+  }
+  std::vector<std::size_t> start;
+  std::vector<std::int32_t> scratch;
+  CountingSort(
+    order.data(), order.size(), cellRank.size(),
+    [&](std::int32_t node) { return rankOfNode[static_cast<std::size_t>(node)]; }, start, scratch);
+  rankOfNode = std::vector<std::uint32_t>();
+
+  // A crowded cell (near a body, where the graph's elements are small) in the order of the same
+  // curve through its sub-cells.
+  const std::int64_t sub[3] = { SubCells, SubCells, dimension == 3 ? SubCells : 1 };
+  const std::vector<std::uint32_t> subRank = HilbertRanks(sub, dimension);
+  std::vector<std::size_t> subStart;
+  for (std::size_t first = 0; first < order.size();)
+  {
+    // The cell's nodes end where start[] (now the cells' ends) says.
+    const std::size_t last = *std::upper_bound(start.begin(), start.end(), first);
+    const std::size_t count = last - first;
+    if (count > CrowdedCell)
+    {
+      CountingSort(
+        order.data() + first, count, subRank.size(),
+        [&](std::int32_t node)
+        {
+          return subRank[GridPosition(grid, points + 3 * static_cast<std::size_t>(node), dimension)
+                           .SubIndex()];
+        },
+        subStart, scratch);
+    }
+    first = last;
+  }
+  return order;
+}
+
+} // namespace dgmf
