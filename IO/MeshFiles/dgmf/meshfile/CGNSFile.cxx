@@ -565,7 +565,8 @@ NamedMesh ReadCGNS(const std::string& path)
   return ReadMeshIsolated(path, "the CGNS library", [&]() { return ReadCGNSInThisProcess(path); });
 }
 
-void WriteCGNSWithPoints(
+/// WriteCGNSWithPoints in this process (WriteCGNSWithPoints runs it in a child).
+static void WriteCGNSWithPointsInThisProcess(
   const std::string& source, const std::string& target, const double* points, std::size_t count)
 {
   ZoneLayout layout;
@@ -625,6 +626,13 @@ void WriteCGNSWithPoints(
       }
       file.Close();
     });
+}
+
+void WriteCGNSWithPoints(
+  const std::string& source, const std::string& target, const double* points, std::size_t count)
+{
+  WriteIsolated(source, target, "the CGNS library",
+    [&]() { WriteCGNSWithPointsInThisProcess(source, target, points, count); });
 }
 
 } // namespace meshfile

@@ -415,10 +415,11 @@ NamedMesh ReadExodus(const std::string& path)
     path, "the Exodus library", [&]() { return ReadExodusInThisProcess(path); });
 }
 
-void WriteExodusWithPoints(
+/// WriteExodusWithPoints in this process (WriteExodusWithPoints runs it in a child).
+static void WriteExodusWithPointsInThisProcess(
   const std::string& source, const std::string& target, const double* points, std::size_t count)
 {
-  const NamedMesh mesh = ReadExodus(source);
+  const NamedMesh mesh = ReadExodusInThisProcess(source);
   if (count != mesh.NumberOfNodes())
   {
     throw FileError(target + ": " + std::to_string(count) + " points given for the " +
@@ -471,6 +472,13 @@ void WriteExodusWithPoints(
       }
       file.Close();
     });
+}
+
+void WriteExodusWithPoints(
+  const std::string& source, const std::string& target, const double* points, std::size_t count)
+{
+  WriteIsolated(source, target, "the Exodus library",
+    [&]() { WriteExodusWithPointsInThisProcess(source, target, points, count); });
 }
 
 } // namespace meshfile

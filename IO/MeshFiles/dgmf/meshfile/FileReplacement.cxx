@@ -11,12 +11,19 @@ namespace meshfile
 {
 namespace fs = std::filesystem;
 
+std::string TemporaryBeside(const std::string& target)
+{
+  const fs::path path(target);
+  return (
+    path.parent_path() / ("." + path.stem().string() + ".dgmf-writing" + path.extension().string()))
+    .string();
+}
+
 void WriteModifiedCopy(const std::string& source, const std::string& target,
   const std::function<void(const std::string& temporary)>& modify)
 {
   const fs::path path(target);
-  const fs::path temporary =
-    path.parent_path() / ("." + path.stem().string() + ".dgmf-writing" + path.extension().string());
+  const fs::path temporary = TemporaryBeside(target);
   std::error_code error;
   if (!fs::copy_file(source, temporary, fs::copy_options::overwrite_existing, error))
   {

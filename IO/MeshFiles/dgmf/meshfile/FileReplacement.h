@@ -25,6 +25,9 @@ namespace meshfile
 void WriteModifiedCopy(const std::string& source, const std::string& target,
   const std::function<void(const std::string& temporary)>& modify);
 
+/// The temporary file WriteModifiedCopy writes beside `target`.
+std::string TemporaryBeside(const std::string& target);
+
 } // namespace meshfile
 } // namespace dgmf
 

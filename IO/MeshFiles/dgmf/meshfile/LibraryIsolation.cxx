@@ -1,5 +1,6 @@
 #include "dgmf/meshfile/LibraryIsolation.h"
 
+#include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/NamedMesh.h"
 
 #include <poll.h>
@@ -99,14 +100,42 @@ double TimeAllowed(const std::string& path)
   return 120.0 + (error ? 0.0 : 10.0 * static_cast<double>(bytes) / (1 << 20));
 }
 
-NamedMesh ReadMeshIsolated(
-  const std::string& path, const std::string& library, const std::function<NamedMesh()>& read)
+namespace
+{
+/// The address space a reader's child may add: 1 GiB plus 64 times the file's size.
+std::size_t MemoryBudget(const std::string& path)
 {
   std::error_code error;
   const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
-  const std::size_t budget = (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
-  return MeshFromBytes(
-    RunIsolated(path, library, TimeAllowed(path), budget, [&]() { return MeshToBytes(read()); }));
+  return (std::size_t{ 1 } << 30) + 64 * (error ? 0 : bytes);
+}
+} // namespace
+
+NamedMesh ReadMeshIsolated(
+  const std::string& path, const std::string& library, const std::function<NamedMesh()>& read)
+{
+  return MeshFromBytes(RunIsolated(
+    path, library, TimeAllowed(path), MemoryBudget(path), [&]() { return MeshToBytes(read()); }));
+}
+
+void WriteIsolated(const std::string& source, const std::string& target, const std::string& library,
+  const std::function<void()>& write)
+{
+  try
+  {
+    RunIsolated(source, library, TimeAllowed(source), MemoryBudget(source),
+      [&]()
+      {
+        write();
+        return std::string();
+      });
+  }
+  catch (const FileError&)
+  {
+    std::error_code error;
+    std::filesystem::remove(TemporaryBeside(target), error);
+    throw;
+  }
 }
 
 std::string RunIsolated(const std::string& file, const std::string& library, double seconds,

@@ -41,6 +41,15 @@ double TimeAllowed(const std::string& path);
 NamedMesh ReadMeshIsolated(
   const std::string& path, const std::string& library, const std::function<NamedMesh()>& read);
 
+/**
+ * Runs `write` (which reads `source` and writes `target` through WriteModifiedCopy) in a child
+ * process with the same time and memory budget: the library's state after a file it fails on
+ * (HDF5 keeps objects open) stays in the child. When it fails, the temporary file beside
+ * `target` is removed and the FileError thrown here.
+ */
+void WriteIsolated(const std::string& source, const std::string& target, const std::string& library,
+  const std::function<void()>& write);
+
 /// A mesh as bytes, from gmsh's process to the caller's (MeshFromBytes reads them back; it throws
 /// FileError on a short answer).
 std::string MeshToBytes(const NamedMesh& mesh);
