@@ -3,7 +3,7 @@ and, when given, the node-numbering CSV (the same mesh numbered layer by layer, 
 curve, at random).
 
     /usr/bin/python3 Benchmarks/write_benchmark_page.py benchmark.csv machine.txt OUTPUT.md \
-        [numbering.csv]
+        [numbering.csv [numbering-machine.txt]]
 """
 import csv
 import os
@@ -82,12 +82,13 @@ def main():
             fmt(row["quality_s"]), fmt(row["cache_bytes_per_node"], 1), fmt(row["peak_rss_mb"], 0)))
     lines.append("")
     if len(sys.argv) > 4 and os.path.exists(sys.argv[4]):
-        lines += numbering_section(read_rows(sys.argv[4]))
+        machine = open(sys.argv[5]).read().strip() if len(sys.argv) > 5 else None
+        lines += numbering_section(read_rows(sys.argv[4]), machine)
     with open(output_path, "w") as handle:
         handle.write("\n".join(lines))
 
 
-def numbering_section(rows):
+def numbering_section(rows, machine=None):
     """The first deformation of one mesh in three node numberings, against the layered one."""
     layered = {(r["nodes"], r["method"], r["threads"]): r for r in rows
                if r["numbering"] == "layered"}
@@ -101,6 +102,10 @@ def numbering_section(rows):
         "in a spatial order of its own (../speed.md). Target: the first deformation within 1.3 times",
         "the layered figure.",
         "",
+    ]
+    if machine:
+        lines += ["Measured on:", "", "```", machine, "```", ""]
+    lines += [
         "| nodes | method | threads | numbering | location s | first s | first / layered | repeated s |",
         "|---|---|---|---|---|---|---|---|",
     ]

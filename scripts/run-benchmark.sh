@@ -25,7 +25,7 @@ mkdir -p "$OUT"
   --repeats "${REPEATS:-3}" --numberings layered,hilbert,random --csv "$OUT/numbering.csv" \
   2> >(grep -v WARN >&2)
 /usr/bin/python3 "$SOURCE_DIR/Benchmarks/write_benchmark_page.py" "$OUT/benchmark.csv" \
-  "$OUT/machine.txt" "$OUT/README.md" "$OUT/numbering.csv"
+  "$OUT/machine.txt" "$OUT/README.md" "$OUT/numbering.csv" "$OUT/machine.txt"
 echo "wrote $OUT/README.md"
 # Large motions (issue 10): sub-steps and the quality guard on the thin slab (about 30 s).
 /usr/bin/python3 "$SOURCE_DIR/Benchmarks/large_motion.py" "$BUILD_DIR" "$OUT/large_motion.md" \
