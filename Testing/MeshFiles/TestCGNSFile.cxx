@@ -3,6 +3,7 @@
 #include "dgmf/meshfile/CGNSFile.h"
 
 #include "ByteMutations.h"
+#include "NamedMeshTestHelpers.h"
 
 #include <vtkcgns/src/cgnslib.h>
 
@@ -28,15 +29,9 @@ namespace
 {
 using Numbers = std::vector<cgsize_t>;
 
-/// A fresh directory for one test's files.
 fs::path WorkDirectory()
 {
-  const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path directory =
-    fs::temp_directory_path() / ("dgmf-cgns-" + std::to_string(::getpid()) + "-" + test->name());
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
+  return dgmf_test::WorkDirectory("cgns");
 }
 
 /// What the test writes as a CGNS file: one base, one unstructured zone (unless told otherwise).
@@ -206,35 +201,12 @@ CGNSContent TwoDimensional()
   return c;
 }
 
-const mf::NamedBoundary* Find(const mf::NamedMesh& mesh, const std::string& name)
-{
-  for (const mf::NamedBoundary& b : mesh.Boundaries)
-  {
-    if (b.Name == name)
-    {
-      return &b;
-    }
-  }
-  return nullptr;
-}
-
-/// The distinct nodes of a boundary (0-based).
-std::set<std::int64_t> NodesOf(const mf::NamedBoundary& b)
-{
-  return { b.Faces.Connectivity.begin(), b.Faces.Connectivity.end() };
-}
+using dgmf_test::Find;
+using dgmf_test::NodesOf;
 
 std::string ErrorOf(const fs::path& path)
 {
-  try
-  {
-    mf::ReadCGNS(path.string());
-  }
-  catch (const mf::FileError& e)
-  {
-    return e.what();
-  }
-  return "";
+  return dgmf_test::ErrorOf(mf::ReadCGNS, path);
 }
 
 bool Contains(const std::string& text, const std::string& part)

@@ -3,6 +3,7 @@
 #include "dgmf/meshfile/ExodusFile.h"
 
 #include "ByteMutations.h"
+#include "NamedMeshTestHelpers.h"
 
 #include <vtkexodusII/include/exodusII.h>
 
@@ -27,15 +28,9 @@ namespace
 {
 using Ids = std::vector<std::int64_t>;
 
-/// A fresh directory for one test's files.
 fs::path WorkDirectory()
 {
-  const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path directory =
-    fs::temp_directory_path() / ("dgmf-exodus-" + std::to_string(::getpid()) + "-" + test->name());
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
+  return dgmf_test::WorkDirectory("exodus");
 }
 
 /// What the test writes as an Exodus file.
@@ -151,35 +146,12 @@ ExodusContent TwoHexahedra()
   return c;
 }
 
-const mf::NamedBoundary* Find(const mf::NamedMesh& mesh, const std::string& name)
-{
-  for (const mf::NamedBoundary& b : mesh.Boundaries)
-  {
-    if (b.Name == name)
-    {
-      return &b;
-    }
-  }
-  return nullptr;
-}
-
-/// The distinct nodes of a boundary.
-std::set<std::int64_t> NodesOf(const mf::NamedBoundary& b)
-{
-  return { b.Faces.Connectivity.begin(), b.Faces.Connectivity.end() };
-}
+using dgmf_test::Find;
+using dgmf_test::NodesOf;
 
 std::string ErrorOf(const fs::path& path)
 {
-  try
-  {
-    mf::ReadExodus(path.string());
-  }
-  catch (const mf::FileError& e)
-  {
-    return e.what();
-  }
-  return "";
+  return dgmf_test::ErrorOf(mf::ReadExodus, path);
 }
 } // namespace
 
