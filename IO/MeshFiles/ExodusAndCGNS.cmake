@@ -20,7 +20,8 @@ if(NOT DGMF_VTK_THIRDPARTY_INCLUDE_DIR OR NOT DGMF_EXODUSII_LIBRARY OR NOT DGMF_
 endif()
 target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/ExodusFile.cxx"
-  "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/CGNSFile.cxx")
+  "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/CGNSFile.cxx"
+  "${CMAKE_CURRENT_LIST_DIR}/dgmf/meshfile/CGNSZone.cxx")
 target_include_directories(DGMFMeshFiles SYSTEM PRIVATE "${DGMF_VTK_THIRDPARTY_INCLUDE_DIR}")
 # netCDF (the library under Exodus, the system's: ParaView's vtk_netcdf.h includes <netcdf.h>):
 # coordinates of the old combined layout are written through it.
