@@ -104,6 +104,33 @@ dgmf::ParallelFor TwoThreads()
     }
   };
 }
+/// The same elements and weights, bit for bit, with 1 and 2 threads; every interior node's
+/// weights are non-negative and reproduce it (the element found is right).
+void ExpectSameAndRightLocations(
+  const dgmf::DelaunayMapping& one, const dgmf::DelaunayMapping& two, const double* points)
+{
+  const dgmf::DelaunayGraph& graph = one.GetGraph();
+  for (std::size_t i = 0; i < one.GetNumberOfNodes(); ++i)
+  {
+    ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
+    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
+      << "node " << i;
+    if (one.IsBoundaryNode(i))
+      continue;
+    const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
+    for (int c = 0; c < 3; ++c)
+    {
+      double x = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        ASSERT_GE(one.GetWeights(i)[k], 0.0);
+        x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
+      }
+      // Weights within 1e-12 of 0 are clamped; elements are ~10 long.
+      ASSERT_NEAR(x, points[3 * i + c], 1e-10) << "node " << i;
+    }
+  }
+}
 } // namespace
 
 TEST(HintStride, LayeredMeshGivesTheLayerSize)
@@ -144,28 +171,7 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
       std::count(mesh.Kinds.begin(), mesh.Kinds.end(), dgmf::NodeKind::Interior));
     EXPECT_EQ(plain.GetNumberOfStrideHits(), 0u);
     EXPECT_GT(one.GetNumberOfStrideHits(), interior / 2) << "a = " << a;
-    const dgmf::DelaunayGraph& graph = one.GetGraph();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-      ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
-        << "node " << i;
-      if (one.IsBoundaryNode(i))
-        continue;
-      // The weights reproduce the node: the element found is right.
-      const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
-      for (int c = 0; c < 3; ++c)
-      {
-        double x = 0.0;
-        for (int k = 0; k < 4; ++k)
-        {
-          ASSERT_GE(one.GetWeights(i)[k], 0.0);
-          x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
-        }
-        ASSERT_NEAR(x, mesh.Points[3 * i + c], 1e-10)
-          << "node " << i; // weights within 1e-12 of 0 are clamped, elements are ~10 long
-      }
-    }
+    ExpectSameAndRightLocations(one, two, mesh.Points.data());
   }
 }
 
@@ -192,24 +198,5 @@ TEST(LocationOrder, AShuffledNumberingIsLocatedInSpatialOrderRightAndThreadIndep
   EXPECT_FALSE(ordered.GetLocatedInSpatialOrder());
   EXPECT_TRUE(one.GetLocatedInSpatialOrder());
   EXPECT_EQ(one.GetNumberOfOutsideNodes(), 0u);
-  const dgmf::DelaunayGraph& graph = one.GetGraph();
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
-      << "node " << i;
-    if (one.IsBoundaryNode(i))
-      continue;
-    const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
-    for (int c = 0; c < 3; ++c)
-    {
-      double x = 0.0;
-      for (int k = 0; k < 4; ++k)
-      {
-        ASSERT_GE(one.GetWeights(i)[k], 0.0);
-        x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
-      }
-      ASSERT_NEAR(x, points[3 * i + c], 1e-10) << "node " << i;
-    }
-  }
+  ExpectSameAndRightLocations(one, two, points.data());
 }
