@@ -114,8 +114,20 @@ void InputGatherer::Gather(
   if (nodes.Dimension == 3 && options.OneCellThick != OneCellThickOff && !options.Distributed)
   {
     // Named boundaries found the planes already, on the same points.
-    nodes.Layers =
-      options.Roles ? options.Roles->Layers : dgmf::FindExtrudedLayers(nodes.Points, n);
+    if (options.Roles)
+    {
+      nodes.Layers = options.Roles->Layers;
+    }
+    else
+    {
+      const auto hash = [&]() { return HashBytes(nodes.Points, 3 * n * sizeof(double)); };
+      if (!this->LayerPoints.Matches(mesh->GetPoints()->GetData(), hash))
+      {
+        this->Layers = dgmf::FindExtrudedLayers(nodes.Points, n);
+        this->LayerPoints.Set(mesh->GetPoints()->GetData(), hash);
+      }
+      nodes.Layers = this->Layers;
+    }
   }
   if (options.OneCellThick == OneCellThickOn && !nodes.Layers.Found())
   {
@@ -346,6 +358,7 @@ std::size_t InputGatherer::GetMemorySize() const
   {
     bytes += (this->Facets->Offsets.capacity() + this->Facets->Ids.capacity()) * sizeof(vtkIdType);
   }
+  bytes += (this->Layers.Front.capacity() + this->Layers.Layer.capacity()) * sizeof(std::int32_t);
   return bytes;
 }
 

@@ -130,6 +130,10 @@ private:
   // The boundary facets depend on the cells only.
   ContentKey Cells;
   std::unique_ptr<BoundaryFacets> Facets;
+  // The layers of a one-cell-thick mesh depend on the points only (looking for them takes one
+  // pass over the points; a repeated deformation need not pay it).
+  ContentKey LayerPoints;
+  dgmf::ExtrudedLayers Layers;
 };
 
 } // namespace dgmf_vtk

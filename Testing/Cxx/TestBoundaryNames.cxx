@@ -15,6 +15,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -360,6 +361,51 @@ TEST(BoundaryNames, AOneCellThickMeshMovesAsItsLayerBothLayersAlike)
   auto* stiff = vtkMultiBlockDataSet::SafeDownCast(solid->GetOutputDataObject(0));
   ASSERT_NE(VolumeOf(stiff), nullptr);
   EXPECT_GT(stiff->GetFieldData()->GetArray("InvertedCellCount")->GetTuple1(0), 0.0);
+}
+
+TEST(BoundaryNames, TheOneCellThickLayersAreFoundAgainWhenThePointsChange)
+{
+  // The layers of a marked one-cell-thick grid are kept between executions while its points are
+  // unchanged; a point moved in place (the same vtkPoints, Modified) must be seen.
+  auto circle = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints);
+  vtkNew<vtkUnstructuredGrid> slab;
+  slab->DeepCopy(VolumeOf(NamedBlocks(circle, 0.1)));
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("BoundaryMarker");
+  vtkDataArray* circleMarker = circle->GetPointData()->GetArray("BoundaryMarker");
+  ASSERT_NE(circleMarker, nullptr);
+  for (int layer = 0; layer < 2; ++layer)
+  {
+    for (vtkIdType i = 0; i < CirclePoints; ++i)
+    {
+      marker->InsertNextValue(static_cast<int>(circleMarker->GetTuple1(i)));
+    }
+  }
+  slab->GetPointData()->AddArray(marker);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(slab);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetRotationAngles(0, 0, 45);
+  filter->SetOneCellThickMode(vtkDGMFDeformFilter::ON);
+  Errors errors(filter);
+  filter->Update();
+  ASSERT_TRUE(errors.Messages.empty());
+  ASSERT_EQ(filter->GetOutput()->GetNumberOfPoints(), 2 * CirclePoints);
+
+  double p[3];
+  slab->GetPoints()->GetPoint(CirclePoints, p); // the back partner of node 0
+  slab->GetPoints()->SetPoint(CirclePoints, p[0] + 1e-3, p[1], p[2]);
+  slab->GetPoints()->Modified();
+  filter->Update();
+  EXPECT_TRUE(errors.Contains("not one cell thick")) << "the old layers were reused";
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+
+  slab->GetPoints()->SetPoint(CirclePoints, p);
+  slab->GetPoints()->Modified();
+  errors.Messages.clear();
+  filter->Update();
+  EXPECT_TRUE(errors.Messages.empty());
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 2 * CirclePoints);
 }
 
 TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
