@@ -3,7 +3,7 @@
  *
  *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
  *                  [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]
- *                  [--csv FILE]
+ *                  [--inputs grid,multiblock] [--csv FILE]
  *
  * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
  * their generation is not timed), each method and each thread count: the first deformation
@@ -13,13 +13,18 @@
  *
  * --numberings: the node numberings of each mesh (Renumbering.h): the generator's layer by layer
  * (default), a Hilbert curve's (a renumbered unstructured mesh), a random permutation.
+ * --inputs grid,multiblock: the mesh as one grid with its marker (default), and as a CFD reader's
+ * multiblock (NamedBlocks.h: the volume and named patches, the body moving by name; layered
+ * numbering only; the quality is not timed again).
  */
 #include "LayeredMesh.h"
+#include "NamedBlocks.h"
 #include "Renumbering.h"
 
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
 
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -85,6 +90,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> methods = { "dgm", "dgmf", "dgrbf", "idw" };
   std::vector<std::string> threads = { "1", "2" };
   std::vector<std::string> numberings = { "layered" };
+  std::vector<std::string> inputs = { "grid" };
   int repeats = 3;
   int idwMaxSize = 1;
   std::string csvPath = "benchmark.csv";
@@ -104,6 +110,8 @@ int main(int argc, char* argv[])
       idwMaxSize = std::atoi(value.c_str());
     else if (option == "--numberings")
       numberings = Split(value);
+    else if (option == "--inputs")
+      inputs = Split(value);
     else if (option == "--csv")
       csvPath = value;
     else
@@ -116,7 +124,8 @@ int main(int argc, char* argv[])
   std::ofstream csv(csvPath);
   csv << "nodes,boundary_nodes,numbering,method,threads,graph_s,location_s,mapping_s,first_s,"
          "repeated_s,"
-         "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s\n";
+         "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s,"
+         "input\n";
   for (const std::string& sizeName : sizes)
   {
     const int sizeIndex = std::atoi(sizeName.c_str());
@@ -138,99 +147,140 @@ int main(int argc, char* argv[])
                 << " numbering: " << mesh->GetNumberOfPoints() << " nodes, " << size.BoundaryNodes()
                 << " boundary nodes, " << mesh->GetNumberOfCells() << " hexahedra (generated in "
                 << Seconds(made) << " s)\n";
-      for (const std::string& methodName : methods)
+      vtkSmartPointer<vtkMultiBlockDataSet> blocks;
+      for (const std::string& input : inputs)
       {
-        const int method = vtkDGMFDeformFilter::GetMethodFromName(methodName.c_str());
-        if (method < 0)
+        if (input == "multiblock" && numbering == "layered")
         {
-          std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";
+          blocks = dgmf_bench::MakeNamedBlocks(mesh, size);
+        }
+        else if (input != "grid")
+        {
+          std::cerr << "dgmf-benchmark: input " << input
+                    << " unknown (grid, or multiblock with the layered numbering)\n";
           return 2;
         }
-        if (method == vtkDGMFDeformFilter::IDW && sizeIndex > idwMaxSize)
-        {
-          continue; // O(N Nb): hours on the large meshes
-        }
-        const int methodRepeats = method == vtkDGMFDeformFilter::IDW ? 1 : repeats;
-        for (const std::string& threadName : threads)
-        {
-          const int threadCount = std::atoi(threadName.c_str());
-          std::vector<double> graph, location, mapping, first, repeated;
-          Result result;
-          vtkNew<vtkDGMFDeformFilter> filter;
-          filter->SetInputData(mesh);
-          filter->SetBoundaryMarkerArrayName("BoundaryMarker");
-          filter->SetMethod(method);
-          filter->SetNumberOfThreads(threadCount);
-          filter->ComputeQualityOff();
-          for (int r = 0; r < methodRepeats; ++r)
-          {
-            filter->ReleaseCache();
-            filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
-            filter->SetTranslation(0.1, 0.0, 0.0);
-            Clock::time_point start = Clock::now();
-            filter->Update();
-            first.push_back(Seconds(start));
-            graph.push_back(filter->GetLastGraphSeconds());
-            location.push_back(filter->GetLastLocationSeconds());
-            mapping.push_back(filter->GetLastDeformationSeconds());
-            // A new motion: only the mapping runs again.
-            filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
-            start = Clock::now();
-            filter->Update();
-            repeated.push_back(Seconds(start));
-            if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
-            {
-              std::cerr << "dgmf-benchmark: the cache was not reused\n";
-              return 1;
-            }
-          }
-          result.Graph = Median(graph);
-          result.Location = Median(location);
-          result.Mapping = Median(mapping);
-          result.First = Median(first);
-          result.Repeated = Median(repeated);
-          result.CacheBytesPerNode =
-            static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
-
-          // The quality metric alone, on the last output.
-          vtkNew<vtkSizeSkewQualityFilter> quality;
-          quality->SetInputData(filter->GetOutput());
-          quality->SetReferenceData(mesh);
-          quality->SetNumberOfThreads(threadCount);
-          const Clock::time_point qualityStart = Clock::now();
-          quality->Update();
-          result.Quality = Seconds(qualityStart);
-          // With the face non-orthogonality: the first run finds the internal faces, the second
-          // reuses them (a new motion of the same mesh).
-          vtkNew<vtkSizeSkewQualityFilter> withFaces;
-          withFaces->SetInputData(filter->GetOutput());
-          withFaces->SetReferenceData(mesh);
-          withFaces->SetNumberOfThreads(threadCount);
-          withFaces->ComputeNonOrthogonalityOn();
-          Clock::time_point facesStart = Clock::now();
-          withFaces->Update();
-          result.QualityWithFacesFirst = Seconds(facesStart);
-          withFaces->Modified();
-          facesStart = Clock::now();
-          withFaces->Update();
-          result.QualityWithFaces = Seconds(facesStart);
-
-          csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << numbering << ","
-              << methodName << "," << threadCount << "," << result.Graph << "," << result.Location
-              << "," << result.Mapping << "," << result.First << "," << result.Repeated << ","
-              << result.Quality << "," << result.CacheBytesPerNode << "," << PeakResidentMegabytes()
-              << "," << result.QualityWithFacesFirst << "," << result.QualityWithFaces << "\n";
-          csv.flush();
-          std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", "
-                    << threadCount << " thread(s): first " << result.First << " s (graph "
-                    << result.Graph << ", location " << result.Location << ", mapping "
-                    << result.Mapping << "), repeated " << result.Repeated << " s, quality "
-                    << result.Quality << " s (with non-orthogonality "
-                    << result.QualityWithFacesFirst << " s first, " << result.QualityWithFaces
-                    << " s repeated), cache " << std::setprecision(1) << result.CacheBytesPerNode
-                    << " B/node\n";
-        }
       }
+      for (const std::string& input : inputs)
+        for (const std::string& methodName : methods)
+        {
+          const bool multiblock = input == "multiblock";
+          const int method = vtkDGMFDeformFilter::GetMethodFromName(methodName.c_str());
+          if (method < 0)
+          {
+            std::cerr << "dgmf-benchmark: unknown method " << methodName << "\n";
+            return 2;
+          }
+          if (method == vtkDGMFDeformFilter::IDW && sizeIndex > idwMaxSize)
+          {
+            continue; // O(N Nb): hours on the large meshes
+          }
+          const int methodRepeats = method == vtkDGMFDeformFilter::IDW ? 1 : repeats;
+          for (const std::string& threadName : threads)
+          {
+            const int threadCount = std::atoi(threadName.c_str());
+            std::vector<double> graph, location, mapping, first, repeated;
+            Result result;
+            vtkNew<vtkDGMFDeformFilter> filter;
+            if (multiblock)
+            {
+              filter->SetInputData(blocks);
+              filter->AddMovingBoundary("body"); // the farfield: the mesh's own boundary, static
+            }
+            else
+            {
+              filter->SetInputData(mesh);
+              filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+            }
+            filter->SetMethod(method);
+            filter->SetNumberOfThreads(threadCount);
+            filter->ComputeQualityOff();
+            for (int r = 0; r < methodRepeats; ++r)
+            {
+              filter->ReleaseCache();
+              filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
+              filter->SetTranslation(0.1, 0.0, 0.0);
+              Clock::time_point start = Clock::now();
+              filter->Update();
+              first.push_back(Seconds(start));
+              graph.push_back(filter->GetLastGraphSeconds());
+              location.push_back(filter->GetLastLocationSeconds());
+              mapping.push_back(filter->GetLastDeformationSeconds());
+              // A new motion: only the mapping runs again.
+              filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
+              start = Clock::now();
+              filter->Update();
+              repeated.push_back(Seconds(start));
+              if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
+              {
+                std::cerr << "dgmf-benchmark: the cache was not reused\n";
+                return 1;
+              }
+            }
+            result.Graph = Median(graph);
+            result.Location = Median(location);
+            result.Mapping = Median(mapping);
+            result.First = Median(first);
+            result.Repeated = Median(repeated);
+            result.CacheBytesPerNode =
+              static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
+            if (multiblock) // the same deformation; its quality is the grid's
+            {
+              csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << numbering
+                  << "," << methodName << "," << threadCount << "," << result.Graph << ","
+                  << result.Location << "," << result.Mapping << "," << result.First << ","
+                  << result.Repeated << ",," << result.CacheBytesPerNode << ","
+                  << PeakResidentMegabytes() << ",,," << input << "\n";
+              csv.flush();
+              std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", "
+                        << threadCount << " thread(s), multiblock: first " << result.First
+                        << " s (graph " << result.Graph << ", location " << result.Location
+                        << ", mapping " << result.Mapping << "), repeated " << result.Repeated
+                        << " s, cache " << std::setprecision(1) << result.CacheBytesPerNode
+                        << " B/node\n";
+              continue;
+            }
+
+            // The quality metric alone, on the last output.
+            vtkNew<vtkSizeSkewQualityFilter> quality;
+            quality->SetInputData(filter->GetOutput());
+            quality->SetReferenceData(mesh);
+            quality->SetNumberOfThreads(threadCount);
+            const Clock::time_point qualityStart = Clock::now();
+            quality->Update();
+            result.Quality = Seconds(qualityStart);
+            // With the face non-orthogonality: the first run finds the internal faces, the second
+            // reuses them (a new motion of the same mesh).
+            vtkNew<vtkSizeSkewQualityFilter> withFaces;
+            withFaces->SetInputData(filter->GetOutput());
+            withFaces->SetReferenceData(mesh);
+            withFaces->SetNumberOfThreads(threadCount);
+            withFaces->ComputeNonOrthogonalityOn();
+            Clock::time_point facesStart = Clock::now();
+            withFaces->Update();
+            result.QualityWithFacesFirst = Seconds(facesStart);
+            withFaces->Modified();
+            facesStart = Clock::now();
+            withFaces->Update();
+            result.QualityWithFaces = Seconds(facesStart);
+
+            csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << numbering
+                << "," << methodName << "," << threadCount << "," << result.Graph << ","
+                << result.Location << "," << result.Mapping << "," << result.First << ","
+                << result.Repeated << "," << result.Quality << "," << result.CacheBytesPerNode
+                << "," << PeakResidentMegabytes() << "," << result.QualityWithFacesFirst << ","
+                << result.QualityWithFaces << "," << input << "\n";
+            csv.flush();
+            std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", "
+                      << threadCount << " thread(s): first " << result.First << " s (graph "
+                      << result.Graph << ", location " << result.Location << ", mapping "
+                      << result.Mapping << "), repeated " << result.Repeated << " s, quality "
+                      << result.Quality << " s (with non-orthogonality "
+                      << result.QualityWithFacesFirst << " s first, " << result.QualityWithFaces
+                      << " s repeated), cache " << std::setprecision(1) << result.CacheBytesPerNode
+                      << " B/node\n";
+          }
+        }
     }
   }
   return 0;

@@ -101,6 +101,45 @@ std::map<unsigned int, std::string> PartitionNames(vtkCompositeDataSet* input)
   }
   return names;
 }
+/// The tuples `nodeOf[i]` of `values`, in a new array of the same type and name.
+vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* values, const std::vector<vtkIdType>& nodeOf)
+{
+  vtkSmartPointer<vtkDataArray> gathered = vtk::TakeSmartPointer(values->NewInstance());
+  gathered->SetName(values->GetName());
+  gathered->SetNumberOfComponents(values->GetNumberOfComponents());
+  const auto n = static_cast<vtkIdType>(nodeOf.size());
+  AllocateTuples(gathered, n);
+  auto* from = vtkDoubleArray::SafeDownCast(values);
+  auto* to = vtkDoubleArray::SafeDownCast(gathered);
+  if (from && to) // the deformed points and the filter's arrays
+  {
+    const int m = values->GetNumberOfComponents();
+    const double* source = from->GetPointer(0);
+    double* target = to->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      std::memcpy(target + m * i, source + m * nodeOf[static_cast<std::size_t>(i)],
+        static_cast<std::size_t>(m) * sizeof(double));
+    }
+    return gathered;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    gathered->SetTuple(i, nodeOf[static_cast<std::size_t>(i)], values);
+  }
+  return gathered;
+}
+
+/// The tuples [first, first + count) of `values`, in a new array of the same type and name.
+vtkSmartPointer<vtkDataArray> Range(vtkDataArray* values, vtkIdType first, vtkIdType count)
+{
+  vtkSmartPointer<vtkDataArray> range = vtk::TakeSmartPointer(values->NewInstance());
+  range->SetName(values->GetName());
+  range->SetNumberOfComponents(values->GetNumberOfComponents());
+  AllocateTuples(range, count);
+  range->InsertTuples(0, count, first, values);
+  return range;
+}
 } // namespace
 
 CompositeMesh::CompositeMesh(
@@ -252,6 +291,11 @@ CompositeMesh::CompositeMesh(
       }
     }
     leaf.Cells = this->Merged->GetNumberOfCells() - leaf.FirstCell;
+    leaf.SameNumbering = true;
+    for (std::size_t i = 0; i < leaf.NodeOf.size() && leaf.SameNumbering; ++i)
+    {
+      leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
+    }
     this->Leaves.push_back(std::move(leaf));
   }
   this->Merged->SetPoints(points);
@@ -306,44 +350,33 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     vtkSmartPointer<vtkPointSet> copy = vtk::TakeSmartPointer(source->NewInstance());
     copy->ShallowCopy(source);
     const auto n = static_cast<vtkIdType>(leaf.NodeOf.size());
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    AllocatePoints(points, n);
-    for (vtkIdType i = 0; i < n; ++i)
+    // A leaf whose points are the merged grid's, in its order (the volume of a CFD reader's
+    // output, as a rule), shares the deformed points and arrays; the others get copies.
+    const bool allPoints = leaf.SameNumbering && n == deformed->GetNumberOfPoints();
+    const bool allCells = leaf.FirstCell == 0 && leaf.Cells == deformed->GetNumberOfCells();
+    if (allPoints)
     {
-      points->SetPoint(i, deformed->GetPoint(leaf.NodeOf[static_cast<std::size_t>(i)]));
+      copy->SetPoints(deformed->GetPoints());
     }
-    copy->SetPoints(points);
+    else
+    {
+      vtkNew<vtkPoints> points;
+      points->SetData(Gathered(deformed->GetPoints()->GetData(), leaf.NodeOf));
+      copy->SetPoints(points);
+    }
     for (const std::string& name : pointArrays)
     {
-      vtkDataArray* result = deformed->GetPointData()->GetArray(name.c_str());
-      if (result)
+      if (vtkDataArray* result = deformed->GetPointData()->GetArray(name.c_str()))
       {
-        vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
-        values->SetName(name.c_str());
-        values->SetNumberOfComponents(result->GetNumberOfComponents());
-        AllocateTuples(values, n);
-        for (vtkIdType i = 0; i < n; ++i)
-        {
-          values->SetTuple(i, leaf.NodeOf[static_cast<std::size_t>(i)], result);
-        }
-        copy->GetPointData()->AddArray(values);
+        copy->GetPointData()->AddArray(allPoints ? result : Gathered(result, leaf.NodeOf).Get());
       }
     }
     for (const std::string& name : cellArrays)
     {
-      vtkDataArray* result = deformed->GetCellData()->GetArray(name.c_str());
-      if (result)
+      if (vtkDataArray* result = deformed->GetCellData()->GetArray(name.c_str()))
       {
-        vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(result->NewInstance());
-        values->SetName(name.c_str());
-        values->SetNumberOfComponents(result->GetNumberOfComponents());
-        AllocateTuples(values, leaf.Cells);
-        for (vtkIdType c = 0; c < leaf.Cells; ++c)
-        {
-          values->SetTuple(c, leaf.FirstCell + c, result);
-        }
-        copy->GetCellData()->AddArray(values);
+        copy->GetCellData()->AddArray(
+          allCells ? result : Range(result, leaf.FirstCell, leaf.Cells).Get());
       }
     }
     output->SetDataSet(iterator, copy);

@@ -50,6 +50,8 @@ public:
    * Builds the output: `output` gets the structure of the input; every merged leaf becomes a copy
    * of the input leaf (all its arrays) with the deformed points and the merged result's point
    * arrays `pointArrays` and cell arrays `cellArrays`; the other leaves are passed as they are.
+   * A leaf with all the merged points in the merged order (all its cells) shares the deformed
+   * points and point arrays (cell arrays) instead of copying them.
    */
   void Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
     const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const;
@@ -62,6 +64,7 @@ public:
     std::vector<vtkIdType> NodeOf; ///< merged node of each of the leaf's points
     vtkIdType FirstCell, Cells;    ///< the leaf's cells in the merged grid
     int CellDimension;             ///< largest dimension of its cells (0 without cells)
+    bool SameNumbering;            ///< NodeOf[i] == i for every point
   };
 
   /// The merged leaves, in the input's order.

@@ -8,6 +8,7 @@
 #define DGMFCoreDeformation_h
 
 #include "DGMFBoundaryNames.h"
+#include "DGMFCompositeMeshCache.h"
 #include "DGMFInputNodes.h"
 #include "DGMFMappingCache.h"
 #include "DGMFNonOrthogonality.h"
@@ -36,6 +37,7 @@ struct DeformationCaches
   FieldArrays Fields;                      ///< r and f, kept between motions
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
   InternalFacesCache Faces;                ///< for the non-orthogonality
+  CompositeMeshCache Composite;            ///< a composite input's merged grid
 };
 
 /**

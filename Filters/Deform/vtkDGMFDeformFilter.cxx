@@ -166,7 +166,8 @@ void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
 {
   const dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
-  return cache.Inputs.GetMemorySize() + cache.Mapping.GetMemorySize();
+  return cache.Inputs.GetMemorySize() + cache.Mapping.GetMemorySize() +
+    cache.Composite.GetMemorySize();
 }
 
 void vtkDGMFDeformFilter::ReleaseCache()
@@ -205,13 +206,14 @@ int vtkDGMFDeformFilter::RequestData(
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(outputObject);
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::SafeDownCast(inputObject);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::SafeDownCast(outputObject);
-  std::unique_ptr<dgmf_vtk::CompositeMesh> composite;
+  const dgmf_vtk::CompositeMesh* composite = nullptr;
   vtkNew<vtkUnstructuredGrid> mergedOutput;
   if (compositeInput && compositeOutput)
   {
+    // Kept while the blocks are unchanged: a new motion does not merge them again.
     const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
     composite =
-      std::make_unique<dgmf_vtk::CompositeMesh>(compositeInput, arrays.Displacement, arrays.Marker);
+      &this->Internal->Cache->Composite.Get(compositeInput, arrays.Displacement, arrays.Marker);
     if (composite->GetNumberOfSkippedBlocks() > 0)
     {
       vtkWarningMacro(<< composite->GetNumberOfSkippedBlocks()
@@ -219,6 +221,8 @@ int vtkDGMFDeformFilter::RequestData(
     }
     input = composite->GetMergedMesh();
     output = mergedOutput;
+    // The last output's blocks share the filter's output points: released, those can be reused.
+    compositeOutput->Initialize();
   }
   if (!input || !output)
   {
@@ -239,7 +243,7 @@ int vtkDGMFDeformFilter::RequestData(
   try
   {
     dgmf_vtk::RunWithThreads(
-      this->NumberOfThreads, [&]() { status = this->Execute(input, output, composite.get()); });
+      this->NumberOfThreads, [&]() { status = this->Execute(input, output, composite); });
   }
   catch (const dgmf::Aborted& e)
   {

@@ -3,6 +3,7 @@
 // and the input gathering. Built from the module's sources (they are private to it).
 #include "DGMFBoundaryDetection.h"
 #include "DGMFCompositeMesh.h"
+#include "DGMFCompositeMeshCache.h"
 #include "DGMFContentKey.h"
 #include "DGMFInputNodes.h"
 #include "DGMFMemoryGuard.h"
@@ -333,6 +334,45 @@ TEST(CompositeMesh, BlocksMergeAtSharedNodesAndScatterBack)
   EXPECT_EQ(second->GetPoint(5)[0], 4.0);
   EXPECT_EQ(second->GetPoint(5)[1], 11.0);
   EXPECT_TRUE(second->GetPointData()->GetArray("BoundaryMarker")); // the block's own arrays
+}
+
+TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChanges)
+{
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, TwoSquares(0.0));
+  auto right = TwoSquares(2.0);
+  blocks->SetBlock(1, right);
+  dgmf_vtk::CompositeMeshCache cache;
+  const dgmf_vtk::CompositeMesh* first = &cache.Get(blocks, "", "BoundaryMarker");
+  EXPECT_FALSE(cache.WasReused());
+  vtkUnstructuredGrid* merged = first->GetMergedMesh();
+  EXPECT_EQ(merged->GetNumberOfPoints(), 10);
+  EXPECT_GT(cache.GetMemorySize(), 10 * 3 * sizeof(double));
+
+  // A new motion of the same input: the same merged grid (the caches keyed on it match).
+  EXPECT_EQ(cache.Get(blocks, "", "BoundaryMarker").GetMergedMesh(), merged);
+  EXPECT_TRUE(cache.WasReused());
+
+  // A point moved in place in a block: merged again, with the new coordinates.
+  right->GetPoints()->SetPoint(5, 4.0, 1.5, 0.0);
+  right->GetPoints()->Modified();
+  const dgmf_vtk::CompositeMesh& moved = cache.Get(blocks, "", "BoundaryMarker");
+  EXPECT_FALSE(cache.WasReused());
+  const vtkIdType node = moved.GetLeaves()[1].NodeOf[5];
+  EXPECT_EQ(moved.GetMergedMesh()->GetPoint(node)[1], 1.5);
+
+  // A marker value changed in place, another selected array, a block replaced: merged again.
+  cache.Get(blocks, "", "BoundaryMarker");
+  EXPECT_TRUE(cache.WasReused());
+  right->GetPointData()->GetArray("BoundaryMarker")->SetTuple1(0, 1);
+  right->GetPointData()->GetArray("BoundaryMarker")->Modified();
+  cache.Get(blocks, "", "BoundaryMarker");
+  EXPECT_FALSE(cache.WasReused());
+  cache.Get(blocks, "", "");
+  EXPECT_FALSE(cache.WasReused());
+  blocks->SetBlock(1, TwoSquares(2.0));
+  cache.Get(blocks, "", "");
+  EXPECT_FALSE(cache.WasReused());
 }
 
 TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)

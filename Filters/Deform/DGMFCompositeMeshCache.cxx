@@ -1,0 +1,61 @@
+#include "DGMFCompositeMeshCache.h"
+
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkInformation.h"
+#include "vtkUnstructuredGrid.h"
+
+namespace dgmf_vtk
+{
+
+std::vector<CompositeMeshCache::LeafKey> CompositeMeshCache::KeyOf(vtkCompositeDataSet* input)
+{
+  std::vector<LeafKey> leaves;
+  auto iterator = vtk::TakeSmartPointer(input->NewIterator());
+  iterator->SkipEmptyNodesOn();
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    vtkDataObject* leaf = iterator->GetCurrentDataObject();
+    vtkInformation* metaData =
+      iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
+    leaves.push_back(LeafKey{ iterator->GetCurrentFlatIndex(), leaf, leaf->GetMTime(),
+      metaData && metaData->Has(vtkCompositeDataSet::NAME())
+        ? metaData->Get(vtkCompositeDataSet::NAME())
+        : "" });
+  }
+  return leaves;
+}
+
+const CompositeMesh& CompositeMeshCache::Get(vtkCompositeDataSet* input,
+  const std::string& displacementName, const std::string& markerName)
+{
+  std::vector<LeafKey> leaves = KeyOf(input);
+  this->Reused = this->Mesh && this->Input == input && this->Leaves == leaves &&
+    this->Displacement == displacementName && this->Marker == markerName;
+  if (!this->Reused)
+  {
+    this->Mesh.reset(); // its memory is free for the new merge
+    this->Mesh = std::make_unique<CompositeMesh>(input, displacementName, markerName);
+    this->Input = input;
+    this->Leaves = std::move(leaves);
+    this->Displacement = displacementName;
+    this->Marker = markerName;
+  }
+  return *this->Mesh;
+}
+
+std::size_t CompositeMeshCache::GetMemorySize() const
+{
+  if (!this->Mesh)
+  {
+    return 0;
+  }
+  std::size_t bytes = 1024 * static_cast<std::size_t>(this->Mesh->GetMergedMesh()->GetActualMemorySize());
+  for (const CompositeMesh::Leaf& leaf : this->Mesh->GetLeaves())
+  {
+    bytes += leaf.NodeOf.capacity() * sizeof(vtkIdType);
+  }
+  return bytes;
+}
+
+} // namespace dgmf_vtk
