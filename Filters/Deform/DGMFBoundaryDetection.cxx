@@ -1,6 +1,9 @@
 #include "DGMFBoundaryDetection.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFMeshConversion.h"
+
+#include "dgmf/ExactPointTable.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -18,9 +21,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 #include <utility>
 
@@ -173,16 +174,16 @@ void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 std::vector<vtkIdType> CanonicalPointIds(vtkUnstructuredGrid* mesh)
 {
   const vtkIdType n = mesh->GetNumberOfPoints();
-  std::map<std::array<double, 3>, vtkIdType> first;
+  std::vector<double> copy;
+  const double* xyz = PointsAsDouble(mesh->GetPoints(), copy);
+  dgmf::ExactPointTable table(static_cast<std::size_t>(n));
   std::vector<vtkIdType> canonical(static_cast<std::size_t>(n));
   bool duplicates = false;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    double p[3];
-    mesh->GetPoint(i, p);
-    const auto found = first.emplace(std::array<double, 3>{ p[0], p[1], p[2] }, i);
-    canonical[static_cast<std::size_t>(i)] = found.first->second;
-    duplicates = duplicates || !found.second;
+    canonical[static_cast<std::size_t>(i)] =
+      static_cast<vtkIdType>(table.FindOrInsert(xyz, xyz + 3 * i, i));
+    duplicates = duplicates || canonical[static_cast<std::size_t>(i)] != i;
   }
   return duplicates ? canonical : std::vector<vtkIdType>();
 }

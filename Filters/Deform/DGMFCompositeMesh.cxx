@@ -2,6 +2,7 @@
 
 #include "DGMFArrayAllocation.h"
 
+#include "dgmf/ExactPointTable.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkCellArray.h"
@@ -14,6 +15,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -21,49 +23,19 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
-#include <array>
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <string>
-#include <unordered_map>
 
 namespace dgmf_vtk
 {
 namespace
 {
-/// Exact coordinates as a hashable key.
-struct CoordinateKey
-{
-  std::array<std::uint64_t, 3> Bits;
-  bool operator==(const CoordinateKey& other) const { return this->Bits == other.Bits; }
-};
-
-struct CoordinateHash
-{
-  std::size_t operator()(const CoordinateKey& key) const
-  {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::uint64_t b : key.Bits)
-    {
-      h = (h ^ b) * 1099511628211ull;
-      h ^= h >> 29;
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-
-CoordinateKey KeyOf(const double p[3])
-{
-  CoordinateKey key;
-  for (int c = 0; c < 3; ++c)
-  {
-    const double value = p[c] == 0.0 ? 0.0 : p[c]; // -0 and +0 are the same node
-    std::memcpy(&key.Bits[c], &value, sizeof(double));
-  }
-  return key;
-}
 /**
  * The names of the partitions of a partitioned data set collection (ParaView's IOSS reader gives
  * one for Exodus files): each partition is named after its partitioned data set. Empty for other
@@ -142,16 +114,110 @@ vtkSmartPointer<vtkDataArray> Range(vtkDataArray* values, vtkIdType first, vtkId
 }
 } // namespace
 
+namespace
+{
+/// The merged grid's cells, gathered in plain arrays and handed to VTK once.
+struct MergedCells
+{
+  std::vector<unsigned char> Types;
+  std::vector<vtkIdType> Offsets{ 0 };
+  std::vector<vtkIdType> Connectivity;
+  std::vector<vtkIdType> FaceLocations; // polyhedra: -1, or where the cell's faces start
+  std::vector<vtkIdType> Faces;         // polyhedra: nfaces, then (count, ids...) per face
+
+  /// Appends the cells of `block`, their points renumbered by `nodeOf`; returns the largest
+  /// dimension of its cells.
+  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
+  {
+    int dimension = 0;
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
+    auto* polyData = vtkPolyData::SafeDownCast(block);
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
+    {
+      vtkIdType count = 0;
+      const vtkIdType* points = nullptr;
+      if (grid)
+      {
+        grid->GetCellPoints(c, count, points);
+      }
+      else if (polyData)
+      {
+        polyData->GetCellPoints(c, count, points);
+      }
+      else
+      {
+        block->GetCellPoints(c, ids);
+        count = ids->GetNumberOfIds();
+        points = ids->GetPointer(0);
+      }
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        this->Connectivity.push_back(nodeOf[static_cast<std::size_t>(points[k])]);
+      }
+      this->Offsets.push_back(static_cast<vtkIdType>(this->Connectivity.size()));
+      const int type = block->GetCellType(c);
+      this->Types.push_back(static_cast<unsigned char>(type));
+      dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+      if (type == VTK_POLYHEDRON && grid)
+      {
+        // Polyhedra need their faces, renumbered like their points.
+        this->FaceLocations.resize(this->Types.size() - 1, -1);
+        this->FaceLocations.push_back(static_cast<vtkIdType>(this->Faces.size()));
+        grid->GetFaceStream(c, ids);
+        const vtkIdType* stream = ids->GetPointer(0);
+        const vtkIdType length = ids->GetNumberOfIds();
+        this->Faces.push_back(length > 0 ? stream[0] : 0);
+        for (vtkIdType k = 1; k < length;)
+        {
+          const vtkIdType faceCount = stream[k++];
+          this->Faces.push_back(faceCount);
+          for (vtkIdType m = 0; m < faceCount; ++m, ++k)
+          {
+            this->Faces.push_back(nodeOf[static_cast<std::size_t>(stream[k])]);
+          }
+        }
+      }
+    }
+    return dimension;
+  }
+
+  /// Gives `grid` the cells.
+  void SetOn(vtkUnstructuredGrid* grid)
+  {
+    const auto idArray = [](const std::vector<vtkIdType>& values)
+    {
+      vtkNew<vtkIdTypeArray> array;
+      AllocateTuples(array, static_cast<vtkIdType>(values.size()));
+      std::copy(values.begin(), values.end(), array->GetPointer(0));
+      return vtkSmartPointer<vtkIdTypeArray>(array.GetPointer());
+    };
+    vtkNew<vtkUnsignedCharArray> types;
+    AllocateTuples(types, static_cast<vtkIdType>(this->Types.size()));
+    std::copy(this->Types.begin(), this->Types.end(), types->GetPointer(0));
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(idArray(this->Offsets), idArray(this->Connectivity));
+    if (this->FaceLocations.empty())
+    {
+      grid->SetCells(types, cells);
+      return;
+    }
+    this->FaceLocations.resize(this->Types.size(), -1);
+    grid->SetCells(types, cells, idArray(this->FaceLocations), idArray(this->Faces));
+  }
+};
+} // namespace
+
 CompositeMesh::CompositeMesh(
   vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName)
   : Input(input)
   , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
 {
-  // The merge grows VTK arrays one insertion at a time, and VTK aborts when that fails: make sure
-  // first that twice what it may need is there (points, their hash, the arrays, the cells).
+  // Make sure first that twice what the merge may need is there (points, their table, the
+  // arrays, the cells, and their copies into VTK arrays).
   const auto blockPoints = static_cast<std::size_t>(input->GetNumberOfPoints());
   const auto blockCells = static_cast<std::size_t>(input->GetNumberOfCells());
-  EnsureAvailableMemory(2 * (blockPoints * (24 + 64 + 24 * 2) + blockCells * 8 * 10));
+  EnsureAvailableMemory(2 * (blockPoints * (24 + 32 + 24 * 2) + blockCells * 8 * 20));
   std::vector<std::string> arrays;
   for (const std::string& name : { displacementName, markerName })
   {
@@ -160,12 +226,13 @@ CompositeMesh::CompositeMesh(
       arrays.push_back(name);
     }
   }
-  std::unordered_map<CoordinateKey, vtkIdType, CoordinateHash> nodeAt;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  std::vector<vtkSmartPointer<vtkDoubleArray>> merged(arrays.size());
-  vtkNew<vtkIdList> cellPoints;
-  this->Merged->Allocate(1024);
+  // The merged points (x, y, z per node) and arrays (0 components: not met yet), as plain arrays.
+  dgmf::ExactPointTable table(blockPoints);
+  std::vector<double> xyz;
+  xyz.reserve(3 * blockPoints);
+  std::vector<std::vector<double>> values(arrays.size());
+  std::vector<int> components(arrays.size(), 0);
+  MergedCells cells;
 
   const std::map<unsigned int, std::string> partitionNames = PartitionNames(input);
   auto iterator = vtk::TakeSmartPointer(input->NewIterator());
@@ -180,7 +247,6 @@ CompositeMesh::CompositeMesh(
     }
     Leaf leaf;
     leaf.FlatIndex = iterator->GetCurrentFlatIndex();
-    leaf.CellDimension = 0;
     vtkInformation* metaData =
       iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
     leaf.Name = metaData && metaData->Has(vtkCompositeDataSet::NAME())
@@ -191,124 +257,89 @@ CompositeMesh::CompositeMesh(
     {
       leaf.Name = partition->second; // a partition of a named partitioned data set (IOSS reader)
     }
-    leaf.NodeOf.resize(static_cast<std::size_t>(block->GetNumberOfPoints()));
+    const vtkIdType n = block->GetNumberOfPoints();
+    leaf.NodeOf.resize(static_cast<std::size_t>(n));
     std::vector<vtkDataArray*> sources(arrays.size());
     for (std::size_t a = 0; a < arrays.size(); ++a)
     {
       sources[a] = block->GetPointData()->GetArray(arrays[a].c_str());
+      if (components[a] == 0 && sources[a]) // the first block with the array sets its shape
+      {
+        components[a] = sources[a]->GetNumberOfComponents();
+        values[a].assign(xyz.size() / 3 * static_cast<std::size_t>(components[a]), 0.0);
+      }
     }
-    for (vtkIdType i = 0; i < block->GetNumberOfPoints(); ++i)
+    auto* doubles = vtkDoubleArray::SafeDownCast(block->GetPoints()->GetData());
+    for (vtkIdType i = 0; i < n; ++i)
     {
       double p[3];
-      block->GetPoint(i, p);
-      auto found = nodeAt.emplace(KeyOf(p), points->GetNumberOfPoints());
-      if (found.second)
+      if (doubles)
       {
-        points->InsertNextPoint(p);
-      }
-      const vtkIdType node = found.first->second;
-      leaf.NodeOf[static_cast<std::size_t>(i)] = node;
-      for (std::size_t a = 0; a < arrays.size(); ++a)
-      {
-        vtkDataArray* source = sources[a];
-        if (!merged[a])
-        {
-          // Sized by the first block that has the array; later blocks define it too.
-          if (!source)
-          {
-            continue;
-          }
-          merged[a] = vtkSmartPointer<vtkDoubleArray>::New();
-          merged[a]->SetName(arrays[a].c_str());
-          merged[a]->SetNumberOfComponents(source->GetNumberOfComponents());
-        }
-        vtkDoubleArray* target = merged[a];
-        const int components = target->GetNumberOfComponents();
-        while (target->GetNumberOfTuples() <= node)
-        {
-          const std::vector<double> zeros(static_cast<std::size_t>(components), 0.0);
-          target->InsertNextTuple(zeros.data());
-        }
-        if (!source || source->GetNumberOfComponents() != components)
-        {
-          continue;
-        }
-        if (arrays[a] == markerName)
-        {
-          target->SetComponent(
-            node, 0, std::max(target->GetComponent(node, 0), source->GetComponent(i, 0)));
-        }
-        else
-        {
-          // The first non-zero value found for the node (a block may lack it or hold zeros).
-          bool unset = true;
-          for (int c = 0; c < components; ++c)
-          {
-            unset = unset && target->GetComponent(node, c) == 0.0;
-          }
-          for (int c = 0; unset && c < components; ++c)
-          {
-            target->SetComponent(node, c, source->GetComponent(i, c));
-          }
-        }
-      }
-    }
-    leaf.FirstCell = this->Merged->GetNumberOfCells();
-    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
-    {
-      block->GetCellPoints(c, cellPoints);
-      for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
-      {
-        cellPoints->SetId(k, leaf.NodeOf[static_cast<std::size_t>(cellPoints->GetId(k))]);
-      }
-      const int type = block->GetCellType(c);
-      leaf.CellDimension =
-        std::max(leaf.CellDimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-      auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
-      if (type == VTK_POLYHEDRON && grid)
-      {
-        // Polyhedra need their faces, renumbered like their points.
-        vtkNew<vtkIdList> faces;
-        grid->GetFaceStream(c, faces);
-        std::vector<vtkIdType> stream(
-          faces->GetPointer(0), faces->GetPointer(0) + faces->GetNumberOfIds());
-        vtkIdType nfaces = stream.empty() ? 0 : stream[0];
-        for (std::size_t k = 1; k < stream.size();)
-        {
-          const vtkIdType count = stream[k++];
-          for (vtkIdType m = 0; m < count; ++m, ++k)
-          {
-            stream[k] = leaf.NodeOf[static_cast<std::size_t>(stream[k])];
-          }
-        }
-        std::vector<vtkIdType> faceList(stream.begin() + (stream.empty() ? 0 : 1), stream.end());
-        this->Merged->InsertNextCell(
-          type, cellPoints->GetNumberOfIds(), cellPoints->GetPointer(0), nfaces, faceList.data());
+        std::memcpy(p, doubles->GetPointer(3 * i), sizeof p);
       }
       else
       {
-        this->Merged->InsertNextCell(type, cellPoints);
+        block->GetPoint(i, p);
+      }
+      const auto kept = static_cast<std::int64_t>(xyz.size() / 3);
+      const std::int64_t node = table.FindOrInsert(xyz.data(), p, kept);
+      leaf.NodeOf[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(node);
+      if (node == kept)
+      {
+        xyz.insert(xyz.end(), p, p + 3);
+        for (std::size_t a = 0; a < arrays.size(); ++a)
+        {
+          values[a].resize(values[a].size() + static_cast<std::size_t>(components[a]), 0.0);
+        }
+      }
+      for (std::size_t a = 0; a < arrays.size(); ++a)
+      {
+        const int m = components[a];
+        vtkDataArray* source = sources[a];
+        if (!source || source->GetNumberOfComponents() != m)
+        {
+          continue; // a block without the array (or with another shape) contributes zeros
+        }
+        double* target = values[a].data() + static_cast<std::size_t>(node) * m;
+        if (arrays[a] == markerName)
+        {
+          target[0] = std::max(target[0], source->GetComponent(i, 0)); // moving anywhere: moving
+        }
+        else if (std::all_of(target, target + m, [](double v) { return v == 0.0; }))
+        {
+          source->GetTuple(i, target); // the first non-zero value found for the node
+        }
       }
     }
-    leaf.Cells = this->Merged->GetNumberOfCells() - leaf.FirstCell;
     leaf.SameNumbering = true;
     for (std::size_t i = 0; i < leaf.NodeOf.size() && leaf.SameNumbering; ++i)
     {
       leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
     }
+    leaf.FirstCell = static_cast<vtkIdType>(cells.Types.size());
+    leaf.CellDimension = cells.Append(block, leaf.NodeOf);
+    leaf.Cells = static_cast<vtkIdType>(cells.Types.size()) - leaf.FirstCell;
     this->Leaves.push_back(std::move(leaf));
   }
+
+  const auto nodes = static_cast<vtkIdType>(xyz.size() / 3);
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  AllocateTuples(coordinates, nodes);
+  std::copy(xyz.begin(), xyz.end(), coordinates->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
   this->Merged->SetPoints(points);
-  for (auto& array : merged)
+  cells.SetOn(this->Merged);
+  for (std::size_t a = 0; a < arrays.size(); ++a)
   {
-    if (array)
+    if (components[a] > 0)
     {
-      const int components = array->GetNumberOfComponents();
-      const std::vector<double> zeros(static_cast<std::size_t>(components), 0.0);
-      while (array->GetNumberOfTuples() < points->GetNumberOfPoints())
-      {
-        array->InsertNextTuple(zeros.data());
-      }
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(arrays[a].c_str());
+      array->SetNumberOfComponents(components[a]);
+      AllocateTuples(array, nodes);
+      std::copy(values[a].begin(), values[a].end(), array->GetPointer(0));
       this->Merged->GetPointData()->AddArray(array);
     }
   }

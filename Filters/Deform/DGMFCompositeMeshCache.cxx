@@ -26,8 +26,8 @@ std::vector<CompositeMeshCache::LeafKey> CompositeMeshCache::KeyOf(vtkCompositeD
   return leaves;
 }
 
-const CompositeMesh& CompositeMeshCache::Get(vtkCompositeDataSet* input,
-  const std::string& displacementName, const std::string& markerName)
+const CompositeMesh& CompositeMeshCache::Get(
+  vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName)
 {
   std::vector<LeafKey> leaves = KeyOf(input);
   this->Reused = this->Mesh && this->Input == input && this->Leaves == leaves &&
@@ -50,7 +50,8 @@ std::size_t CompositeMeshCache::GetMemorySize() const
   {
     return 0;
   }
-  std::size_t bytes = 1024 * static_cast<std::size_t>(this->Mesh->GetMergedMesh()->GetActualMemorySize());
+  std::size_t bytes =
+    1024 * static_cast<std::size_t>(this->Mesh->GetMergedMesh()->GetActualMemorySize());
   for (const CompositeMesh::Leaf& leaf : this->Mesh->GetLeaves())
   {
     bytes += leaf.NodeOf.capacity() * sizeof(vtkIdType);

@@ -35,8 +35,8 @@ public:
    * The merged mesh of `input` with the point arrays `displacementName` and `markerName`: the kept
    * one when nothing changed, else a new merge.
    */
-  const CompositeMesh& Get(vtkCompositeDataSet* input, const std::string& displacementName,
-    const std::string& markerName);
+  const CompositeMesh& Get(
+    vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName);
 
   /// True when the last Get() returned the kept merge.
   bool WasReused() const { return this->Reused; }

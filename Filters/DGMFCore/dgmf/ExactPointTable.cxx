@@ -1,0 +1,91 @@
+#include "dgmf/ExactPointTable.h"
+
+#include <cstring>
+
+namespace dgmf
+{
+namespace
+{
+std::uint64_t Bits(double value)
+{
+  value = value == 0.0 ? 0.0 : value; // -0 and +0 are the same point
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
+}
+
+std::uint64_t Hash(const double p[3])
+{
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (int c = 0; c < 3; ++c)
+  {
+    h = (h ^ Bits(p[c])) * 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return h;
+}
+
+bool Same(const double* a, const double* b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+std::size_t CapacityFor(std::size_t expected)
+{
+  std::size_t capacity = 16;
+  while (capacity < 2 * expected)
+  {
+    capacity *= 2;
+  }
+  return capacity;
+}
+} // namespace
+
+ExactPointTable::ExactPointTable(std::size_t expected)
+  : Slots(CapacityFor(expected), -1)
+  , Mask(Slots.size() - 1)
+{
+}
+
+std::int64_t ExactPointTable::FindOrInsert(const double* points, const double p[3], std::int64_t id)
+{
+  if (2 * (this->Count + 1) > this->Slots.size())
+  {
+    this->Grow(points);
+  }
+  for (std::size_t slot = Hash(p) & this->Mask;; slot = (slot + 1) & this->Mask)
+  {
+    const std::int64_t kept = this->Slots[slot];
+    if (kept < 0)
+    {
+      this->Slots[slot] = id;
+      ++this->Count;
+      return id;
+    }
+    if (Same(points + 3 * kept, p))
+    {
+      return kept;
+    }
+  }
+}
+
+void ExactPointTable::Grow(const double* points)
+{
+  std::vector<std::int64_t> old(2 * this->Slots.size(), -1);
+  old.swap(this->Slots);
+  this->Mask = this->Slots.size() - 1;
+  for (std::int64_t kept : old)
+  {
+    if (kept >= 0)
+    {
+      std::size_t slot = Hash(points + 3 * kept) & this->Mask;
+      while (this->Slots[slot] >= 0)
+      {
+        slot = (slot + 1) & this->Mask;
+      }
+      this->Slots[slot] = kept;
+    }
+  }
+}
+
+} // namespace dgmf
