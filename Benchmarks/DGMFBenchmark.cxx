@@ -4,6 +4,7 @@
  *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
  *                  [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]
  *                  [--inputs grid,multiblock] [--csv FILE]
+ *                  [--command dgmf-deform [--command-csv FILE]]
  *
  * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
  * their generation is not timed), each method and each thread count: the first deformation
@@ -16,10 +17,14 @@
  * --inputs grid,multiblock: the mesh as one grid with its marker (default), and as a CFD reader's
  * multiblock (NamedBlocks.h: the volume and named patches, the body moving by name; layered
  * numbering only; the quality is not timed again).
+ * --command PATH: also runs the command PATH (dgmf-deform) on the mesh written as a .vtu, with
+ * each thread count, and writes its wall time and the read, filter and write times it prints,
+ * beside the first deformation, to --command-csv FILE (default command.csv).
  */
 #include "LayeredMesh.h"
 #include "NamedBlocks.h"
 #include "Renumbering.h"
+#include "WholeCommand.h"
 
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
@@ -33,9 +38,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -91,6 +98,8 @@ int main(int argc, char* argv[])
   std::vector<std::string> threads = { "1", "2" };
   std::vector<std::string> numberings = { "layered" };
   std::vector<std::string> inputs = { "grid" };
+  std::string command; // dgmf-deform, for the whole-command figure
+  std::string commandCsvPath = "command.csv";
   int repeats = 3;
   int idwMaxSize = 1;
   std::string csvPath = "benchmark.csv";
@@ -112,6 +121,10 @@ int main(int argc, char* argv[])
       numberings = Split(value);
     else if (option == "--inputs")
       inputs = Split(value);
+    else if (option == "--command")
+      command = value;
+    else if (option == "--command-csv")
+      commandCsvPath = value;
     else if (option == "--csv")
       csvPath = value;
     else
@@ -126,6 +139,12 @@ int main(int argc, char* argv[])
          "repeated_s,"
          "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s,"
          "input\n";
+  std::ofstream commandCsv;
+  if (!command.empty())
+  {
+    commandCsv.open(commandCsvPath);
+    commandCsv << "nodes,numbering,threads,first_s,wall_s,read_s,filter_s,write_s\n";
+  }
   for (const std::string& sizeName : sizes)
   {
     const int sizeIndex = std::atoi(sizeName.c_str());
@@ -148,6 +167,7 @@ int main(int argc, char* argv[])
                 << " boundary nodes, " << mesh->GetNumberOfCells() << " hexahedra (generated in "
                 << Seconds(made) << " s)\n";
       vtkSmartPointer<vtkMultiBlockDataSet> blocks;
+      std::map<int, double> dgmfFirst; // the first deformation by thread count
       for (const std::string& input : inputs)
       {
         if (input == "multiblock" && numbering == "layered")
@@ -279,8 +299,42 @@ int main(int argc, char* argv[])
                       << result.QualityWithFacesFirst << " s first, " << result.QualityWithFaces
                       << " s repeated), cache " << std::setprecision(1) << result.CacheBytesPerNode
                       << " B/node\n";
+            if (methodName == "dgmf")
+            {
+              dgmfFirst[threadCount] = result.First;
+            }
           }
         }
+      // The whole command on the same mesh, as a .vtu (the grid input; DGMF, the default).
+      if (!command.empty())
+      {
+        const std::filesystem::path work =
+          std::filesystem::temp_directory_path() / "dgmf-benchmark-command";
+        std::filesystem::create_directories(work);
+        for (const std::string& threadName : threads)
+        {
+          const int threadCount = std::atoi(threadName.c_str());
+          dgmf_bench::CommandTimes times;
+          try
+          {
+            times = dgmf_bench::TimeWholeCommand(mesh, command, work.string(), threadCount);
+          }
+          catch (const std::exception& e)
+          {
+            std::cerr << "dgmf-benchmark: " << e.what() << "\n";
+            return 1;
+          }
+          const double first = dgmfFirst.count(threadCount) ? dgmfFirst[threadCount] : 0.0;
+          commandCsv << mesh->GetNumberOfPoints() << "," << numbering << "," << threadCount << ","
+                     << first << "," << times.Wall << "," << times.Read << "," << times.Filter
+                     << "," << times.Write << "\n";
+          commandCsv.flush();
+          std::cerr << std::fixed << std::setprecision(3) << "  dgmf-deform, " << threadCount
+                    << " thread(s): " << times.Wall << " s in all (read " << times.Read
+                    << ", filter " << times.Filter << ", write " << times.Write << ")\n";
+        }
+        std::filesystem::remove_all(work);
+      }
     }
   }
   return 0;
