@@ -26,8 +26,8 @@ double Number(const std::string& text, const std::string& pattern)
 }
 } // namespace
 
-CommandTimes TimeWholeCommand(vtkUnstructuredGrid* mesh, const std::string& command,
-  const std::string& directory, int threads)
+CommandTimes TimeWholeCommand(
+  vtkUnstructuredGrid* mesh, const std::string& command, const std::string& directory, int threads)
 {
   const std::string input = directory + "/mesh.vtu";
   const std::string output = directory + "/deformed.vtu";

@@ -28,8 +28,8 @@ struct CommandTimes
  * threads, writing `directory`/deformed.vtu, and returns its times. Throws std::runtime_error when
  * the command fails or prints no timings.
  */
-CommandTimes TimeWholeCommand(vtkUnstructuredGrid* mesh, const std::string& command,
-  const std::string& directory, int threads);
+CommandTimes TimeWholeCommand(
+  vtkUnstructuredGrid* mesh, const std::string& command, const std::string& directory, int threads);
 
 } // namespace dgmf_bench
 

@@ -36,6 +36,7 @@ const CompositeMesh& CompositeMeshCache::Get(
   {
     this->Mesh.reset(); // its memory is free for the new merge
     this->Mesh = std::make_unique<CompositeMesh>(input, displacementName, markerName);
+    ++this->Generation;
     this->Input = input;
     this->Leaves = std::move(leaves);
     this->Displacement = displacementName;

@@ -11,6 +11,7 @@
 #include "vtkType.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ public:
   /// True when the last Get() returned the kept merge.
   bool WasReused() const { return this->Reused; }
 
+  /// Counts the merges made: what is derived from a merge is valid while this is unchanged.
+  std::uint64_t GetGeneration() const { return this->Generation; }
+
   /// Memory held by the merged grid, in bytes.
   std::size_t GetMemorySize() const;
 
@@ -65,6 +69,7 @@ private:
   std::string Displacement, Marker;
   std::unique_ptr<CompositeMesh> Mesh;
   bool Reused = false;
+  std::uint64_t Generation = 0;
 };
 
 } // namespace dgmf_vtk

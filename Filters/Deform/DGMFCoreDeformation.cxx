@@ -181,7 +181,7 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
 
 std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* composite,
   const BoundarySelection& boundaries, bool findLayers, GatherOptions& options,
-  DeformationCaches& caches, NodeRoles& roles, InputNodes& nodes)
+  DeformationCaches& caches, InputNodes& nodes)
 {
   try
   {
@@ -193,8 +193,23 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
     }
     if (composite && !boundaries.Empty())
     {
-      roles = AssignRoles(*composite, boundaries, input, findLayers);
-      options.Roles = &roles;
+      auto& kept = caches.Roles;
+      const std::uint64_t generation = caches.Composite.GetGeneration();
+      if (!kept.Valid || kept.Generation != generation || kept.Moving != boundaries.Moving ||
+        kept.Static != boundaries.Static || kept.Slip != boundaries.Slip ||
+        kept.FindLayers != findLayers)
+      {
+        kept.Valid = false;
+        kept.Roles =
+          AssignRoles(*composite, boundaries, input, findLayers); // throws for a bad name
+        kept.Generation = generation;
+        kept.Moving = boundaries.Moving;
+        kept.Static = boundaries.Static;
+        kept.Slip = boundaries.Slip;
+        kept.FindLayers = findLayers;
+        kept.Valid = true;
+      }
+      options.Roles = &kept.Roles;
     }
     caches.Inputs.Gather(input, options, nodes);
     return std::string();

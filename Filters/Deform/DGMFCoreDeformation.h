@@ -38,18 +38,28 @@ struct DeformationCaches
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
   InternalFacesCache Faces;                ///< for the non-orthogonality
   CompositeMeshCache Composite;            ///< a composite input's merged grid
+  /// The node roles of the named boundaries, while the merge and the selection are unchanged.
+  struct
+  {
+    std::uint64_t Generation = 0;
+    std::vector<std::string> Moving, Static, Slip;
+    bool FindLayers = false;
+    bool Valid = false;
+    NodeRoles Roles;
+  } Roles;
 };
 
 /**
  * Step 2 of vtkDGMFDeformFilter: checks that the deformation fits in memory, gives the nodes the
  * roles of the boundaries named in `boundaries` (if any; `composite` is then the input's blocks
  * and `input` their merged grid, with the planes of a one-cell-thick mesh looked for when
- * `findLayers` is on) and gathers `nodes` with `options` (whose Roles then point into `roles`).
+ * `findLayers` is on; kept in `caches` while the merge and the selection are unchanged) and
+ * gathers `nodes` with `options` (whose Roles then point into `caches`).
  * Returns the error, empty on success; nothing is thrown.
  */
 std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* composite,
   const BoundarySelection& boundaries, bool findLayers, GatherOptions& options,
-  DeformationCaches& caches, NodeRoles& roles, InputNodes& nodes);
+  DeformationCaches& caches, InputNodes& nodes);
 
 /// The outcome of DeformThroughCore.
 struct CoreDeformation

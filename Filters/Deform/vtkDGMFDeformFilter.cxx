@@ -303,9 +303,8 @@ int vtkDGMFDeformFilter::Execute(
     options.Dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
   }
   dgmf_vtk::InputNodes nodes;
-  dgmf_vtk::NodeRoles roles;
   const std::string error = dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
-    this->OneCellThickMode != OFF && !distributed, options, cache, roles, nodes);
+    this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {

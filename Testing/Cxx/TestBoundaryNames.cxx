@@ -363,6 +363,41 @@ TEST(BoundaryNames, AOneCellThickMeshMovesAsItsLayerBothLayersAlike)
   EXPECT_GT(stiff->GetFieldData()->GetArray("InvertedCellCount")->GetTuple1(0), 0.0);
 }
 
+TEST(BoundaryNames, ANewSelectionOfTheSameInputTakesEffect)
+{
+  // The merge and the node roles are kept between executions of the same input: another moving
+  // boundary must still be seen.
+  auto circle = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints);
+  auto blocks = NamedBlocks(circle);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(blocks);
+  filter->AddMovingBoundary("circle");
+  filter->SetTranslation(0.5, 0.0, 0.0);
+  filter->Update();
+  vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+  ASSERT_NE(volume, nullptr);
+  const auto moved = [&](vtkIdType i) { return volume->GetPoint(i)[0] != circle->GetPoint(i)[0]; };
+  vtkIdType onCircle = -1, onLeft = -1;
+  for (vtkIdType i = 0; i < CirclePoints; ++i)
+  {
+    const double* p = circle->GetPoint(i);
+    onCircle = std::hypot(p[0], p[1]) < 2.0 && onCircle < 0 ? i : onCircle;
+    onLeft = p[0] == -5.0 && std::abs(p[1]) < 4.0 && onLeft < 0 ? i : onLeft;
+  }
+  ASSERT_GE(onCircle, 0);
+  ASSERT_GE(onLeft, 0);
+  EXPECT_TRUE(moved(onCircle));
+  EXPECT_FALSE(moved(onLeft));
+
+  filter->RemoveAllMovingBoundaries();
+  filter->AddMovingBoundary("left");
+  filter->Update();
+  volume = VolumeOf(filter->GetOutputDataObject(0));
+  ASSERT_NE(volume, nullptr);
+  EXPECT_FALSE(moved(onCircle)) << "the circle is a static patch now";
+  EXPECT_TRUE(moved(onLeft));
+}
+
 TEST(BoundaryNames, TheOneCellThickLayersAreFoundAgainWhenThePointsChange)
 {
   // The layers of a marked one-cell-thick grid are kept between executions while its points are
