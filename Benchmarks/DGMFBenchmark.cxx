@@ -3,7 +3,7 @@
  *
  *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
  *                  [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]
- *                  [--inputs grid,multiblock] [--csv FILE]
+ *                  [--inputs grid,multiblock] [--quality 0] [--csv FILE]
  *                  [--command dgmf-deform [--command-csv FILE]]
  *
  * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
@@ -17,6 +17,7 @@
  * --inputs grid,multiblock: the mesh as one grid with its marker (default), and as a CFD reader's
  * multiblock (NamedBlocks.h: the volume and named patches, the body moving by name; layered
  * numbering only; the quality is not timed again).
+ * --quality 0: the quality metric is not timed (its columns are empty).
  * --command PATH: also runs the command PATH (dgmf-deform) on the mesh written as a .vtu, with
  * each thread count, and writes its wall time and the read, filter and write times it prints,
  * beside the first deformation, to --command-csv FILE (default command.csv).
@@ -98,7 +99,8 @@ int main(int argc, char* argv[])
   std::vector<std::string> threads = { "1", "2" };
   std::vector<std::string> numberings = { "layered" };
   std::vector<std::string> inputs = { "grid" };
-  std::string command; // dgmf-deform, for the whole-command figure
+  std::string command;     // dgmf-deform, for the whole-command figure
+  bool timeQuality = true; // --quality 0: the deformation only
   std::string commandCsvPath = "command.csv";
   int repeats = 3;
   int idwMaxSize = 1;
@@ -123,6 +125,8 @@ int main(int argc, char* argv[])
       inputs = Split(value);
     else if (option == "--command")
       command = value;
+    else if (option == "--quality")
+      timeQuality = value != "0";
     else if (option == "--command-csv")
       commandCsvPath = value;
     else if (option == "--csv")
@@ -244,7 +248,11 @@ int main(int argc, char* argv[])
             result.Repeated = Median(repeated);
             result.CacheBytesPerNode =
               static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
-            if (multiblock) // the same deformation; its quality is the grid's
+            if (methodName == "dgmf" && !multiblock)
+            {
+              dgmfFirst[threadCount] = result.First; // beside the whole command's time
+            }
+            if (multiblock || !timeQuality) // the multiblock's quality is the grid's
             {
               csv << mesh->GetNumberOfPoints() << "," << size.BoundaryNodes() << "," << numbering
                   << "," << methodName << "," << threadCount << "," << result.Graph << ","
@@ -253,7 +261,7 @@ int main(int argc, char* argv[])
                   << PeakResidentMegabytes() << ",,," << input << "\n";
               csv.flush();
               std::cerr << std::fixed << std::setprecision(3) << "  " << methodName << ", "
-                        << threadCount << " thread(s), multiblock: first " << result.First
+                        << threadCount << " thread(s), " << input << ": first " << result.First
                         << " s (graph " << result.Graph << ", location " << result.Location
                         << ", mapping " << result.Mapping << "), repeated " << result.Repeated
                         << " s, cache " << std::setprecision(1) << result.CacheBytesPerNode
@@ -299,10 +307,6 @@ int main(int argc, char* argv[])
                       << result.QualityWithFacesFirst << " s first, " << result.QualityWithFaces
                       << " s repeated), cache " << std::setprecision(1) << result.CacheBytesPerNode
                       << " B/node\n";
-            if (methodName == "dgmf")
-            {
-              dgmfFirst[threadCount] = result.First;
-            }
           }
         }
       // The whole command on the same mesh, as a .vtu (the grid input; DGMF, the default).

@@ -67,6 +67,72 @@ std::vector<std::string> SplitNames(const std::string& list)
   }
   return names;
 }
+/// A law: `harmonic` or `ramp` and four numbers (with `pitch`, harmonic and the four numbers).
+bool ReadLaw(int argc, char* argv[], int& i, bool pitch, int& kind, double parameters[4])
+{
+  int at = i;
+  if (!pitch)
+  {
+    if (at + 1 >= argc)
+    {
+      return false;
+    }
+    const std::string name = argv[at + 1];
+    if (name != "harmonic" && name != "ramp")
+    {
+      return false;
+    }
+    kind = name == "harmonic" ? vtkDGMFDeformFilter::HARMONIC : vtkDGMFDeformFilter::RAMP;
+    ++at;
+  }
+  else
+  {
+    kind = vtkDGMFDeformFilter::HARMONIC;
+  }
+  if (!ReadDoubles(argc, argv, at, 4, parameters))
+  {
+    return false;
+  }
+  i = at;
+  return true;
+}
+
+/// START:END:COUNT as COUNT equally spaced times (COUNT >= 1; END >= START).
+bool ReadTimes(const char* text, std::vector<double>& times)
+{
+  std::stringstream stream(text);
+  std::string start, end, count;
+  if (!std::getline(stream, start, ':') || !std::getline(stream, end, ':') ||
+    !std::getline(stream, count, ':'))
+  {
+    return false;
+  }
+  try
+  {
+    std::size_t used = 0;
+    const double a = std::stod(start, &used);
+    bool whole = used == start.size();
+    const double b = std::stod(end, &used);
+    whole = whole && used == end.size();
+    const long n = std::stol(count, &used);
+    whole = whole && used == count.size();
+    if (!whole || !std::isfinite(a) || !std::isfinite(b) || b < a || n < 1 || n > 1000000)
+    {
+      return false;
+    }
+    times.clear();
+    for (long k = 0; k < n; ++k)
+    {
+      times.push_back(
+        n == 1 ? a : a + (b - a) * static_cast<double>(k) / static_cast<double>(n - 1));
+    }
+    return true;
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+}
 } // namespace
 
 std::string Usage()
@@ -92,6 +158,19 @@ std::string Usage()
     "  --center X Y Z          rotation centre (default 0 0 0); --center moving: the centroid\n"
     "                          of each moving boundary\n"
     "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
+    "  --axis AX AY AZ         rotation axis through the centre (default 0 0 1), with --angle\n"
+    "  --angle DEG             rotation about --axis in degrees, instead of --rotate\n"
+    "motion in time (the output is then a series: OUTPUT_%04d.vtu and OUTPUT.pvd, or one time\n"
+    "directory per time in an OpenFOAM case; OUTPUT may hold its own %d):\n"
+    "  --rotation-law harmonic MEAN AMPLITUDE FREQUENCY PHASE\n"
+    "  --rotation-law ramp START END T0 T1\n"
+    "                          the angle about --axis in degrees: MEAN + AMPLITUDE\n"
+    "                          sin(2 pi (FREQUENCY t + PHASE/360)), or from START to END\n"
+    "  --pitch MEAN AMPLITUDE FREQUENCY PHASE   the same as --rotation-law harmonic ...\n"
+    "  --translation-law harmonic|ramp P1 P2 P3 P4\n"
+    "                          the distance along --translate's direction, the same forms\n"
+    "  --trajectory FILE.csv   per row Time, Body, TX TY TZ, QW QX QY QZ or RX RY RZ (degrees)\n"
+    "  --times START:END:COUNT the times of the series (default 0:1:21, or the table's)\n"
     "  --marker NAME           boundary-marker point array (default "
     "BoundaryMarker if present)\n"
     "  --displacement NAME     displacement point array (default Displacement "
@@ -138,6 +217,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   {
     const std::string option = argv[i];
     double v[3];
+    double law[4];
     int k = 0;
     if (option == "--rotate" && ReadDoubles(argc, argv, i, 3, v))
     {
@@ -186,6 +266,33 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     else if (option == "--translate" && ReadDoubles(argc, argv, i, 3, v))
     {
       filter->SetTranslation(v);
+    }
+    else if (option == "--axis" && ReadDoubles(argc, argv, i, 3, v))
+    {
+      filter->SetRotationAxis(v);
+    }
+    else if (option == "--angle" && ReadDoubles(argc, argv, i, 1, v))
+    {
+      filter->SetRotationAngle(v[0]);
+    }
+    else if ((option == "--rotation-law" || option == "--translation-law" || option == "--pitch") &&
+      ReadLaw(argc, argv, i, option == "--pitch", k, law))
+    {
+      option == "--translation-law" ? filter->SetTranslationLaw(k) : filter->SetRotationLaw(k);
+      option == "--translation-law" ? filter->SetTranslationLawParameters(law)
+                                    : filter->SetRotationLawParameters(law);
+      options.Series = true;
+    }
+    else if (option == "--trajectory" && i + 1 < argc)
+    {
+      options.Trajectory = argv[++i];
+      options.Series = true;
+    }
+    else if (option == "--times" && i + 1 < argc && ReadTimes(argv[i + 1], options.Times))
+    {
+      ++i;
+      filter->SetTimeRange(options.Times.front(), options.Times.back());
+      filter->SetNumberOfTimeSteps(static_cast<int>(options.Times.size()));
     }
     else if (option == "--method" && i + 1 < argc &&
       vtkDGMFDeformFilter::GetMethodFromName(argv[i + 1]) >= 0)
@@ -272,6 +379,12 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
   }
 
+  if (!options.Times.empty() && !options.Series)
+  {
+    std::cerr << "dgmf-deform: --times needs a motion in time (--rotation-law, --pitch, "
+                 "--translation-law or --trajectory)\n";
+    return ExitUsage;
+  }
   if (options.FailOnInverted && !filter->GetComputeQuality())
   {
     std::cerr << "dgmf-deform: --fail-on-inverted needs the quality metric (drop --no-quality)\n";

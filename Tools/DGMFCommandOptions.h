@@ -40,6 +40,9 @@ struct CommandOptions
   bool NoWrite = false;            ///< --no-write: read and deform only (the timings show)
   bool VTUAppended = true;         ///< --vtu-mode appended (default) or binary
   std::string Compression = "lz4"; ///< --compression
+  std::string Trajectory;          ///< --trajectory: a CSV table of body motions in time
+  std::vector<double> Times;       ///< --times START:END:COUNT (empty: the filter's own)
+  bool Series = false;             ///< the motion depends on time: one output per time (a series)
 };
 
 /// The usage text.

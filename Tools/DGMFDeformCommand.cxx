@@ -6,8 +6,10 @@
  *   dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [--static ...] [--slip ...] [options]
  *
  * INPUT is a .vtu (XML) or .vtk (legacy) unstructured grid; the output is written as an XML
- * unstructured grid in inline binary mode (.vtu) or a binary legacy file (.vtk), under a
- * temporary name renamed into place. CASE_DIR is an OpenFOAM case (its directory or a .foam
+ * unstructured grid (.vtu, appended raw with LZ4 by default: --vtu-mode, --compression) or a
+ * binary legacy file (.vtk), under a temporary name renamed into place. A motion in time
+ * (--rotation-law, --pitch, --translation-law, --trajectory) writes a series: one output per time
+ * and a .pvd collection (RunSeries). CASE_DIR is an OpenFOAM case (its directory or a .foam
  * file); the deformed points are written into OUT_CASE_DIR (vtkDGMFOpenFOAMWriter: a new
  * directory gets a copy of the case; OUT_CASE_DIR may be CASE_DIR itself). The quality summary
  * is printed on one line. Exit codes: DGMFCommandOptions.h (ExitCode). Messages:
@@ -16,6 +18,7 @@
 #include "DGMFCommandData.h"
 #include "DGMFCommandMessages.h"
 #include "DGMFCommandOptions.h"
+#include "DGMFCommandSeries.h"
 
 #include "dgmf/meshfile/MeshFileFormat.h"
 
@@ -25,9 +28,12 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -211,6 +217,108 @@ bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   }
   return ok;
 }
+/**
+ * The series of a motion in time: the filter run at each time (the graph built once), each frame
+ * written as the options say (OUTPUT's frame files and a .pvd collection, or one time directory
+ * per time in an OpenFOAM case). Stops at the first frame that fails.
+ */
+int RunSeries(
+  vtkDGMFDeformFilter* filter, InputKind kind, dgmf_cli::CommandOptions options, Times times)
+{
+  std::vector<double> steps = options.Times;
+  if (steps.empty())
+  {
+    filter->UpdateInformation();
+    vtkInformation* info = filter->GetOutputInformation(0);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    {
+      const double* values = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      steps.assign(values, values + info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+    }
+  }
+  if (steps.empty())
+  {
+    std::cerr << "dgmf-deform: error: the motion has no time steps\n";
+    return ExitFailure;
+  }
+  const bool files = kind != InputKind::OpenFOAMCase;
+  if (files && dgmf_cli::FramePath(options.Output, 0, steps.size()).empty())
+  {
+    std::cerr << "dgmf-deform: the output's % must be one integer conversion (%d, %04d): "
+              << options.Output << "\n";
+    return ExitUsage;
+  }
+  if (files && !options.NoWrite)
+  {
+    // The series' folder is made if it is new (a series is many files: users give it its own).
+    const std::filesystem::path folder =
+      std::filesystem::path(dgmf_cli::FramePath(options.Output, 0, steps.size())).parent_path();
+    std::error_code ignored;
+    if (!folder.empty())
+    {
+      std::filesystem::create_directories(folder, ignored);
+    }
+  }
+  std::vector<std::pair<double, std::string>> frames;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+  {
+    const double t = steps[k];
+    dgmf_cli::ResetErrorCount();
+    dgmf_cli::SetStage("deforming " + options.Input + " at time " + std::to_string(t));
+    vtkNew<vtkTimerLog> timer;
+    timer->StartTimer();
+    filter->UpdateTimeStep(t);
+    timer->StopTimer();
+    times.Deform = timer->GetElapsedTime();
+    vtkDataObject* deformed = filter->GetOutputDataObject(0);
+    std::cout << "dgmf-deform: time " << t << " (frame " << k + 1 << " of " << steps.size() << ")"
+              << std::endl;
+    if (dgmf_cli::GetErrorCount() > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
+    {
+      std::cerr << "dgmf-deform: the deformation failed at time " << t << "; " << frames.size()
+                << " earlier frames were written\n";
+      return ExitFailure;
+    }
+    const long long inverted = CountValue(deformed, "InvertedCellCount");
+    if (options.FailOnInverted && inverted > 0)
+    {
+      std::cerr << "dgmf-deform: the deformation inverts " << inverted << " cells at time " << t
+                << "; this frame was not written (--fail-on-inverted), " << frames.size()
+                << " earlier frames were\n";
+      return ExitInvertedCells;
+    }
+    dgmf_cli::CommandOptions frame = options;
+    if (files)
+    {
+      frame.Output = dgmf_cli::FramePath(options.Output, k, steps.size());
+    }
+    else
+    {
+      frame.Time = dgmf_cli::OpenFOAMTimeName(t);
+    }
+    const double writeStart = vtkTimerLog::GetUniversalTime();
+    std::string written;
+    if (!options.NoWrite && !WriteOutput(filter, kind, frame, written))
+    {
+      return ExitFailure;
+    }
+    times.Write = vtkTimerLog::GetUniversalTime() - writeStart;
+    frames.emplace_back(t, frame.Output);
+    PrintSummary(filter, times, written);
+  }
+  if (files && !options.NoWrite && dgmf_cli::IsMeshFileName(options.Output))
+  {
+    const std::string collection = dgmf_cli::CollectionPath(options.Output);
+    if (!dgmf_cli::WriteCollection(collection, frames))
+    {
+      std::cerr << "dgmf-deform: error: could not write " << collection << "\n";
+      return ExitFailure;
+    }
+    std::cout << "dgmf-deform: wrote the series " << collection << " (" << frames.size()
+              << " frames)" << std::endl;
+  }
+  return ExitSuccess;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -287,6 +395,21 @@ int main(int argc, char* argv[])
     (mesh && mesh->GetPointData()->GetArray(options.Displacement.c_str())))
   {
     filter->SetDisplacementArrayName(options.Displacement.c_str());
+  }
+
+  if (!options.Trajectory.empty())
+  {
+    vtkSmartPointer<vtkTable> table = dgmf_cli::ReadTrajectoryCSV(options.Trajectory);
+    if (!table)
+    {
+      return ExitFailure;
+    }
+    filter->SetTrajectoryData(table);
+  }
+  if (options.Series)
+  {
+    dgmf_cli::ShowProgress(filter, "deforming", options.ProgressDelay);
+    return RunSeries(filter, kind, options, times);
   }
 
   // The deformation: the filter's messages reach stderr through the message window.

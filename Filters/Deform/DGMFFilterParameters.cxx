@@ -68,13 +68,10 @@ bool BodyMotionTable::Clear()
   return any;
 }
 
-std::vector<dgmf::RigidMotion> BodyMotionTable::For(
-  vtkDGMFDeformFilter* filter, const InputNodes& nodes) const
+std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
+  const InputNodes& nodes, const dgmf::RigidMotion& properties, const dgmf::Trajectory* trajectory,
+  double t) const
 {
-  dgmf::RigidMotion properties;
-  filter->GetTranslation(properties.Translation);
-  filter->GetRotationCenter(properties.Center);
-  filter->GetRotationAngles(properties.AnglesDegrees);
   const std::int32_t bodies = std::max<std::int32_t>(nodes.NumberOfBodies, 1);
   // With BODY_CENTROID: the centroid of each body's moving nodes (this piece's).
   std::vector<std::array<double, 4>> sums(static_cast<std::size_t>(bodies), { 0, 0, 0, 0 });
@@ -97,15 +94,25 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(
   std::vector<dgmf::RigidMotion> motions;
   for (int k = 1; k <= bodies; ++k)
   {
-    const auto found = this->Motions.find(k);
-    motions.push_back(found != this->Motions.end() ? found->second : properties);
     const std::array<double, 4>& sum = sums[static_cast<std::size_t>(k - 1)];
-    if (found == this->Motions.end() && sum[3] > 0.0)
+    double center[3];
+    for (int c = 0; c < 3; ++c)
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        motions.back().Center[c] = sum[static_cast<std::size_t>(c)] / sum[3];
-      }
+      center[c] = sum[3] > 0.0 ? sum[static_cast<std::size_t>(c)] / sum[3] : properties.Center[c];
+    }
+    const auto found = this->Motions.find(k);
+    if (trajectory && trajectory->HasBody(k))
+    {
+      motions.push_back(trajectory->At(k, t, center));
+    }
+    else if (found != this->Motions.end())
+    {
+      motions.push_back(found->second);
+    }
+    else
+    {
+      motions.push_back(properties);
+      std::copy_n(center, 3, motions.back().Center);
     }
   }
   return motions;

@@ -8,6 +8,7 @@
 
 #include "dgmf/DeformationMethod.h"
 #include "dgmf/RigidMotion.h"
+#include "dgmf/Trajectory.h"
 
 #include <cstdint>
 #include <map>
@@ -37,11 +38,13 @@ public:
   /// Number of bodies with a motion.
   std::size_t Size() const { return this->Motions.size(); }
   /**
-   * The rigid motion of bodies 1..max(bodies, 1) of `nodes`: the one set for the body, else the
-   * filter's motion properties (Translation, RotationCenter, RotationAngles), centred on the
-   * centroid of the body's moving nodes with RotationCenterMode BODY_CENTROID.
+   * The rigid motion of bodies 1..max(bodies, 1) of `nodes` at time `t`: the trajectory's (if
+   * given and it has rows for the body), else the one set for the body, else `properties` (the
+   * filter's motion properties at `t`); with RotationCenterMode BODY_CENTROID, the trajectory's and
+   * the properties' motions turn about the centroid of the body's moving nodes.
    */
-  std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, const InputNodes& nodes) const;
+  std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, const InputNodes& nodes,
+    const dgmf::RigidMotion& properties, const dgmf::Trajectory* trajectory, double t) const;
 
 private:
   std::map<int, dgmf::RigidMotion> Motions;

@@ -4,12 +4,15 @@
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
 #include "DGMFFilterParameters.h"
+#include "DGMFMotionInTime.h"
 #include "DGMFOutputArrays.h"
 #include "DGMFSMPTools.h"
 
 #include "dgmf/DeformationMethod.h"
 #include "dgmf/Progress.h"
+#include "dgmf/ResultNames.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
@@ -20,6 +23,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <exception>
@@ -36,11 +41,16 @@ struct vtkDGMFDeformFilter::Internals
     std::make_unique<dgmf_vtk::DeformationCaches>();
   dgmf_vtk::BodyMotionTable BodyMotions;  ///< SetBodyMotion
   dgmf_vtk::BoundarySelection Boundaries; ///< AddMovingBoundary, AddStaticBoundary, AddSlipBoundary
+  // This execution's motion in time: the time, and the trajectory table's motions (if connected).
+  bool TimeDependent = false;
+  double Time = 0.0;
+  std::unique_ptr<dgmf::Trajectory> Trajectory;
 };
 
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
   : Internal(new Internals)
 {
+  this->SetNumberOfInputPorts(2); // the mesh; the optional trajectory table
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
@@ -175,11 +185,68 @@ void vtkDGMFDeformFilter::ReleaseCache()
   this->Internal->Cache = std::make_unique<dgmf_vtk::DeformationCaches>();
 }
 
-int vtkDGMFDeformFilter::FillInputPortInformation(int, vtkInformation* info)
+void vtkDGMFDeformFilter::SetTrajectoryConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkDGMFDeformFilter::SetTrajectoryData(vtkTable* table)
+{
+  this->SetInputData(1, table);
+}
+
+int vtkDGMFDeformFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  if (port == 1)
+  {
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
+}
+
+int vtkDGMFDeformFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // A motion in time on an input without time: the filter's own time steps (input with time steps
+  // keeps them: the pipeline copied them already).
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // The table's times are needed now: its source runs ahead of this filter's data pass (a reader
+  // reads it once; data set directly is there already).
+  vtkTable* table = nullptr;
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
+    table = vtkTable::SafeDownCast(this->GetInputDataObject(1, 0));
+  }
+  const bool timeDependent =
+    table || this->RotationLaw != CONSTANT || this->TranslationLaw != CONSTANT;
+  if (!timeDependent || inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    return 1;
+  }
+  std::vector<double> steps = dgmf_vtk::MotionTimeSteps(this, nullptr);
+  if (table && table->GetNumberOfRows() > 0)
+  {
+    try
+    {
+      const dgmf::Trajectory trajectory = dgmf_vtk::ReadTrajectoryTable(table);
+      steps = dgmf_vtk::MotionTimeSteps(this, &trajectory);
+    }
+    catch (const std::exception&)
+    {
+      // reported by RequestData
+    }
+  }
+  outInfo->Set(
+    vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
+  const double range[2] = { steps.front(), steps.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   return 1;
 }
 
@@ -237,6 +304,37 @@ int vtkDGMFDeformFilter::RequestData(
     return 0;
   }
 
+  // The motion's time: the one asked for downstream (else the first step), when it depends on
+  // time; and the trajectories of the table, if one is connected.
+  Internals& internal = *this->Internal;
+  vtkTable* table = vtkTable::GetData(inputVector[1], 0);
+  internal.Trajectory.reset();
+  internal.TimeDependent =
+    table || this->RotationLaw != CONSTANT || this->TranslationLaw != CONSTANT;
+  internal.Time = 0.0;
+  if (internal.TimeDependent)
+  {
+    try
+    {
+      if (table)
+      {
+        internal.Trajectory =
+          std::make_unique<dgmf::Trajectory>(dgmf_vtk::ReadTrajectoryTable(table));
+      }
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< e.what());
+      outputObject->Initialize();
+      return 0;
+    }
+    vtkInformation* outInfo = outputVector->GetInformationObject(0);
+    internal.Time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      : dgmf_vtk::MotionTimeSteps(this, internal.Trajectory.get()).front();
+  }
+  this->LastMotionTime = internal.Time;
+
   // 2-4. Check, deform and write the outputs, on the filter's threads (Execute); in a
   //      distributed run every process takes part, and the quality summary is made global.
   int status = 0;
@@ -278,6 +376,10 @@ int vtkDGMFDeformFilter::RequestData(
   else if (composite)
   {
     composite->ScatterResult(output, compositeOutput);
+  }
+  if (status && internal.TimeDependent)
+  {
+    outputObject->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), internal.Time);
   }
   return status;
 }
@@ -333,7 +435,9 @@ int vtkDGMFDeformFilter::Execute(
     dgmf::CreateMethod(dgmf_vtk::MethodOf(this), dgmf_vtk::MethodParametersOf(this));
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
-  problem.Motions = this->Internal->BodyMotions.For(this, nodes);
+  const Internals& internal = *this->Internal;
+  problem.Motions = internal.BodyMotions.For(this, nodes,
+    dgmf_vtk::PropertiesMotionAt(this, internal.Time), internal.Trajectory.get(), internal.Time);
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =
     dgmf_vtk::ReuseOutputPoints(cache.OutputPoints, input, output, n);
@@ -365,6 +469,13 @@ int vtkDGMFDeformFilter::Execute(
   dgmf_vtk::SetDeformedGrid(input, output, newPoints, nodes.LocalNodes);
   dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
+  if (internal.TimeDependent)
+  {
+    vtkNew<vtkDoubleArray> time;
+    time->SetName(dgmf::names::MotionTime);
+    time->InsertNextValue(internal.Time);
+    output->GetFieldData()->AddArray(time);
+  }
   const dgmf::QualitySummary summary = dgmf_vtk::AddOutputQuality(input, nodes.Points,
     newCoordinates->GetPointer(0), output, this->ComputeQuality,
     this->ComputeNonOrthogonality ? &cache.Faces : nullptr, dgmf_vtk::MakeSMPParallelFor());

@@ -13,7 +13,8 @@
  * 4. r = sum e_i r0_i, with r0 = 0 on moving and r0 = StaticBoundaryR0 on static boundary nodes;
  * 5. the damping factor f = u(r) (u chosen by DampingFunction; 0 for r > 1);
  * 6. x' = c + R(f angles)(x - c) + f t + f d: the rigid motion (Translation t, RotationAngles
- *    about RotationCenter c) and the shape deformation d, all scaled by f;
+ *    or RotationAngle about RotationAxis, through RotationCenter c) and the shape deformation d,
+ *    all scaled by f;
  * 7. d at an interior node interpolated from the moving boundary (DGMF2).
  *
  * The shape deformation d comes from the displacement point array (input array 0, 3 components):
@@ -51,6 +52,12 @@
  *   `MaximumNonOrthogonality` and `InputMaximumNonOrthogonality` (degrees, as checkMesh).
  * Output points are always double precision. The input is never modified.
  *
+ * Motion in time: the rotation angle and the translation can follow a harmonic law or a ramp
+ * (RotationLaw, TranslationLaw), or each body a trajectory table (input port 1); the filter then
+ * reports time steps (TimeRange, NumberOfTimeSteps, or the table's times) and deforms the input
+ * for the time requested, always from the input mesh (no drift), reusing the graph: every frame
+ * costs one pass over the nodes. The output's field data has the time of its motion, MotionTime.
+ *
  * The Delaunay graph and the node locations are kept between executions while the input's
  * points, cells and boundary classification are unchanged: changing only the motion, the
  * damping function or the displacement values re-runs only the cheap per-node pass.
@@ -81,7 +88,9 @@
 #include "DGMFFiltersModule.h" // for export macro
 #include "vtkPassInputTypeAlgorithm.h"
 
+class vtkAlgorithmOutput;
 class vtkMultiProcessController;
+class vtkTable;
 class vtkUnstructuredGrid;
 namespace dgmf_vtk
 {
@@ -225,6 +234,90 @@ public:
   vtkSetVector3Macro(RotationAngles, double);
   vtkGetVector3Macro(RotationAngles, double);
   ///@}
+
+  ///@{
+  /**
+   * Rotation about an axis: RotationAngle degrees about the line through RotationCenter along
+   * RotationAxis, right-handed (counter-clockwise seen from the axis's tip looking back; the axis
+   * need not be of unit length). It replaces RotationAngles, which must then be 0 0 0 (both
+   * non-zero is an error). A 2D mesh needs the axis (0, 0, +-1). Defaults: RotationAxis (0, 0, 1),
+   * RotationAngle 0.
+   */
+  vtkSetVector3Macro(RotationAxis, double);
+  vtkGetVector3Macro(RotationAxis, double);
+  vtkSetMacro(RotationAngle, double);
+  vtkGetMacro(RotationAngle, double);
+  ///@}
+
+  /// Laws in time of the rotation angle and of the translation (dgmf::MotionLawKind's values).
+  enum MotionLaws
+  {
+    CONSTANT = 0, ///< the motion as the properties give it, at every time
+    HARMONIC = 1, ///< mean + amplitude sin(2 pi (frequency t + phase / 360))
+    RAMP = 2      ///< from a start value to an end value between a start time and an end time
+  };
+
+  ///@{
+  /**
+   * The rotation angle in time, one of MotionLaws: with HARMONIC or RAMP the rotation is
+   * RotationLaw's value v(t), in degrees, about RotationAxis through RotationCenter (RotationAngle
+   * is not used; RotationAngles must be 0 0 0). RotationLawParameters: HARMONIC: mean and amplitude
+   * (degrees), frequency (periods per unit time, >= 0) and phase (degrees); RAMP: start and end
+   * angles (degrees), start and end times. A harmonic law gives the same angle, bit for bit, at
+   * times a period apart (dgmf::MotionLaw), so a periodic motion brings the mesh back to the same
+   * points. Defaults: CONSTANT, (0, 10, 1, 0).
+   */
+  vtkSetClampMacro(RotationLaw, int, CONSTANT, RAMP);
+  vtkGetMacro(RotationLaw, int);
+  vtkSetVector4Macro(RotationLawParameters, double);
+  vtkGetVector4Macro(RotationLawParameters, double);
+  ///@}
+
+  ///@{
+  /**
+   * The translation in time, one of MotionLaws: with HARMONIC or RAMP the translation is
+   * TranslationLaw's value v(t) (a distance, in mesh units) along the direction of Translation
+   * (whose length is then not used, but which must not be zero). TranslationLawParameters as
+   * RotationLawParameters', in mesh units. Defaults: CONSTANT, (0, 1, 1, 0).
+   */
+  vtkSetClampMacro(TranslationLaw, int, CONSTANT, RAMP);
+  vtkGetMacro(TranslationLaw, int);
+  vtkSetVector4Macro(TranslationLawParameters, double);
+  vtkGetVector4Macro(TranslationLawParameters, double);
+  ///@}
+
+  ///@{
+  /**
+   * The time steps the filter reports when the motion depends on time (a law other than CONSTANT,
+   * or a trajectory table) and the input has none: NumberOfTimeSteps (>= 1) times equally spaced
+   * over TimeRange, both ends included; with a trajectory table, the table's times. ParaView's
+   * animation then plays the motion, and Save Data with all time steps writes the series. An
+   * input with time steps keeps its own. Defaults: (0, 1) and 21.
+   */
+  vtkSetVector2Macro(TimeRange, double);
+  vtkGetVector2Macro(TimeRange, double);
+  vtkSetClampMacro(NumberOfTimeSteps, int, 1, 1000000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * The optional trajectory table (input port 1, a vtkTable such as ParaView's CSV reader gives):
+   * per row a time, a body id and that body's rigid motion at that time; interpolated in between
+   * (translation linearly, rotation by slerp) and held before the first and after the last row.
+   * Columns (any case): Time; optionally Body (default 1), TX, TY, TZ (default 0), and the rotation
+   * as a unit quaternion QW, QX, QY, QZ or as angles RX, RY, RZ in degrees (RotationAngles'
+   * convention). The rotation is about RotationCenter (each body's centroid with BODY_CENTROID).
+   * Bodies with rows take their motion from the table; the others from the properties and
+   * SetBodyMotion. A table with a missing Time column, times that do not increase for a body or a
+   * quaternion that is not of unit length is an error naming the row or column.
+   */
+  void SetTrajectoryConnection(vtkAlgorithmOutput* output);
+  void SetTrajectoryData(vtkTable* table);
+  ///@}
+
+  /// The time of the last execution's motion (0 when the motion does not depend on time).
+  vtkGetMacro(LastMotionTime, double);
 
   /// Where DGMF's rigid motion comes from.
   enum RigidMotionModes
@@ -474,6 +567,7 @@ protected:
   ~vtkDGMFDeformFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -483,6 +577,15 @@ protected:
   double Translation[3] = { 0.0, 0.0, 0.0 };
   double RotationCenter[3] = { 0.0, 0.0, 0.0 };
   double RotationAngles[3] = { 0.0, 0.0, 0.0 };
+  double RotationAxis[3] = { 0.0, 0.0, 1.0 };
+  double RotationAngle = 0.0;
+  int RotationLaw = CONSTANT;
+  double RotationLawParameters[4] = { 0.0, 10.0, 1.0, 0.0 };
+  int TranslationLaw = CONSTANT;
+  double TranslationLawParameters[4] = { 0.0, 1.0, 1.0, 0.0 };
+  double TimeRange[2] = { 0.0, 1.0 };
+  int NumberOfTimeSteps = 21;
+  double LastMotionTime = 0.0;
   int DeformationMode = DGMF2;
   int RigidMotionMode = PROPERTIES;
   double SupportRadius = 0.0;

@@ -33,7 +33,8 @@ constexpr const char* MaximumNonOrthogonality = "MaximumNonOrthogonality";      
 constexpr const char* InputMaximumNonOrthogonality = "InputMaximumNonOrthogonality"; ///< degrees
 
 // Field data: every method.
-constexpr const char* Method = "Method"; ///< the method's name (MethodTable.def)
+constexpr const char* Method = "Method";         ///< the method's name (MethodTable.def)
+constexpr const char* MotionTime = "MotionTime"; ///< the time of a motion that depends on time
 
 // Field data: the graph methods (DGMF, DGM, DGRBF).
 constexpr const char* OutsideNodeCount = "OutsideNodeCount";

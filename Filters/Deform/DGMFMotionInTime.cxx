@@ -1,0 +1,203 @@
+#include "DGMFMotionInTime.h"
+
+#include "vtkDGMFDeformFilter.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkDataArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dgmf_vtk
+{
+namespace
+{
+dgmf::MotionLaw LawOf(int kind, const double parameters[4])
+{
+  dgmf::MotionLaw law;
+  law.Kind = static_cast<dgmf::MotionLawKind>(kind);
+  std::copy_n(parameters, 4, law.Parameters);
+  return law;
+}
+
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+/// The column `name` of `table` (any case), or null; std::invalid_argument if not numeric.
+vtkDataArray* Column(vtkTable* table, const char* name)
+{
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    vtkAbstractArray* column = table->GetColumn(c);
+    if (column && column->GetName() && Lower(column->GetName()) == Lower(name))
+    {
+      auto* numbers = vtkDataArray::SafeDownCast(column);
+      if (!numbers || numbers->GetNumberOfComponents() != 1)
+      {
+        throw std::invalid_argument(std::string("The trajectory table's column '") +
+          column->GetName() + "' is not a column of numbers.");
+      }
+      return numbers;
+    }
+  }
+  return nullptr;
+}
+
+std::string ColumnNames(vtkTable* table)
+{
+  std::string names;
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    const char* name = table->GetColumn(c) ? table->GetColumn(c)->GetName() : nullptr;
+    names += (names.empty() ? "" : ", ") + std::string(name ? name : "(unnamed)");
+  }
+  return names.empty() ? "none" : names;
+}
+} // namespace
+
+dgmf::MotionLaw RotationLawOf(vtkDGMFDeformFilter* filter)
+{
+  return LawOf(filter->GetRotationLaw(), filter->GetRotationLawParameters());
+}
+
+dgmf::MotionLaw TranslationLawOf(vtkDGMFDeformFilter* filter)
+{
+  return LawOf(filter->GetTranslationLaw(), filter->GetTranslationLawParameters());
+}
+
+dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
+{
+  dgmf::RigidMotion motion;
+  filter->GetTranslation(motion.Translation);
+  filter->GetRotationCenter(motion.Center);
+  filter->GetRotationAngles(motion.AnglesDegrees);
+  filter->GetRotationAxis(motion.Axis);
+  motion.AxisAngleDegrees = filter->GetRotationAngle();
+  const dgmf::MotionLaw rotation = RotationLawOf(filter);
+  const dgmf::MotionLaw translation = TranslationLawOf(filter);
+  rotation.Check("the rotation law");
+  translation.Check("the translation law");
+  if (motion.HasEulerAngles() && (motion.HasAxisRotation() || rotation.IsTimeDependent()))
+  {
+    throw std::invalid_argument(
+      "Rotation Angles (about x, y, z) cannot be combined with a Rotation Angle about the Rotation "
+      "Axis or with a rotation law (which turns about the Rotation Axis): set Rotation Angles to "
+      "0 0 0, or the other to 0 and the law to Constant.");
+  }
+  if (rotation.IsTimeDependent())
+  {
+    motion.AxisAngleDegrees = rotation.Evaluate(t);
+  }
+  if (translation.IsTimeDependent())
+  {
+    const double* d = motion.Translation;
+    const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      throw std::invalid_argument("A translation law moves along the Translation's direction: "
+                                  "Translation must not be zero.");
+    }
+    const double distance = translation.Evaluate(t);
+    for (double& component : motion.Translation)
+    {
+      component = component / length * distance;
+    }
+  }
+  return motion;
+}
+
+dgmf::Trajectory ReadTrajectoryTable(vtkTable* table)
+{
+  vtkDataArray* time = Column(table, "Time");
+  if (!time)
+  {
+    throw std::invalid_argument(
+      "The trajectory table has no column 'Time' (its columns: " + ColumnNames(table) + ").");
+  }
+  vtkDataArray* body = Column(table, "Body");
+  vtkDataArray* translation[3] = { Column(table, "TX"), Column(table, "TY"), Column(table, "TZ") };
+  vtkDataArray* quaternion[4] = { Column(table, "QW"), Column(table, "QX"), Column(table, "QY"),
+    Column(table, "QZ") };
+  vtkDataArray* angles[3] = { Column(table, "RX"), Column(table, "RY"), Column(table, "RZ") };
+  const int quaternionColumns = static_cast<int>(std::count_if(
+    quaternion, quaternion + 4, [](vtkDataArray* column) { return column != nullptr; }));
+  const bool anyAngle = angles[0] || angles[1] || angles[2];
+  if (quaternionColumns != 0 && quaternionColumns != 4)
+  {
+    throw std::invalid_argument(
+      "The trajectory table has some of the quaternion columns QW, QX, QY, QZ but not all four "
+      "(its columns: " + ColumnNames(table) + ").");
+  }
+  if (quaternionColumns == 4 && anyAngle)
+  {
+    throw std::invalid_argument("The trajectory table gives the rotation twice: as a quaternion "
+                                "(QW, QX, QY, QZ) and as angles (RX, RY, RZ). Keep one.");
+  }
+  std::vector<dgmf::TrajectoryRow> rows;
+  for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r)
+  {
+    dgmf::TrajectoryRow row;
+    row.Row = static_cast<std::size_t>(r + 1);
+    row.Time = time->GetTuple1(r);
+    const double id = body ? body->GetTuple1(r) : 1.0;
+    if (!(id >= 1.0 && id <= 1e6 && id == std::floor(id)))
+    {
+      throw std::invalid_argument("Trajectory row " + std::to_string(r + 1) + ": the body id " +
+        std::to_string(id) + " is not a whole number from 1 on.");
+    }
+    row.Body = static_cast<int>(id);
+    for (int c = 0; c < 3; ++c)
+    {
+      row.Translation[c] = translation[c] ? translation[c]->GetTuple1(r) : 0.0;
+    }
+    if (quaternionColumns == 4)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        row.Quaternion[k] = quaternion[k]->GetTuple1(r);
+      }
+    }
+    else if (anyAngle)
+    {
+      double degrees[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        degrees[c] = angles[c] ? angles[c]->GetTuple1(r) : 0.0;
+        if (!std::isfinite(degrees[c]))
+        {
+          throw std::invalid_argument(
+            "Trajectory row " + std::to_string(r + 1) + ": an angle is not finite.");
+        }
+      }
+      dgmf::EulerAnglesToQuaternion(degrees, row.Quaternion);
+    }
+    rows.push_back(row);
+  }
+  return dgmf::Trajectory(rows); // checks times, finiteness and unit quaternions, naming the row
+}
+
+std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Trajectory* trajectory)
+{
+  if (trajectory)
+  {
+    return trajectory->GetTimes();
+  }
+  const double* range = filter->GetTimeRange();
+  const int count = filter->GetNumberOfTimeSteps();
+  std::vector<double> steps;
+  for (int k = 0; k < count; ++k)
+  {
+    steps.push_back(count == 1 ? range[0] : range[0] + (range[1] - range[0]) * k / (count - 1));
+  }
+  return steps;
+}
+
+} // namespace dgmf_vtk

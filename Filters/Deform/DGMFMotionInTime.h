@@ -1,0 +1,54 @@
+/**
+ * @file DGMFMotionInTime.h
+ * @brief vtkDGMFDeformFilter's motion at a time: the rotation about an axis, the motion laws, the
+ * trajectory table, and the time steps the filter reports (private to the DGMF::Filters module).
+ */
+#ifndef DGMFMotionInTime_h
+#define DGMFMotionInTime_h
+
+#include "dgmf/MotionLaw.h"
+#include "dgmf/RigidMotion.h"
+#include "dgmf/Trajectory.h"
+
+#include <memory>
+#include <vector>
+
+class vtkDGMFDeformFilter;
+class vtkTable;
+
+namespace dgmf_vtk
+{
+
+/// The filter's rotation law (RotationLaw, RotationLawParameters).
+dgmf::MotionLaw RotationLawOf(vtkDGMFDeformFilter* filter);
+
+/// The filter's translation law (TranslationLaw, TranslationLawParameters).
+dgmf::MotionLaw TranslationLawOf(vtkDGMFDeformFilter* filter);
+
+/**
+ * The motion the filter's properties give at time `t`: Translation (its direction times the
+ * translation law's value, with a law), RotationCenter, and RotationAngles or RotationAngle about
+ * RotationAxis (the rotation law's value, with a law). Throws std::invalid_argument, with the
+ * message for the user, for RotationAngles together with a RotationAngle or a rotation law, a
+ * translation law with a zero Translation, and bad law parameters.
+ */
+dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t);
+
+/**
+ * The trajectories of a table (the filter's second input): a column "Time"; optionally "Body"
+ * (ids >= 1; default 1), "TX", "TY", "TZ" (default 0), and the rotation as a unit quaternion
+ * "QW", "QX", "QY", "QZ" or as angles in degrees "RX", "RY", "RZ" (RotationAngles' convention);
+ * without either, no rotation. Column names are matched without regard to case. Throws
+ * std::invalid_argument naming the column or the row (rows count from 1).
+ */
+dgmf::Trajectory ReadTrajectoryTable(vtkTable* table);
+
+/**
+ * The time steps the filter reports when the motion depends on time and the input has none: the
+ * trajectory's times if there is one, else NumberOfTimeSteps equally spaced over TimeRange.
+ */
+std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Trajectory* trajectory);
+
+} // namespace dgmf_vtk
+
+#endif

@@ -1,0 +1,131 @@
+// Motion in time: harmonic and ramp laws, and trajectories from a table (issue 19).
+#include "dgmf/MotionLaw.h"
+#include "dgmf/RigidMotion.h"
+#include "dgmf/Trajectory.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+std::string MessageOf(const std::vector<dgmf::TrajectoryRow>& rows)
+{
+  try
+  {
+    dgmf::Trajectory trajectory(rows);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+dgmf::TrajectoryRow Row(double t, int body, double tx, double angleZ, std::size_t row)
+{
+  dgmf::TrajectoryRow r;
+  r.Time = t;
+  r.Body = body;
+  r.Translation[0] = tx;
+  const double angles[3] = { 0.0, 0.0, angleZ };
+  dgmf::EulerAnglesToQuaternion(angles, r.Quaternion);
+  r.Row = row;
+  return r;
+}
+} // namespace
+
+TEST(MotionLaw, HarmonicIsPeriodicBitForBitAndRampIsLinear)
+{
+  dgmf::MotionLaw pitch;
+  pitch.Kind = dgmf::MotionLawKind::Harmonic;
+  const double parameters[4] = { 2.0, 20.0, 1.5, 30.0 }; // mean, amplitude, frequency, phase
+  std::memcpy(pitch.Parameters, parameters, sizeof parameters);
+  // The phase is rounded to 2^-40 of a period: within 3e-12 times the amplitude.
+  EXPECT_NEAR(pitch.Evaluate(0.0), 2.0 + 20.0 * 0.5, 20.0 * 3e-12); // sin(30 degrees)
+  EXPECT_NEAR(pitch.Evaluate(1.0 / 9.0), 2.0 + 20.0, 20.0 * 3e-12); // 1.5 t + 1/12 = 1/4: the top
+  // Times one period (2/3) apart, as a frame loop computes them (k dt), give the same bits.
+  const double period = 1.0 / 1.5;
+  for (int k = 0; k < 50; ++k)
+  {
+    const double t = k * (period / 50.0);
+    const double later = (k + 50) * (period / 50.0);
+    const double twoLater = (k + 100) * (period / 50.0);
+    ASSERT_EQ(pitch.Evaluate(t), pitch.Evaluate(later)) << "frame " << k;
+    ASSERT_EQ(pitch.Evaluate(t), pitch.Evaluate(twoLater)) << "frame " << k;
+    ASSERT_NEAR(pitch.Evaluate(t), 2.0 + 20.0 * std::sin(2 * M_PI * (1.5 * t + 30.0 / 360.0)),
+      20.0 * 3e-12);
+  }
+
+  dgmf::MotionLaw ramp;
+  ramp.Kind = dgmf::MotionLawKind::Ramp;
+  const double rampParameters[4] = { 0.0, 40.0, 0.5, 1.5 }; // 0 to 40 between t = 0.5 and 1.5
+  std::memcpy(ramp.Parameters, rampParameters, sizeof rampParameters);
+  EXPECT_EQ(ramp.Evaluate(0.0), 0.0);
+  EXPECT_EQ(ramp.Evaluate(1.0), 20.0);
+  EXPECT_EQ(ramp.Evaluate(9.0), 40.0);
+
+  ramp.Parameters[3] = 0.5; // ends when it starts
+  EXPECT_THROW(ramp.Evaluate(1.0), std::invalid_argument);
+  pitch.Parameters[2] = -1.0;
+  EXPECT_THROW(pitch.Check("the rotation law"), std::invalid_argument);
+  pitch.Parameters[2] = NAN;
+  EXPECT_THROW(pitch.Check(), std::invalid_argument);
+}
+
+TEST(Trajectory, InterpolatesTranslationLinearlyAndRotationAlongTheShortestArc)
+{
+  // Body 1 turns from 0 to 90 degrees about z and moves 2 along x between t = 0 and 1; body 2 is
+  // given at other times.
+  const dgmf::Trajectory trajectory({ Row(0.0, 1, 0.0, 0.0, 1), Row(1.0, 1, 2.0, 90.0, 2),
+    Row(0.5, 2, 1.0, -30.0, 3), Row(2.0, 2, 1.0, -30.0, 4) });
+  EXPECT_EQ(trajectory.GetTimes(), (std::vector<double>{ 0.0, 0.5, 1.0, 2.0 }));
+  EXPECT_EQ(trajectory.GetLargestBody(), 2);
+  const double center[3] = { 1.0, 0.0, 0.0 };
+  const dgmf::RigidMotion half = trajectory.At(1, 0.5, center);
+  EXPECT_NEAR(half.Translation[0], 1.0, 1e-15);
+  EXPECT_NEAR(half.AxisAngleDegrees, 45.0, 1e-12);
+  EXPECT_NEAR(half.Axis[2], 1.0, 1e-15);
+  EXPECT_EQ(half.Center[0], 1.0);
+  // The point (2, 0, 0) turns by 45 degrees about (1, 0, 0), then moves by 1 along x.
+  double moved[3];
+  const double p[3] = { 2.0, 0.0, 0.0 };
+  half.Apply(1.0, p, nullptr, moved);
+  EXPECT_NEAR(moved[0], 2.0 + std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(moved[1], std::sqrt(0.5), 1e-12);
+  // Before the first and after the last row: held.
+  EXPECT_EQ(trajectory.At(1, -1.0, center).AxisAngleDegrees, 0.0);
+  EXPECT_NEAR(trajectory.At(1, 5.0, center).AxisAngleDegrees, 90.0, 1e-12);
+  EXPECT_NEAR(trajectory.At(2, 0.0, center).AxisAngleDegrees, 30.0, 1e-12);
+  EXPECT_NEAR(trajectory.At(2, 0.0, center).Axis[2], -1.0, 1e-15);
+
+  // From 170 to -170 degrees: the short way (through 180), not back through 0.
+  const dgmf::Trajectory across({ Row(0.0, 1, 0.0, 170.0, 1), Row(1.0, 1, 0.0, -170.0, 2) });
+  EXPECT_NEAR(std::abs(across.At(1, 0.5, center).AxisAngleDegrees), 180.0, 1e-9);
+  EXPECT_THROW(across.At(3, 0.5, center), std::invalid_argument);
+}
+
+TEST(Trajectory, BadRowsAreNamed)
+{
+  EXPECT_NE(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(1.0, 1, 0, 0, 2), Row(0.5, 1, 0, 0, 3) })
+              .find("trajectory row 3"),
+    std::string::npos);
+  // Equal times of different bodies are fine; of the same body, not.
+  EXPECT_EQ(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(0.0, 2, 0, 0, 2) }), "");
+  EXPECT_NE(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(0.0, 1, 0, 0, 2) }).find("row 2"),
+    std::string::npos);
+  dgmf::TrajectoryRow scaled = Row(0.0, 1, 0, 0, 7);
+  scaled.Quaternion[0] = 1.01;
+  const std::string message = MessageOf({ scaled });
+  EXPECT_NE(message.find("row 7"), std::string::npos) << message;
+  EXPECT_NE(message.find("length"), std::string::npos) << message;
+  dgmf::TrajectoryRow body0 = Row(0.0, 0, 0, 0, 4);
+  EXPECT_NE(MessageOf({ body0 }).find("row 4"), std::string::npos);
+  dgmf::TrajectoryRow nan = Row(NAN, 1, 0, 0, 5);
+  EXPECT_NE(MessageOf({ nan }).find("row 5"), std::string::npos);
+  EXPECT_NE(MessageOf({}).find("no rows"), std::string::npos);
+}

@@ -1,0 +1,108 @@
+#include "DGMFCommandSeries.h"
+
+#include "vtkDelimitedTextReader.h"
+#include "vtkNew.h"
+#include "vtkTable.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+namespace dgmf_cli
+{
+namespace
+{
+const std::regex Conversion("%0?[0-9]*d");
+}
+
+std::string FramePath(const std::string& output, std::size_t index, std::size_t count)
+{
+  std::smatch match;
+  if (output.find('%') != std::string::npos)
+  {
+    if (!std::regex_search(output, match, Conversion) ||
+      output.find('%', static_cast<std::size_t>(match.position(0)) + 1) != std::string::npos)
+    {
+      return "";
+    }
+    char number[64];
+    std::snprintf(number, sizeof number, match.str(0).c_str(), static_cast<int>(index));
+    return match.prefix().str() + number + match.suffix().str();
+  }
+  std::size_t digits = 4;
+  for (std::size_t last = count > 0 ? count - 1 : 0; last >= 10000; last /= 10)
+  {
+    ++digits;
+  }
+  const std::filesystem::path path(output);
+  std::ostringstream name;
+  name << path.stem().string() << "_" << std::setw(static_cast<int>(digits)) << std::setfill('0')
+       << index << path.extension().string();
+  return (path.parent_path() / name.str()).string();
+}
+
+std::string CollectionPath(const std::string& output)
+{
+  std::string base = std::regex_replace(output, Conversion, "");
+  std::filesystem::path path(base);
+  std::string stem = path.stem().string();
+  while (!stem.empty() && (stem.back() == '_' || stem.back() == '-' || stem.back() == '.'))
+  {
+    stem.pop_back();
+  }
+  return (path.parent_path() / ((stem.empty() ? "series" : stem) + ".pvd")).string();
+}
+
+bool WriteCollection(
+  const std::string& path, const std::vector<std::pair<double, std::string>>& frames)
+{
+  std::ofstream file(path);
+  file << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (const auto& frame : frames)
+  {
+    const std::string relative =
+      std::filesystem::path(frame.second).lexically_relative(folder.empty() ? "." : folder).string();
+    file << "    <DataSet timestep=\"" << std::setprecision(17) << frame.first
+         << "\" part=\"0\" file=\"" << relative << "\"/>\n";
+  }
+  file << "  </Collection>\n</VTKFile>\n";
+  file.close();
+  return static_cast<bool>(file);
+}
+
+std::string OpenFOAMTimeName(double t)
+{
+  char name[64];
+  std::snprintf(name, sizeof name, "%.6g", t);
+  return name;
+}
+
+vtkSmartPointer<vtkTable> ReadTrajectoryCSV(const std::string& path)
+{
+  if (!std::filesystem::is_regular_file(path))
+  {
+    std::cerr << "dgmf-deform: error: the trajectory table " << path << " is not a file\n";
+    return nullptr;
+  }
+  vtkNew<vtkDelimitedTextReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetHaveHeaders(true);
+  reader->SetDetectNumericColumns(true);
+  reader->SetFieldDelimiterCharacters(",");
+  reader->Update();
+  vtkSmartPointer<vtkTable> table = reader->GetOutput();
+  if (!table || table->GetNumberOfRows() == 0)
+  {
+    std::cerr << "dgmf-deform: error: the trajectory table " << path << " has no rows\n";
+    return nullptr;
+  }
+  return table;
+}
+
+} // namespace dgmf_cli
