@@ -4,6 +4,7 @@
  *   dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]
  *                  [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]
  *                  [--inputs grid,multiblock] [--quality 0] [--csv FILE]
+ *                  [--frames N [--frames-csv FILE]]
  *                  [--command dgmf-deform [--command-csv FILE]]
  *
  * For each of the paper's mesh sizes (procedural layered hexahedral meshes, see LayeredMesh.h;
@@ -18,12 +19,15 @@
  * multiblock (NamedBlocks.h: the volume and named patches, the body moving by name; layered
  * numbering only; the quality is not timed again).
  * --quality 0: the quality metric is not timed (its columns are empty).
+ * --frames N: also a periodic motion of N frames (PeriodicMotion.h), DGMF on the grid, written to
+ * --frames-csv FILE (default motion.csv): the first frame (the graph) and the frames per second.
  * --command PATH: also runs the command PATH (dgmf-deform) on the mesh written as a .vtu, with
  * each thread count, and writes its wall time and the read, filter and write times it prints,
  * beside the first deformation, to --command-csv FILE (default command.csv).
  */
 #include "LayeredMesh.h"
 #include "NamedBlocks.h"
+#include "PeriodicMotion.h"
 #include "Renumbering.h"
 #include "WholeCommand.h"
 
@@ -101,6 +105,8 @@ int main(int argc, char* argv[])
   std::vector<std::string> inputs = { "grid" };
   std::string command;     // dgmf-deform, for the whole-command figure
   bool timeQuality = true; // --quality 0: the deformation only
+  int frames = 0;          // --frames N: a periodic motion of N frames (issue 19)
+  std::string framesCsvPath = "motion.csv";
   std::string commandCsvPath = "command.csv";
   int repeats = 3;
   int idwMaxSize = 1;
@@ -127,6 +133,10 @@ int main(int argc, char* argv[])
       command = value;
     else if (option == "--quality")
       timeQuality = value != "0";
+    else if (option == "--frames")
+      frames = std::max(0, std::atoi(value.c_str()));
+    else if (option == "--frames-csv")
+      framesCsvPath = value;
     else if (option == "--command-csv")
       commandCsvPath = value;
     else if (option == "--csv")
@@ -143,6 +153,13 @@ int main(int argc, char* argv[])
          "repeated_s,"
          "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s,"
          "input\n";
+  std::ofstream framesCsv;
+  if (frames > 1)
+  {
+    framesCsv.open(framesCsvPath);
+    framesCsv << "nodes,threads,frames,first_frame_s,graph_s,other_frames_s,frames_per_second,"
+                 "cycle_frames_per_second\n";
+  }
   std::ofstream commandCsv;
   if (!command.empty())
   {
@@ -251,6 +268,21 @@ int main(int argc, char* argv[])
             if (methodName == "dgmf" && !multiblock)
             {
               dgmfFirst[threadCount] = result.First; // beside the whole command's time
+            }
+            if (methodName == "dgmf" && !multiblock && frames > 1)
+            {
+              const dgmf_bench::FrameRate rate =
+                dgmf_bench::TimePeriodicMotion(mesh, threadCount, frames);
+              framesCsv << mesh->GetNumberOfPoints() << "," << threadCount << "," << frames << ","
+                        << rate.FirstFrame << "," << rate.Graph << "," << rate.OtherFrames << ","
+                        << rate.FramesPerSecond << "," << rate.CycleFramesPerSecond << "\n";
+              framesCsv.flush();
+              std::cerr << std::fixed << std::setprecision(3) << "  dgmf, " << threadCount
+                        << " thread(s), periodic motion: " << frames << " frames, the first "
+                        << rate.FirstFrame << " s (graph " << rate.Graph << " s), then "
+                        << std::setprecision(1) << rate.FramesPerSecond
+                        << " frames/s (the whole cycle " << rate.CycleFramesPerSecond
+                        << " frames/s)\n";
             }
             if (multiblock || !timeQuality) // the multiblock's quality is the grid's
             {

@@ -4,7 +4,7 @@ curve, at random), the composite-input CSV (the mesh as one grid and as a reader
 the whole-command CSV (dgmf-deform's wall time).
 
     /usr/bin/python3 Benchmarks/write_benchmark_page.py benchmark.csv machine.txt OUTPUT.md \
-        [numbering.csv [numbering-machine.txt [composite.csv [command.csv]]]]
+        [numbering.csv [numbering-machine.txt [composite.csv [command.csv [motion.csv]]]]]
 """
 import csv
 import os
@@ -92,6 +92,8 @@ def main():
         lines += composite_section(read_rows(sys.argv[6]))
     if len(sys.argv) > 7 and os.path.exists(sys.argv[7]):
         lines += command_section(read_rows(sys.argv[7]))
+    if len(sys.argv) > 8 and os.path.exists(sys.argv[8]):
+        lines += motion_section(read_rows(sys.argv[8]))
     with open(output_path, "w") as handle:
         handle.write("\n".join(lines))
 
@@ -173,6 +175,29 @@ def command_section(rows):
             format(int(row["nodes"]), ","), int(row["threads"]), fmt(row["first_s"]),
             fmt(row["read_s"]), fmt(row["filter_s"]), fmt(row["write_s"]), fmt(row["wall_s"]),
             fmt(row["wall_s"] / row["first_s"], 1) if row["first_s"] else "-"))
+    lines.append("")
+    return lines
+
+
+def motion_section(rows):
+    """Frames per second of a periodic motion, the graph built once."""
+    lines = [
+        "## Motion in time (issue 19)",
+        "",
+        "One period of a harmonic pitch (15 degrees about y) played frame after frame through the",
+        "filter's Rotation Law and `UpdateTimeStep`, quality off (`dgmf-benchmark --frames N`,",
+        "`Benchmarks/PeriodicMotion.h`). The first frame builds the graph; every other frame maps",
+        "the input mesh again with it. *frames/s*: the frames after the first; *cycle frames/s*: the",
+        "whole period, the graph included once.",
+        "",
+        "| nodes | threads | frames | first frame s | graph s | other frames s | frames/s | cycle frames/s |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for row in rows:
+        lines.append("| %s | %d | %d | %s | %s | %s | %s | %s |" % (
+            format(int(row["nodes"]), ","), int(row["threads"]), int(row["frames"]),
+            fmt(row["first_frame_s"]), fmt(row["graph_s"]), fmt(row["other_frames_s"]),
+            fmt(row["frames_per_second"], 1), fmt(row["cycle_frames_per_second"], 1)))
     lines.append("")
     return lines
 

@@ -66,8 +66,9 @@ bool WriteCollection(
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (const auto& frame : frames)
   {
-    const std::string relative =
-      std::filesystem::path(frame.second).lexically_relative(folder.empty() ? "." : folder).string();
+    const std::string relative = std::filesystem::path(frame.second)
+                                   .lexically_relative(folder.empty() ? "." : folder)
+                                   .string();
     file << "    <DataSet timestep=\"" << std::setprecision(17) << frame.first
          << "\" part=\"0\" file=\"" << relative << "\"/>\n";
   }

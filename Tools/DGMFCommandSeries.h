@@ -33,7 +33,8 @@ std::string CollectionPath(const std::string& output);
  * Writes ParaView's collection file (.pvd) listing (time, file) pairs, the files relative to the
  * collection's folder. False when it cannot be written.
  */
-bool WriteCollection(const std::string& path, const std::vector<std::pair<double, std::string>>& frames);
+bool WriteCollection(
+  const std::string& path, const std::vector<std::pair<double, std::string>>& frames);
 
 /// The name of time `t`'s directory in an OpenFOAM case ("0.02", "1", "1e-05"; 6 digits).
 std::string OpenFOAMTimeName(double t);

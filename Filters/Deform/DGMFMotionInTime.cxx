@@ -134,7 +134,8 @@ dgmf::Trajectory ReadTrajectoryTable(vtkTable* table)
   {
     throw std::invalid_argument(
       "The trajectory table has some of the quaternion columns QW, QX, QY, QZ but not all four "
-      "(its columns: " + ColumnNames(table) + ").");
+      "(its columns: " +
+      ColumnNames(table) + ").");
   }
   if (quaternionColumns == 4 && anyAngle)
   {

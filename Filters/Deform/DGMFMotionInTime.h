@@ -47,7 +47,8 @@ dgmf::Trajectory ReadTrajectoryTable(vtkTable* table);
  * The time steps the filter reports when the motion depends on time and the input has none: the
  * trajectory's times if there is one, else NumberOfTimeSteps equally spaced over TimeRange.
  */
-std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Trajectory* trajectory);
+std::vector<double> MotionTimeSteps(
+  vtkDGMFDeformFilter* filter, const dgmf::Trajectory* trajectory);
 
 } // namespace dgmf_vtk
 

@@ -57,8 +57,8 @@ TEST(MotionLaw, HarmonicIsPeriodicBitForBitAndRampIsLinear)
     const double twoLater = (k + 100) * (period / 50.0);
     ASSERT_EQ(pitch.Evaluate(t), pitch.Evaluate(later)) << "frame " << k;
     ASSERT_EQ(pitch.Evaluate(t), pitch.Evaluate(twoLater)) << "frame " << k;
-    ASSERT_NEAR(pitch.Evaluate(t), 2.0 + 20.0 * std::sin(2 * M_PI * (1.5 * t + 30.0 / 360.0)),
-      20.0 * 3e-12);
+    ASSERT_NEAR(
+      pitch.Evaluate(t), 2.0 + 20.0 * std::sin(2 * M_PI * (1.5 * t + 30.0 / 360.0)), 20.0 * 3e-12);
   }
 
   dgmf::MotionLaw ramp;
@@ -116,8 +116,8 @@ TEST(Trajectory, BadRowsAreNamed)
     std::string::npos);
   // Equal times of different bodies are fine; of the same body, not.
   EXPECT_EQ(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(0.0, 2, 0, 0, 2) }), "");
-  EXPECT_NE(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(0.0, 1, 0, 0, 2) }).find("row 2"),
-    std::string::npos);
+  EXPECT_NE(
+    MessageOf({ Row(0.0, 1, 0, 0, 1), Row(0.0, 1, 0, 0, 2) }).find("row 2"), std::string::npos);
   dgmf::TrajectoryRow scaled = Row(0.0, 1, 0, 0, 7);
   scaled.Quaternion[0] = 1.01;
   const std::string message = MessageOf({ scaled });

@@ -114,7 +114,8 @@ TEST(MotionInTime, AnAxisAndAnAngleTurnAsTheEulerAnglesDo)
     axis->SetInputData(mesh);
     axis->SetBoundaryMarkerArrayName("BoundaryMarker");
     axis->SetRotationCenter(0.3, 0.1, 0.0);
-    axis->SetRotationAxis(0.0, 0.0, 2.0 * sign); // any length; the opposite axis, the opposite angle
+    axis->SetRotationAxis(
+      0.0, 0.0, 2.0 * sign); // any length; the opposite axis, the opposite angle
     axis->SetRotationAngle(30.0 * sign);
     axis->Update();
     EXPECT_LT(LargestDifference(PointsOf(axis), expected), 1e-12);

@@ -100,8 +100,9 @@ Trajectory::Trajectory(const std::vector<TrajectoryRow>& rows)
     std::vector<TrajectoryRow>& body = this->Bodies[row.Body];
     if (!body.empty() && !(row.Time > body.back().Time))
     {
-      throw std::invalid_argument(RowName(row) + ": the times of a body must increase (the row "
-                                                 "before it has time " +
+      throw std::invalid_argument(RowName(row) +
+        ": the times of a body must increase (the row "
+        "before it has time " +
         std::to_string(body.back().Time) + ").");
     }
     body.push_back(row);

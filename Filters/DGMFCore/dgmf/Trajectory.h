@@ -19,10 +19,10 @@ namespace dgmf
 struct TrajectoryRow
 {
   double Time = 0.0;
-  int Body = 1;                                   ///< body id, >= 1
-  double Translation[3] = { 0.0, 0.0, 0.0 };      ///< from the body's initial position
-  double Quaternion[4] = { 1.0, 0.0, 0.0, 0.0 };  ///< rotation (w, x, y, z), unit length
-  std::size_t Row = 0;                            ///< the row's number in the table, for messages
+  int Body = 1;                                  ///< body id, >= 1
+  double Translation[3] = { 0.0, 0.0, 0.0 };     ///< from the body's initial position
+  double Quaternion[4] = { 1.0, 0.0, 0.0, 0.0 }; ///< rotation (w, x, y, z), unit length
+  std::size_t Row = 0;                           ///< the row's number in the table, for messages
 };
 
 /**
