@@ -37,8 +37,11 @@ struct BoundaryFacets
  *   higher-order cells).
  * Coincident nodes with different ids are the same node here (a partition interface or a ghost
  * layer duplicates them): a face between two cells that share only coincident copies is inside.
+ * `distinctPoints`: the caller knows that no two points coincide (a merged composite input), so
+ * they are not looked for (one hash lookup per point saved).
  */
-BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension);
+BoundaryFacets FindBoundaryFacets(
+  vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints = false);
 
 /// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);

@@ -102,6 +102,7 @@ void InputGatherer::Gather(
   }
   nodes.NumberOfNodes = n;
   nodes.LocalNodes = n;
+  this->DistinctPoints = options.DistinctPoints;
   nodes.Points = PointsAsDouble(mesh->GetPoints(), nodes.PointCopy);
   nodes.Dimension =
     options.Dimension != 0 ? options.Dimension : DetectDimension(mesh, nodes.Points, n);
@@ -345,7 +346,8 @@ const BoundaryFacets& InputGatherer::GetBoundaryFacets(vtkUnstructuredGrid* mesh
   };
   if (!this->Facets || !this->Cells.Matches(cells, hashCells))
   {
-    this->Facets = std::make_unique<BoundaryFacets>(FindBoundaryFacets(mesh, dimension));
+    this->Facets =
+      std::make_unique<BoundaryFacets>(FindBoundaryFacets(mesh, dimension, this->DistinctPoints));
     this->Cells.Set(cells, hashCells);
   }
   return *this->Facets;

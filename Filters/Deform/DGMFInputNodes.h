@@ -88,6 +88,7 @@ struct GatherOptions
   bool Distributed = false;         ///< one piece of a distributed mesh
   const NodeRoles* Roles = nullptr; ///< node roles from boundary names (then no marker is read)
   int OneCellThick = OneCellThickDetect;
+  bool DistinctPoints = false; ///< no two points coincide (a merged composite input)
 };
 
 /**
@@ -127,7 +128,8 @@ private:
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;
   std::vector<dgmf::NodeKind> MarkerKinds;
-  // The boundary facets depend on the cells only.
+  // The boundary facets depend on the cells only (and on whether points may coincide).
+  bool DistinctPoints = false;
   ContentKey Cells;
   std::unique_ptr<BoundaryFacets> Facets;
   // The layers of a one-cell-thick mesh depend on the points only (looking for them takes one

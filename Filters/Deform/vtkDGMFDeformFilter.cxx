@@ -399,6 +399,7 @@ int vtkDGMFDeformFilter::Execute(
   options.Arrays = dgmf_vtk::GetSelectedArrays(this);
   options.Distributed = distributed;
   options.OneCellThick = this->OneCellThickMode;
+  options.DistinctPoints = composite != nullptr; // the merge made every point distinct
   if (distributed)
   {
     double z = 0.0;

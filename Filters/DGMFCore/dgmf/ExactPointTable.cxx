@@ -1,6 +1,9 @@
 #include "dgmf/ExactPointTable.h"
 
+#include "dgmf/Simd.h"
+
 #include <cstring>
+#include <stdexcept>
 
 namespace dgmf
 {
@@ -30,6 +33,8 @@ bool Same(const double* a, const double* b)
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
+constexpr std::int64_t kIdMask = (std::int64_t(1) << 40) - 1;
+
 std::size_t CapacityFor(std::size_t expected)
 {
   std::size_t capacity = 16;
@@ -49,24 +54,38 @@ ExactPointTable::ExactPointTable(std::size_t expected)
 
 std::int64_t ExactPointTable::FindOrInsert(const double* points, const double p[3], std::int64_t id)
 {
+  if (id < 0 || id > kIdMask)
+  {
+    throw std::length_error("ExactPointTable: point ids must be below 2^40");
+  }
   if (2 * (this->Count + 1) > this->Slots.size())
   {
     this->Grow(points);
   }
-  for (std::size_t slot = Hash(p) & this->Mask;; slot = (slot + 1) & this->Mask)
+  // A slot holds the point's id and 23 bits of its hash (the tag): most occupied slots are told
+  // apart from the tag alone, without reading the kept point's coordinates (a cache miss).
+  const std::uint64_t h = Hash(p);
+  const std::int64_t tag = static_cast<std::int64_t>(h >> 41);
+  for (std::size_t slot = h & this->Mask;; slot = (slot + 1) & this->Mask)
   {
-    const std::int64_t kept = this->Slots[slot];
-    if (kept < 0)
+    const std::int64_t value = this->Slots[slot];
+    if (value < 0)
     {
-      this->Slots[slot] = id;
+      this->Slots[slot] = (tag << 40) | id;
       ++this->Count;
       return id;
     }
-    if (Same(points + 3 * kept, p))
+    const std::int64_t kept = value & kIdMask;
+    if ((value >> 40) == tag && Same(points + 3 * kept, p))
     {
       return kept;
     }
   }
+}
+
+void ExactPointTable::Prefetch(const double p[3]) const
+{
+  simd::Prefetch(&this->Slots[Hash(p) & this->Mask]);
 }
 
 void ExactPointTable::Grow(const double* points)
@@ -74,16 +93,16 @@ void ExactPointTable::Grow(const double* points)
   std::vector<std::int64_t> old(2 * this->Slots.size(), -1);
   old.swap(this->Slots);
   this->Mask = this->Slots.size() - 1;
-  for (std::int64_t kept : old)
+  for (std::int64_t value : old)
   {
-    if (kept >= 0)
+    if (value >= 0)
     {
-      std::size_t slot = Hash(points + 3 * kept) & this->Mask;
+      std::size_t slot = Hash(points + 3 * (value & kIdMask)) & this->Mask;
       while (this->Slots[slot] >= 0)
       {
         slot = (slot + 1) & this->Mask;
       }
-      this->Slots[slot] = kept;
+      this->Slots[slot] = value;
     }
   }
 }

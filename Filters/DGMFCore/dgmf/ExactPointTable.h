@@ -15,9 +15,10 @@ namespace dgmf
 /**
  * The distinct points of a point stream, found by their exact coordinates (-0 and +0 alike): the
  * merge of a composite input's blocks at their shared nodes, and the coincident nodes of a mesh.
- * The table keeps only ids (8 bytes per slot, at most half full); the coordinates stay in the
- * caller's array of kept points, `points[3 * id]`. One lookup is one probe sequence, so a stream
- * of n points costs O(n) (std::map took 0.5 s for 826,080 nodes, this about 0.03 s).
+ * The table keeps only ids (below 2^40) with 23 bits of their hash (8 bytes per slot, at most
+ * half full); the coordinates stay in the caller's array of kept points, `points[3 * id]`. One
+ * lookup is one probe sequence, so a stream of n points costs O(n) (std::map took 0.5 s for 826,080
+ * nodes, this about 0.03 s).
  */
 class ExactPointTable
 {
@@ -32,6 +33,9 @@ public:
    * whose coordinates in `points` are those of `p`).
    */
   std::int64_t FindOrInsert(const double* points, const double p[3], std::int64_t id);
+
+  /// Starts loading the slot where `p` would be looked up (call it a few points ahead).
+  void Prefetch(const double p[3]) const;
 
   /// The number of ids recorded.
   std::size_t Size() const { return this->Count; }
