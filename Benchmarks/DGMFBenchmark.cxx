@@ -21,11 +21,14 @@
  * --quality 0: the quality metric is not timed (its columns are empty).
  * --frames N: also a periodic motion of N frames (PeriodicMotion.h), DGMF on the grid, written to
  * --frames-csv FILE (default motion.csv): the first frame (the graph) and the frames per second.
+ * --mesh FILE.vtu [--mesh-marker NAME] [--mesh-csv FILE]: instead, DGMF on that mesh (its marker
+ * array, default BoundaryMarker): the first run's phases, a repeated run, the quality (mesh.csv).
  * --command PATH: also runs the command PATH (dgmf-deform) on the mesh written as a .vtu, with
  * each thread count, and writes its wall time and the read, filter and write times it prints,
  * beside the first deformation, to --command-csv FILE (default command.csv).
  */
 #include "LayeredMesh.h"
+#include "MeshFileCase.h"
 #include "NamedBlocks.h"
 #include "PeriodicMotion.h"
 #include "Renumbering.h"
@@ -106,6 +109,9 @@ int main(int argc, char* argv[])
   std::string command;     // dgmf-deform, for the whole-command figure
   bool timeQuality = true; // --quality 0: the deformation only
   int frames = 0;          // --frames N: a periodic motion of N frames (issue 19)
+  std::string meshFile;    // --mesh FILE.vtu: a mesh of the user's (issue 18)
+  std::string meshMarker = "BoundaryMarker";
+  std::string meshCsvPath = "mesh.csv";
   std::string framesCsvPath = "motion.csv";
   std::string commandCsvPath = "command.csv";
   int repeats = 3;
@@ -135,6 +141,12 @@ int main(int argc, char* argv[])
       timeQuality = value != "0";
     else if (option == "--frames")
       frames = std::max(0, std::atoi(value.c_str()));
+    else if (option == "--mesh")
+      meshFile = value;
+    else if (option == "--mesh-marker")
+      meshMarker = value;
+    else if (option == "--mesh-csv")
+      meshCsvPath = value;
     else if (option == "--frames-csv")
       framesCsvPath = value;
     else if (option == "--command-csv")
@@ -153,6 +165,36 @@ int main(int argc, char* argv[])
          "repeated_s,"
          "quality_s,cache_bytes_per_node,peak_rss_mb,quality_nonorth_first_s,quality_nonorth_s,"
          "input\n";
+  if (!meshFile.empty())
+  {
+    // A mesh of the user's instead of the procedural ones: DGMF's phases on it.
+    std::ofstream meshCsv(meshCsvPath);
+    meshCsv << "mesh,nodes,cells,threads,first_s,graph_s,location_s,mapping_s,overhead_s,"
+               "repeated_s,quality_s\n";
+    for (const std::string& threadName : threads)
+    {
+      const int threadCount = std::atoi(threadName.c_str());
+      dgmf_bench::MeshFileTimes t;
+      try
+      {
+        t = dgmf_bench::TimeMeshFile(meshFile, meshMarker, threadCount, repeats);
+      }
+      catch (const std::exception& e)
+      {
+        std::cerr << "dgmf-benchmark: " << e.what() << "\n";
+        return 1;
+      }
+      meshCsv << std::filesystem::path(meshFile).filename().string() << "," << t.Nodes << ","
+              << t.Cells << "," << threadCount << "," << t.First << "," << t.Graph << ","
+              << t.Location << "," << t.Mapping << "," << t.Overhead << "," << t.Repeated << ","
+              << t.Quality << "\n";
+      std::cerr << std::fixed << std::setprecision(3) << meshFile << ", " << threadCount
+                << " thread(s): first " << t.First << " s (graph " << t.Graph << ", location "
+                << t.Location << ", mapping " << t.Mapping << ", the rest " << t.Overhead
+                << "), repeated " << t.Repeated << " s, quality " << t.Quality << " s\n";
+    }
+    return 0;
+  }
   std::ofstream framesCsv;
   if (frames > 1)
   {

@@ -3,6 +3,7 @@
 // block and one block of boundary faces per patch.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ErrorMessages.h"
 #include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
@@ -201,28 +202,7 @@ vtkSmartPointer<vtkUnstructuredGrid> MarkedReference(vtkUnstructuredGrid* circle
   return marked->GetOutput();
 }
 
-/// Collects the filter's error messages.
-struct Errors
-{
-  std::vector<std::string> Messages;
-  vtkNew<vtkCallbackCommand> Callback;
-  explicit Errors(vtkObject* filter)
-  {
-    this->Callback->SetClientData(&this->Messages);
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* data, void* text) {
-        static_cast<std::vector<std::string>*>(data)->emplace_back(static_cast<const char*>(text));
-      });
-    filter->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  bool Contains(const std::string& text) const
-  {
-    for (const std::string& m : this->Messages)
-      if (m.find(text) != std::string::npos)
-        return true;
-    return false;
-  }
-};
+using Errors = dgmf_test::ErrorMessages;
 } // namespace
 
 TEST(BoundaryNames, NamedPatchesGiveTheMarkersResultBitForBit)

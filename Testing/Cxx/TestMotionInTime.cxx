@@ -2,6 +2,7 @@
 // steps, periodic motion without drift, trajectories from a table.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ErrorMessages.h"
 #include "FieldValue.h"
 #include "ShippedMesh.h"
 
@@ -57,28 +58,7 @@ double LargestDifference(const std::vector<double>& a, const std::vector<double>
   return largest;
 }
 
-/// Collects the filter's error messages.
-struct Errors
-{
-  std::vector<std::string> Messages;
-  vtkNew<vtkCallbackCommand> Callback;
-  explicit Errors(vtkObject* filter)
-  {
-    this->Callback->SetClientData(&this->Messages);
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* data, void* text) {
-        static_cast<std::vector<std::string>*>(data)->emplace_back(static_cast<const char*>(text));
-      });
-    filter->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  bool Contains(const std::string& text) const
-  {
-    for (const std::string& m : this->Messages)
-      if (m.find(text) != std::string::npos)
-        return true;
-    return false;
-  }
-};
+using Errors = dgmf_test::ErrorMessages;
 
 /// A table of named columns of numbers.
 vtkSmartPointer<vtkTable> Table(const std::map<std::string, std::vector<double>>& columns)
@@ -168,6 +148,13 @@ TEST(MotionInTime, AHarmonicLawReportsTimeStepsAndDeformsEachFrameFromTheInput)
     EXPECT_LT(LargestDifference(PointsOf(pitching), PointsOf(still)), 1e-9) << "t = " << t;
   }
   EXPECT_EQ(mesh->GetPoint(0)[0], Rectangle()->GetPoint(0)[0]); // the input is unchanged
+
+  // Back to a constant motion: no time steps any more, and no MotionTime.
+  pitching->SetRotationLaw(vtkDGMFDeformFilter::CONSTANT);
+  pitching->UpdateInformation();
+  EXPECT_FALSE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  pitching->Update();
+  EXPECT_EQ(pitching->GetOutput()->GetFieldData()->GetArray("MotionTime"), nullptr);
 
   // A ramp of the translation along Translation's direction: half-way at t = 0.5.
   vtkNew<vtkDGMFDeformFilter> ramp;
