@@ -112,10 +112,7 @@ vtkSmartPointer<vtkDataArray> Range(vtkDataArray* values, vtkIdType first, vtkId
   range->InsertTuples(0, count, first, values);
   return range;
 }
-} // namespace
 
-namespace
-{
 /// How many points ahead the merge asks for the table's slot.
 constexpr vtkIdType kPrefetchDistance = 8;
 
