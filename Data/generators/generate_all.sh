@@ -9,3 +9,4 @@ for case in rotating_circle rotating_rectangle twisted_bar sphere_in_box two_cir
   "$pvpython" "$here/$case.py" "$data/$case.vtu"
 done
 "$pvpython" "$here/thin_slab.py" "$data/thin_slab.vtu" --size-min 0.08 --size-max 2 --dist-max 5
+"$pvpython" "$here/pitching_airfoil.py" "$data/pitching_airfoil.vtu"
