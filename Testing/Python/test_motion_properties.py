@@ -1,6 +1,7 @@
 """Motion in time through the ParaView proxy (issue 19): the axis-and-angle properties, a
-trajectory table from ParaView's CSV reader on the Trajectory input, its times reported, and a
-table with unsorted times refused (no output).
+trajectory table from ParaView's CSV reader on the Trajectory input, its times reported, a law's
+series written into one Exodus file by ParaView's Exodus writer, and a table with unsorted times
+refused (no output).
 
     pvpython test_motion_properties.py --plugin PLUGIN --data rotating_rectangle.vtu --work DIR
 
@@ -11,7 +12,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CSVReader, LoadPlugin, XMLUnstructuredGridReader
+from paraview.simple import CSVReader, LoadPlugin, OpenDataFile, XMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 parser = argparse.ArgumentParser()
@@ -66,6 +67,20 @@ if field.GetArray("MotionTime").GetTuple1(0) != 0.5:
 still, _ = coordinates(deformed(Translation=[0.2, 0, 0], RotationAngle=15))
 if abs(halfway - still).max() > 1e-12:
     sys.exit("FAILED: the table's motion at t = 0.5 is not half of it")
+
+# The series in one Exodus file, through ParaView's own Exodus writer with all time steps (Save
+# Data of a .exo picks the DGMF mesh-file writer, which writes into a copy of a source file).
+pitching = deformed(RotationLaw="Harmonic", RotationLawParameters=[0, 20, 1, 0], NumberOfTimeSteps=5)
+exodus_path = os.path.join(args.work, "pitching.exo")
+if os.path.exists(exodus_path):
+    os.remove(exodus_path)
+writer = servermanager.writers.ExodusIIWriter(Input=pitching, FileName=exodus_path,
+                                              WriteAllTimeSteps=1)
+writer.UpdatePipeline()
+series = OpenDataFile(exodus_path)
+series.UpdatePipelineInformation()
+if len(series.TimestepValues) != 5 or series.TimestepValues[-1] != 1.0:
+    sys.exit("FAILED: the Exodus series has the times %s" % list(series.TimestepValues))
 
 # Unsorted times: no output (the message naming the row is tested in C++ and on the command line).
 bad_path = os.path.join(args.work, "unsorted.csv")
