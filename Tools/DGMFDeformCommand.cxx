@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -218,6 +219,50 @@ bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   return ok;
 }
 /**
+ * Runs `update` (the filter's Update, or UpdateTimeStep), timed into `times`, and judges the
+ * output: ExitSuccess, else the exit code with `why` the reason for the message (an error from the
+ * filter or no output: ExitFailure; inverted cells with --fail-on-inverted: ExitInvertedCells).
+ */
+int DeformAndJudge(vtkDGMFDeformFilter* filter, bool failOnInverted,
+  const std::function<void()>& update, Times& times, std::string& why)
+{
+  dgmf_cli::ResetErrorCount();
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  update();
+  timer->StopTimer();
+  times.Deform = timer->GetElapsedTime();
+  vtkDataObject* deformed = filter->GetOutputDataObject(0);
+  if (dgmf_cli::GetErrorCount() > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
+  {
+    why = "the deformation failed";
+    return ExitFailure;
+  }
+  const long long inverted = CountValue(deformed, "InvertedCellCount");
+  if (failOnInverted && inverted > 0)
+  {
+    why = "the deformation inverts " + std::to_string(inverted) + " cells";
+    return ExitInvertedCells;
+  }
+  return ExitSuccess;
+}
+
+/// Writes the output as `options` say (timed into `times`) and prints the summary line; false
+/// (the error printed) when it cannot be written.
+bool WriteAndReport(vtkDGMFDeformFilter* filter, InputKind kind,
+  const dgmf_cli::CommandOptions& options, Times& times, std::string& written)
+{
+  const double writeStart = vtkTimerLog::GetUniversalTime();
+  if (!options.NoWrite && !WriteOutput(filter, kind, options, written))
+  {
+    return false;
+  }
+  times.Write = vtkTimerLog::GetUniversalTime() - writeStart;
+  PrintSummary(filter, times, written);
+  return true;
+}
+
+/**
  * The series of a motion in time: the filter run at each time (the graph built once), each frame
  * written as the options say (OUTPUT's frame files and a .pvd collection, or one time directory
  * per time in an OpenFOAM case). Stops at the first frame that fails.
@@ -242,7 +287,8 @@ int RunSeries(
     return ExitFailure;
   }
   const bool files = kind != InputKind::OpenFOAMCase;
-  if (files && dgmf_cli::FramePath(options.Output, 0, steps.size()).empty())
+  const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";
+  if (files && firstFrame.empty())
   {
     std::cerr << "dgmf-deform: the output's % must be one integer conversion (%d, %04d): "
               << options.Output << "\n";
@@ -251,8 +297,7 @@ int RunSeries(
   if (files && !options.NoWrite)
   {
     // The series' folder is made if it is new (a series is many files: users give it its own).
-    const std::filesystem::path folder =
-      std::filesystem::path(dgmf_cli::FramePath(options.Output, 0, steps.size())).parent_path();
+    const std::filesystem::path folder = std::filesystem::path(firstFrame).parent_path();
     std::error_code ignored;
     if (!folder.empty())
     {
@@ -263,29 +308,20 @@ int RunSeries(
   for (std::size_t k = 0; k < steps.size(); ++k)
   {
     const double t = steps[k];
-    dgmf_cli::ResetErrorCount();
     dgmf_cli::SetStage("deforming " + options.Input + " at time " + std::to_string(t));
-    vtkNew<vtkTimerLog> timer;
-    timer->StartTimer();
-    filter->UpdateTimeStep(t);
-    timer->StopTimer();
-    times.Deform = timer->GetElapsedTime();
-    vtkDataObject* deformed = filter->GetOutputDataObject(0);
+    std::string why;
+    const int verdict = DeformAndJudge(
+      filter, options.FailOnInverted, [&]() { filter->UpdateTimeStep(t); }, times, why);
     std::cout << "dgmf-deform: time " << t << " (frame " << k + 1 << " of " << steps.size() << ")"
               << std::endl;
-    if (dgmf_cli::GetErrorCount() > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
+    if (verdict != ExitSuccess)
     {
-      std::cerr << "dgmf-deform: the deformation failed at time " << t << "; " << frames.size()
-                << " earlier frames were written\n";
-      return ExitFailure;
-    }
-    const long long inverted = CountValue(deformed, "InvertedCellCount");
-    if (options.FailOnInverted && inverted > 0)
-    {
-      std::cerr << "dgmf-deform: the deformation inverts " << inverted << " cells at time " << t
-                << "; this frame was not written (--fail-on-inverted), " << frames.size()
-                << " earlier frames were\n";
-      return ExitInvertedCells;
+      std::cerr << "dgmf-deform: " << why << " at time " << t << "; "
+                << (verdict == ExitInvertedCells
+                       ? "this frame was not written (--fail-on-inverted), " +
+                         std::to_string(frames.size()) + " earlier frames were\n"
+                       : std::to_string(frames.size()) + " earlier frames were written\n");
+      return verdict;
     }
     dgmf_cli::CommandOptions frame = options;
     if (files)
@@ -296,15 +332,12 @@ int RunSeries(
     {
       frame.Time = dgmf_cli::OpenFOAMTimeName(t);
     }
-    const double writeStart = vtkTimerLog::GetUniversalTime();
     std::string written;
-    if (!options.NoWrite && !WriteOutput(filter, kind, frame, written))
+    if (!WriteAndReport(filter, kind, frame, times, written))
     {
       return ExitFailure;
     }
-    times.Write = vtkTimerLog::GetUniversalTime() - writeStart;
     frames.emplace_back(t, frame.Output);
-    PrintSummary(filter, times, written);
   }
   if (files && !options.NoWrite && dgmf_cli::IsMeshFileName(options.Output))
   {
@@ -413,39 +446,21 @@ int main(int argc, char* argv[])
   }
 
   // The deformation: the filter's messages reach stderr through the message window.
-  dgmf_cli::ResetErrorCount();
   dgmf_cli::SetStage("deforming " + input);
   dgmf_cli::ShowProgress(filter, "deforming", options.ProgressDelay);
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  filter->Update();
-  timer->StopTimer();
-  vtkDataObject* deformed = filter->GetOutputDataObject(0);
-  if (dgmf_cli::GetErrorCount() > 0 || deformed->GetNumberOfElements(vtkDataObject::POINT) == 0)
+  std::string why;
+  const int verdict = DeformAndJudge(
+    filter, options.FailOnInverted, [&]() { filter->Update(); }, times, why);
+  if (verdict != ExitSuccess)
   {
-    if (kind == InputKind::OpenFOAMCase && options.ByName)
+    if (verdict == ExitFailure && kind == InputKind::OpenFOAMCase && options.ByName)
     {
       std::cerr << "dgmf-deform: the case's patches: " << dgmf_cli::ListPatchNames(input) << "\n";
     }
-    std::cerr << "dgmf-deform: the deformation failed; nothing was written\n";
-    return ExitFailure;
+    std::cerr << "dgmf-deform: " << why << "; nothing was written"
+              << (verdict == ExitInvertedCells ? " (--fail-on-inverted)" : "") << "\n";
+    return verdict;
   }
-  const long long inverted = CountValue(deformed, "InvertedCellCount");
-  if (options.FailOnInverted && inverted > 0)
-  {
-    std::cerr << "dgmf-deform: the deformation inverts " << inverted
-              << " cells; nothing was written (--fail-on-inverted)\n";
-    return ExitInvertedCells;
-  }
-
-  const double writeStart = vtkTimerLog::GetUniversalTime();
   std::string written;
-  if (!options.NoWrite && !WriteOutput(filter, kind, options, written))
-  {
-    return ExitFailure;
-  }
-  times.Write = vtkTimerLog::GetUniversalTime() - writeStart;
-  times.Deform = timer->GetElapsedTime();
-  PrintSummary(filter, times, written);
-  return ExitSuccess;
+  return WriteAndReport(filter, kind, options, times, written) ? ExitSuccess : ExitFailure;
 }

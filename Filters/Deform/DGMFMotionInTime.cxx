@@ -63,14 +63,10 @@ std::string ColumnNames(vtkTable* table)
 }
 } // namespace
 
-dgmf::MotionLaw RotationLawOf(vtkDGMFDeformFilter* filter)
+bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable)
 {
-  return LawOf(filter->GetRotationLaw(), filter->GetRotationLawParameters());
-}
-
-dgmf::MotionLaw TranslationLawOf(vtkDGMFDeformFilter* filter)
-{
-  return LawOf(filter->GetTranslationLaw(), filter->GetTranslationLawParameters());
+  return hasTrajectoryTable || filter->GetRotationLaw() != vtkDGMFDeformFilter::CONSTANT ||
+    filter->GetTranslationLaw() != vtkDGMFDeformFilter::CONSTANT;
 }
 
 dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
@@ -81,8 +77,10 @@ dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
   filter->GetRotationAngles(motion.AnglesDegrees);
   filter->GetRotationAxis(motion.Axis);
   motion.AxisAngleDegrees = filter->GetRotationAngle();
-  const dgmf::MotionLaw rotation = RotationLawOf(filter);
-  const dgmf::MotionLaw translation = TranslationLawOf(filter);
+  const dgmf::MotionLaw rotation =
+    LawOf(filter->GetRotationLaw(), filter->GetRotationLawParameters());
+  const dgmf::MotionLaw translation =
+    LawOf(filter->GetTranslationLaw(), filter->GetTranslationLawParameters());
   rotation.Check("the rotation law");
   translation.Check("the translation law");
   if (motion.HasEulerAngles() && (motion.HasAxisRotation() || rotation.IsTimeDependent()))
@@ -172,12 +170,8 @@ dgmf::Trajectory ReadTrajectoryTable(vtkTable* table)
       for (int c = 0; c < 3; ++c)
       {
         degrees[c] = angles[c] ? angles[c]->GetTuple1(r) : 0.0;
-        if (!std::isfinite(degrees[c]))
-        {
-          throw std::invalid_argument(
-            "Trajectory row " + std::to_string(r + 1) + ": an angle is not finite.");
-        }
       }
+      // An angle that is not finite makes the quaternion so: dgmf::Trajectory names the row.
       dgmf::EulerAnglesToQuaternion(degrees, row.Quaternion);
     }
     rows.push_back(row);

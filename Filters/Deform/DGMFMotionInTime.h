@@ -19,11 +19,8 @@ class vtkTable;
 namespace dgmf_vtk
 {
 
-/// The filter's rotation law (RotationLaw, RotationLawParameters).
-dgmf::MotionLaw RotationLawOf(vtkDGMFDeformFilter* filter);
-
-/// The filter's translation law (TranslationLaw, TranslationLawParameters).
-dgmf::MotionLaw TranslationLawOf(vtkDGMFDeformFilter* filter);
+/// True when the filter's motion depends on time: a law other than Constant, or a table connected.
+bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable);
 
 /**
  * The motion the filter's properties give at time `t`: Translation (its direction times the

@@ -224,9 +224,7 @@ int vtkDGMFDeformFilter::RequestInformation(
     this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
     table = vtkTable::SafeDownCast(this->GetInputDataObject(1, 0));
   }
-  const bool timeDependent =
-    table || this->RotationLaw != CONSTANT || this->TranslationLaw != CONSTANT;
-  if (!timeDependent || inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  if (!dgmf_vtk::IsMotionInTime(this, table != nullptr) || inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
   {
     return 1;
   }
@@ -309,8 +307,7 @@ int vtkDGMFDeformFilter::RequestData(
   Internals& internal = *this->Internal;
   vtkTable* table = vtkTable::GetData(inputVector[1], 0);
   internal.Trajectory.reset();
-  internal.TimeDependent =
-    table || this->RotationLaw != CONSTANT || this->TranslationLaw != CONSTANT;
+  internal.TimeDependent = dgmf_vtk::IsMotionInTime(this, table != nullptr);
   internal.Time = 0.0;
   if (internal.TimeDependent)
   {
