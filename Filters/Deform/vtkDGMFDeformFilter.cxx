@@ -224,7 +224,8 @@ int vtkDGMFDeformFilter::RequestInformation(
     this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
     table = vtkTable::SafeDownCast(this->GetInputDataObject(1, 0));
   }
-  if (!dgmf_vtk::IsMotionInTime(this, table != nullptr) || inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  if (!dgmf_vtk::IsMotionInTime(this, table != nullptr) ||
+    inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
   {
     return 1;
   }
