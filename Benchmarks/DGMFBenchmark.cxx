@@ -27,6 +27,7 @@
  * each thread count, and writes its wall time and the read, filter and write times it prints,
  * beside the first deformation, to --command-csv FILE (default command.csv).
  */
+#include "FirstAndRepeated.h"
 #include "LayeredMesh.h"
 #include "MeshFileCase.h"
 #include "NamedBlocks.h"
@@ -63,13 +64,6 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
-}
-
-double Median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 std::vector<std::string> Split(const std::string& list)
@@ -262,7 +256,6 @@ int main(int argc, char* argv[])
           for (const std::string& threadName : threads)
           {
             const int threadCount = std::atoi(threadName.c_str());
-            std::vector<double> graph, location, mapping, first, repeated;
             Result result;
             vtkNew<vtkDGMFDeformFilter> filter;
             if (multiblock)
@@ -278,33 +271,19 @@ int main(int argc, char* argv[])
             filter->SetMethod(method);
             filter->SetNumberOfThreads(threadCount);
             filter->ComputeQualityOff();
-            for (int r = 0; r < methodRepeats; ++r)
+            filter->SetTranslation(0.1, 0.0, 0.0);
+            const dgmf_bench::FirstAndRepeated timed =
+              dgmf_bench::TimeFirstAndRepeated(filter, methodRepeats);
+            if (!timed.GraphAlwaysReused && method != vtkDGMFDeformFilter::IDW)
             {
-              filter->ReleaseCache();
-              filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
-              filter->SetTranslation(0.1, 0.0, 0.0);
-              Clock::time_point start = Clock::now();
-              filter->Update();
-              first.push_back(Seconds(start));
-              graph.push_back(filter->GetLastGraphSeconds());
-              location.push_back(filter->GetLastLocationSeconds());
-              mapping.push_back(filter->GetLastDeformationSeconds());
-              // A new motion: only the mapping runs again.
-              filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
-              start = Clock::now();
-              filter->Update();
-              repeated.push_back(Seconds(start));
-              if (!filter->GetLastExecutionReusedGraph() && method != vtkDGMFDeformFilter::IDW)
-              {
-                std::cerr << "dgmf-benchmark: the cache was not reused\n";
-                return 1;
-              }
+              std::cerr << "dgmf-benchmark: the cache was not reused\n";
+              return 1;
             }
-            result.Graph = Median(graph);
-            result.Location = Median(location);
-            result.Mapping = Median(mapping);
-            result.First = Median(first);
-            result.Repeated = Median(repeated);
+            result.Graph = timed.Graph;
+            result.Location = timed.Location;
+            result.Mapping = timed.Mapping;
+            result.First = timed.First;
+            result.Repeated = timed.Repeated;
             result.CacheBytesPerNode =
               static_cast<double>(filter->GetCacheMemorySize()) / mesh->GetNumberOfPoints();
             if (methodName == "dgmf" && !multiblock)

@@ -1,5 +1,7 @@
 #include "MeshFileCase.h"
 
+#include "FirstAndRepeated.h"
+
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
 
@@ -15,15 +17,6 @@
 
 namespace dgmf_bench
 {
-namespace
-{
-double Median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-} // namespace
 
 MeshFileTimes TimeMeshFile(
   const std::string& path, const std::string& marker, int threads, int repeats)
@@ -43,33 +36,18 @@ MeshFileTimes TimeMeshFile(
   MeshFileTimes times;
   times.Nodes = mesh->GetNumberOfPoints();
   times.Cells = mesh->GetNumberOfCells();
-  std::vector<double> first, graph, location, mapping, repeated;
   vtkNew<vtkDGMFDeformFilter> filter;
-  for (int r = 0; r < std::max(repeats, 1); ++r)
-  {
-    filter->ReleaseCache();
-    filter->SetInputData(mesh);
-    filter->SetBoundaryMarkerArrayName(marker.c_str());
-    filter->SetNumberOfThreads(threads);
-    filter->ComputeQualityOff();
-    filter->SetRotationAngles(5.0, 10.0, 15.0 + r);
-    Clock::time_point start = Clock::now();
-    filter->Update();
-    first.push_back(seconds(start));
-    graph.push_back(filter->GetLastGraphSeconds());
-    location.push_back(filter->GetLastLocationSeconds());
-    mapping.push_back(filter->GetLastDeformationSeconds());
-    filter->SetRotationAngles(5.0, 10.0, 20.0 + r);
-    start = Clock::now();
-    filter->Update();
-    repeated.push_back(seconds(start));
-  }
-  times.First = Median(first);
-  times.Graph = Median(graph);
-  times.Location = Median(location);
-  times.Mapping = Median(mapping);
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName(marker.c_str());
+  filter->SetNumberOfThreads(threads);
+  filter->ComputeQualityOff();
+  const FirstAndRepeated timed = TimeFirstAndRepeated(filter, repeats);
+  times.First = timed.First;
+  times.Graph = timed.Graph;
+  times.Location = timed.Location;
+  times.Mapping = timed.Mapping;
+  times.Repeated = timed.Repeated;
   times.Overhead = times.First - times.Graph - times.Location - times.Mapping;
-  times.Repeated = Median(repeated);
   vtkNew<vtkSizeSkewQualityFilter> quality;
   quality->SetInputData(filter->GetOutput());
   quality->SetReferenceData(mesh);
