@@ -185,6 +185,11 @@ void vtkDGMFDeformFilter::ReleaseCache()
   this->Internal->Cache = std::make_unique<dgmf_vtk::DeformationCaches>();
 }
 
+double vtkDGMFDeformFilter::GetLastMotionTime() const
+{
+  return this->Internal->Time;
+}
+
 void vtkDGMFDeformFilter::SetTrajectoryConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
@@ -331,7 +336,6 @@ int vtkDGMFDeformFilter::RequestData(
       ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
       : dgmf_vtk::MotionTimeSteps(this, internal.Trajectory.get()).front();
   }
-  this->LastMotionTime = internal.Time;
 
   // 2-4. Check, deform and write the outputs, on the filter's threads (Execute); in a
   //      distributed run every process takes part, and the quality summary is made global.

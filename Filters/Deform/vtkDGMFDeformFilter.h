@@ -237,11 +237,9 @@ public:
 
   ///@{
   /**
-   * Rotation about an axis: RotationAngle degrees about the line through RotationCenter along
-   * RotationAxis, right-handed (counter-clockwise seen from the axis's tip looking back; the axis
-   * need not be of unit length). It replaces RotationAngles, which must then be 0 0 0 (both
-   * non-zero is an error). A 2D mesh needs the axis (0, 0, +-1). Defaults: RotationAxis (0, 0, 1),
-   * RotationAngle 0.
+   * Rotation about an axis: RotationAngle degrees, right-handed, about the line through
+   * RotationCenter along RotationAxis (any length; 2D meshes: (0, 0, +-1)), instead of
+   * RotationAngles (both non-zero: an error). Defaults: RotationAxis (0, 0, 1), RotationAngle 0.
    */
   vtkSetVector3Macro(RotationAxis, double);
   vtkGetVector3Macro(RotationAxis, double);
@@ -259,13 +257,11 @@ public:
 
   ///@{
   /**
-   * The rotation angle in time, one of MotionLaws: with HARMONIC or RAMP the rotation is
-   * RotationLaw's value v(t), in degrees, about RotationAxis through RotationCenter (RotationAngle
-   * is not used; RotationAngles must be 0 0 0). RotationLawParameters: HARMONIC: mean and amplitude
-   * (degrees), frequency (periods per unit time, >= 0) and phase (degrees); RAMP: start and end
-   * angles (degrees), start and end times. A harmonic law gives the same angle, bit for bit, at
-   * times a period apart (dgmf::MotionLaw), so a periodic motion brings the mesh back to the same
-   * points. Defaults: CONSTANT, (0, 10, 1, 0).
+   * The rotation angle in time, one of MotionLaws: with HARMONIC or RAMP, the law's value in
+   * degrees about RotationAxis (RotationAngle unused; RotationAngles must be 0 0 0). Parameters:
+   * HARMONIC mean, amplitude (degrees), frequency (periods per unit time), phase (degrees); RAMP
+   * start and end angles, start and end times. Times a period apart give the same bits
+   * (dgmf::MotionLaw). Defaults: CONSTANT, (0, 10, 1, 0).
    */
   vtkSetClampMacro(RotationLaw, int, CONSTANT, RAMP);
   vtkGetMacro(RotationLaw, int);
@@ -275,10 +271,9 @@ public:
 
   ///@{
   /**
-   * The translation in time, one of MotionLaws: with HARMONIC or RAMP the translation is
-   * TranslationLaw's value v(t) (a distance, in mesh units) along the direction of Translation
-   * (whose length is then not used, but which must not be zero). TranslationLawParameters as
-   * RotationLawParameters', in mesh units. Defaults: CONSTANT, (0, 1, 1, 0).
+   * The translation in time, one of MotionLaws: with HARMONIC or RAMP, the law's value (a
+   * distance) along Translation's direction (Translation must not be zero); parameters as the
+   * rotation law's, in mesh units. Defaults: CONSTANT, (0, 1, 1, 0).
    */
   vtkSetClampMacro(TranslationLaw, int, CONSTANT, RAMP);
   vtkGetMacro(TranslationLaw, int);
@@ -288,11 +283,9 @@ public:
 
   ///@{
   /**
-   * The time steps the filter reports when the motion depends on time (a law other than CONSTANT,
-   * or a trajectory table) and the input has none: NumberOfTimeSteps (>= 1) times equally spaced
-   * over TimeRange, both ends included; with a trajectory table, the table's times. ParaView's
-   * animation then plays the motion, and Save Data with all time steps writes the series. An
-   * input with time steps keeps its own. Defaults: (0, 1) and 21.
+   * The time steps reported when the motion depends on time (a law, or a trajectory table) and
+   * the input has none: NumberOfTimeSteps times spread over TimeRange, both ends included (with a
+   * table: the table's times). Defaults: (0, 1) and 21.
    */
   vtkSetVector2Macro(TimeRange, double);
   vtkGetVector2Macro(TimeRange, double);
@@ -302,22 +295,17 @@ public:
 
   ///@{
   /**
-   * The optional trajectory table (input port 1, a vtkTable such as ParaView's CSV reader gives):
-   * per row a time, a body id and that body's rigid motion at that time; interpolated in between
-   * (translation linearly, rotation by slerp) and held before the first and after the last row.
-   * Columns (any case): Time; optionally Body (default 1), TX, TY, TZ (default 0), and the rotation
-   * as a unit quaternion QW, QX, QY, QZ or as angles RX, RY, RZ in degrees (RotationAngles'
-   * convention). The rotation is about RotationCenter (each body's centroid with BODY_CENTROID).
-   * Bodies with rows take their motion from the table; the others from the properties and
-   * SetBodyMotion. A table with a missing Time column, times that do not increase for a body or a
-   * quaternion that is not of unit length is an error naming the row or column.
+   * The optional trajectory table (input port 1, e.g. ParaView's CSV reader): columns Time, Body
+   * (default 1), TX TY TZ, and QW QX QY QZ (unit quaternion) or RX RY RZ (degrees); interpolated
+   * linearly and by slerp, about RotationCenter. Its bodies take their motion from it. Bad tables
+   * are errors naming the row or column (Documentation/motion.md). Default: none.
    */
   void SetTrajectoryConnection(vtkAlgorithmOutput* output);
   void SetTrajectoryData(vtkTable* table);
   ///@}
 
   /// The time of the last execution's motion (0 when the motion does not depend on time).
-  vtkGetMacro(LastMotionTime, double);
+  double GetLastMotionTime() const;
 
   /// Where DGMF's rigid motion comes from.
   enum RigidMotionModes
@@ -485,11 +473,10 @@ public:
    * (a plane: a symmetry plane) move only within it. The boundary blocks not named (blocks of
    * lower dimension than the mesh), and the nodes of the mesh's own boundary that no block holds
    * (a reader asked for the moving patch only), are static, but for the two planes of a
-   * one-cell-thick mesh. A
-   * node in several blocks is moving if one of them moves (the first body listed wins), else
-   * static if one is static, else slip; a node on two slip planes is static. With names, the
-   * boundary-marker and body-id arrays are not read; an unknown name is an error that lists the
-   * input's block names. Default: none (the marker or the mesh's boundary decide).
+   * one-cell-thick mesh. A node in several blocks is moving if one of them moves (the first body
+   * listed wins), else static if one is static, else slip; a node on two slip planes is static.
+   * With names, the boundary-marker and body-id arrays are not read; an unknown name is an error
+   * that lists the input's block names. Default: none (the marker or the mesh's boundary decide).
    */
   void AddMovingBoundary(const char* name);
   void RemoveAllMovingBoundaries();
@@ -585,7 +572,6 @@ protected:
   double TranslationLawParameters[4] = { 0.0, 1.0, 1.0, 0.0 };
   double TimeRange[2] = { 0.0, 1.0 };
   int NumberOfTimeSteps = 21;
-  double LastMotionTime = 0.0;
   int DeformationMode = DGMF2;
   int RigidMotionMode = PROPERTIES;
   double SupportRadius = 0.0;
