@@ -33,6 +33,11 @@ struct BoundarySelection
 
   bool Empty() const { return this->Moving.empty() && this->Static.empty() && this->Slip.empty(); }
 
+  bool operator==(const BoundarySelection& other) const
+  {
+    return this->Moving == other.Moving && this->Static == other.Static && this->Slip == other.Slip;
+  }
+
   /// Appends `name` to `list` (one of the three above); false (no change) for null or empty.
   static bool Add(std::vector<std::string>& list, const char* name)
   {

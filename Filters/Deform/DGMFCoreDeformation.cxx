@@ -195,17 +195,14 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
     {
       auto& kept = caches.Roles;
       const std::uint64_t generation = caches.Composite.GetGeneration();
-      if (!kept.Valid || kept.Generation != generation || kept.Moving != boundaries.Moving ||
-        kept.Static != boundaries.Static || kept.Slip != boundaries.Slip ||
+      if (!kept.Valid || kept.Generation != generation || !(kept.Selection == boundaries) ||
         kept.FindLayers != findLayers)
       {
         kept.Valid = false;
         kept.Roles =
           AssignRoles(*composite, boundaries, input, findLayers); // throws for a bad name
         kept.Generation = generation;
-        kept.Moving = boundaries.Moving;
-        kept.Static = boundaries.Static;
-        kept.Slip = boundaries.Slip;
+        kept.Selection = boundaries;
         kept.FindLayers = findLayers;
         kept.Valid = true;
       }

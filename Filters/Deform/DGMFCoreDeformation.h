@@ -42,7 +42,7 @@ struct DeformationCaches
   struct
   {
     std::uint64_t Generation = 0;
-    std::vector<std::string> Moving, Static, Slip;
+    BoundarySelection Selection;
     bool FindLayers = false;
     bool Valid = false;
     NodeRoles Roles;
