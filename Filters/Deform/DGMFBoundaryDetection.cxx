@@ -1,13 +1,19 @@
 #include "DGMFBoundaryDetection.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFFaceCells.h"
 #include "DGMFMeshConversion.h"
+#include "DGMFSMPTools.h"
 
+#include "dgmf/CellFaces.h"
 #include "dgmf/ExactPointTable.h"
+#include "dgmf/FaceMatching.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkGenericCell.h"
@@ -35,7 +41,8 @@ void AddFacet(BoundaryFacets& facets, const vtkIdType* ids, vtkIdType count)
   facets.Offsets.push_back(static_cast<vtkIdType>(facets.Ids.size()));
 }
 
-void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
+/// The boundary faces from vtkGeometryFilter: any cell type, several times slower than matching.
+void FindBoundaryFacesByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
   // The geometry filter works on a structure-only copy, so no array of the input goes through it.
   vtkNew<vtkUnstructuredGrid> structure;
@@ -86,6 +93,81 @@ void FindBoundaryFaces(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
       original[k] = ids ? static_cast<vtkIdType>(ids->GetTuple1(pts[k])) : pts[k];
     }
     AddFacet(facets, original.data(), npts);
+  }
+}
+
+/// The 2D cell types the boundary takes as they are (as polygons).
+bool IsPolygonType(int type)
+{
+  return type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_PIXEL || type == VTK_POLYGON;
+}
+
+/// Whether `types` (CellTypesPresent) has 2D cells, and whether they are all polygons.
+void Find2DTypes(const std::array<bool, 256>& types, bool& any, bool& polygonsOnly)
+{
+  any = false;
+  polygonsOnly = true;
+  for (int type = 0; type < 256; ++type)
+  {
+    if (types[type] && type != VTK_EMPTY_CELL &&
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 2)
+    {
+      any = true;
+      polygonsOnly = polygonsOnly && IsPolygonType(type);
+    }
+  }
+}
+
+/**
+ * The boundary faces by the core's face matching (the faces of one 3D cell), plus the grid's 2D
+ * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
+ * `canonical` ones when given.
+ */
+void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
+  bool has2DCells, BoundaryFacets& facets)
+{
+  const VTKFaceCells cells(mesh, &canonical);
+  const dgmf::BoundaryFaces faces = dgmf::FindBoundaryFaces(
+    cells, static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  const auto isGhost = [ghosts](vtkIdType cell)
+  { return ghosts && (ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0; };
+  std::vector<std::int64_t> stream;
+  std::vector<vtkIdType> ids;
+  for (std::size_t f = 0; f < faces.Size(); ++f)
+  {
+    if (isGhost(faces.Cell[f]))
+    {
+      continue;
+    }
+    cells.GetFaces(static_cast<std::size_t>(faces.Cell[f]), stream);
+    std::int64_t count = 0;
+    const std::int64_t* face = dgmf::FaceOfStream(stream.data(), faces.Face[f], count);
+    ids.assign(face, face + count);
+    AddFacet(facets, ids.data(), static_cast<vtkIdType>(count));
+  }
+  // 2D cells are boundary facets as they are (vtkGeometryFilter passes them through).
+  const vtkIdType numberOfCells = has2DCells ? mesh->GetNumberOfCells() : 0;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    const int type = mesh->GetCellType(c);
+    if (!IsPolygonType(type) || isGhost(c))
+    {
+      continue;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    mesh->GetCellPoints(c, npts, pts);
+    ids.assign(pts, pts + npts);
+    if (type == VTK_PIXEL && npts == 4)
+    {
+      std::swap(ids[2], ids[3]);
+    }
+    for (vtkIdType& id : ids)
+    {
+      id = canonical.empty() ? id : canonical[static_cast<std::size_t>(id)];
+    }
+    AddFacet(facets, ids.data(), npts);
   }
 }
 
@@ -232,30 +314,50 @@ vtkSmartPointer<vtkUnstructuredGrid> RenumberedCopy(
   }
   return copy;
 }
+
+/// The boundary faces of `mesh` from vtkGeometryFilter, on its canonical points when `facets` has
+/// them, sorted.
+BoundaryFacets FacetsByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets facets)
+{
+  FindBoundaryFacesByGeometryFilter(
+    facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
+  return SortedFacets(facets);
+}
 } // namespace
 
 BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints)
 {
   BoundaryFacets facets;
-  vtkSmartPointer<vtkUnstructuredGrid> work = mesh;
   if (!distinctPoints) // a merged composite input has no two points at the same place
   {
     facets.Canonical = CanonicalPointIds(mesh);
   }
-  if (!facets.Canonical.empty())
-  {
-    work = RenumberedCopy(mesh, facets.Canonical);
-  }
   if (dimension == 2)
   {
-    FindBoundaryEdges(work, facets);
+    FindBoundaryEdges(
+      facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
+    return facets;
   }
-  else
+  const std::array<bool, 256> types = CellTypesPresent(mesh);
+  bool has2DCells = false;
+  bool polygonsOnly = true;
+  Find2DTypes(types, has2DCells, polygonsOnly);
+  if (!VTKFaceCells::CoversAll3DCells(types) || !polygonsOnly)
   {
-    FindBoundaryFaces(work, facets);
-    facets = SortedFacets(facets);
+    return FacetsByGeometryFilter(mesh, std::move(facets));
   }
-  return facets;
+  FindBoundaryFacesByMatching(mesh, facets.Canonical, has2DCells, facets);
+  return SortedFacets(facets);
+}
+
+BoundaryFacets FindBoundaryFacetsByGeometryFilter(vtkUnstructuredGrid* mesh, bool distinctPoints)
+{
+  BoundaryFacets facets;
+  if (!distinctPoints)
+  {
+    facets.Canonical = CanonicalPointIds(mesh);
+  }
+  return FacetsByGeometryFilter(mesh, std::move(facets));
 }
 
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints)

@@ -30,18 +30,29 @@ struct BoundaryFacets
 
 /**
  * The boundary of a mesh.
- * - 3D meshes: the faces used by one 3D cell, from vtkGeometryFilter, plus any 2D cell of the
- *   grid (typically boundary patches), sorted by their point ids: the same facets in the same
- *   order whatever the number of vtkSMPTools threads (the geometry filter's order is not).
+ * - 3D meshes: the faces used by one 3D cell, plus any 2D cell of the grid (typically boundary
+ *   patches), sorted by their point ids. The faces come from the core's face matching
+ *   (dgmf::FindBoundaryFaces, on the vtkSMPTools threads) for linear cells and polyhedra, from
+ *   vtkGeometryFilter when the grid has other 3D cells (quadratic, Lagrange: their faces carry
+ *   mid-edge nodes) or 2D cells other than polygons. The same facets in the same order whatever
+ *   the number of threads.
  * - 2D meshes: the edges used by exactly one 2D cell (end nodes first, then mid-edge nodes of
  *   higher-order cells).
  * Coincident nodes with different ids are the same node here (a partition interface or a ghost
  * layer duplicates them): a face between two cells that share only coincident copies is inside.
+ * The faces of ghost cells (the outer side of a ghost layer) are not the boundary.
  * `distinctPoints`: the caller knows that no two points coincide (a merged composite input), so
  * they are not looked for (one hash lookup per point saved).
  */
 BoundaryFacets FindBoundaryFacets(
   vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints = false);
+
+/**
+ * The boundary of a 3D mesh as FindBoundaryFacets gives it, always from vtkGeometryFilter (the
+ * reference the tests compare the face matching with).
+ */
+BoundaryFacets FindBoundaryFacetsByGeometryFilter(
+  vtkUnstructuredGrid* mesh, bool distinctPoints = false);
 
 /// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);

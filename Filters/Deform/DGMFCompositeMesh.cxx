@@ -1,16 +1,20 @@
 #include "DGMFCompositeMesh.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFMeshConversion.h"
 
 #include "dgmf/ExactPointTable.h"
 #include "dgmf/ResultNames.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkCellTypes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -28,6 +32,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <map>
 #include <string>
@@ -113,26 +118,187 @@ vtkSmartPointer<vtkDataArray> Range(vtkDataArray* values, vtkIdType first, vtkId
   return range;
 }
 
+/**
+ * A block's values of a selected array into the merged nodes' (vtkArrayDispatch: no virtual call
+ * per value): the boundary marker takes the largest value found for a node (moving anywhere:
+ * moving), other arrays the first tuple found that is not zero.
+ */
+struct MergeNodeValues
+{
+  const std::vector<vtkIdType>& NodeOf;
+  double* Values;
+  bool IsMarker;
+
+  template <typename Array>
+  void operator()(Array* source)
+  {
+    const auto tuples = vtk::DataArrayTupleRange(source);
+    const int m = source->GetNumberOfComponents();
+    for (vtkIdType i = 0; i < tuples.size(); ++i)
+    {
+      double* target = this->Values + this->NodeOf[static_cast<std::size_t>(i)] * m;
+      const auto tuple = tuples[i];
+      if (this->IsMarker)
+      {
+        target[0] = std::max(target[0], static_cast<double>(tuple[0]));
+      }
+      else if (std::all_of(target, target + m, [](double v) { return v == 0.0; }))
+      {
+        for (int k = 0; k < m; ++k)
+        {
+          target[k] = static_cast<double>(tuple[k]);
+        }
+      }
+    }
+  }
+};
+
 /// How many points ahead the merge asks for the table's slot.
 constexpr vtkIdType kPrefetchDistance = 8;
 
-/// The merged grid's cells, gathered in plain arrays and handed to VTK once.
+/// The number of cells of `block` and of point ids in their connectivity.
+void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids)
+{
+  cells = block->GetNumberOfCells();
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
+  {
+    ids = grid->GetCells() ? grid->GetCells()->GetNumberOfConnectivityIds() : 0;
+    return;
+  }
+  ids = 0;
+  if (auto* polyData = vtkPolyData::SafeDownCast(block))
+  {
+    for (vtkCellArray* part :
+      { polyData->GetVerts(), polyData->GetLines(), polyData->GetPolys(), polyData->GetStrips() })
+    {
+      ids += part ? part->GetNumberOfConnectivityIds() : 0;
+    }
+    return;
+  }
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    ids += block->GetCellSize(c);
+  }
+}
+
+/// `count` values of `from` (of an integer type), each mapped by `map`, into `to`.
+template <typename Array, typename Map>
+void CopyMapped(Array* from, vtkIdType first, vtkIdType count, vtkIdType* to, const Map& map)
+{
+  const auto* values = from->GetPointer(first);
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    to[k] = map(static_cast<vtkIdType>(values[k]));
+  }
+}
+
+/**
+ * The merged grid's cells, written into VTK arrays sized once for all the blocks (no copy when
+ * they are handed to the grid); a grid without polyhedra is copied array by array.
+ */
 struct MergedCells
 {
-  std::vector<unsigned char> Types;
-  std::vector<vtkIdType> Offsets{ 0 };
-  std::vector<vtkIdType> Connectivity;
+  vtkNew<vtkUnsignedCharArray> Types;
+  vtkNew<vtkIdTypeArray> Offsets;
+  vtkNew<vtkIdTypeArray> Connectivity;
+  vtkIdType NumberOfCells = 0;
+  vtkIdType NumberOfIds = 0;
   std::vector<vtkIdType> FaceLocations; // polyhedra: -1, or where the cell's faces start
   std::vector<vtkIdType> Faces;         // polyhedra: nfaces, then (count, ids...) per face
+
+  MergedCells(vtkIdType cells, vtkIdType ids)
+  {
+    AllocateTuples(this->Types, cells);
+    AllocateTuples(this->Offsets, cells + 1);
+    AllocateTuples(this->Connectivity, ids);
+    this->Offsets->SetValue(0, 0);
+  }
 
   /// Appends the cells of `block`, their points renumbered by `nodeOf`; returns the largest
   /// dimension of its cells.
   int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
   {
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
+    if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
+    {
+      const std::array<bool, 256> present = CellTypesPresent(grid);
+      if (!present[VTK_POLYHEDRON])
+      {
+        return this->AppendGrid(grid, nodeOf, present);
+      }
+    }
+    return this->AppendCellByCell(block, nodeOf);
+  }
+
+  /// Gives `grid` the cells.
+  void SetOn(vtkUnstructuredGrid* grid)
+  {
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(this->Offsets, this->Connectivity);
+    if (this->FaceLocations.empty())
+    {
+      grid->SetCells(this->Types, cells);
+      return;
+    }
+    const auto idArray = [](const std::vector<vtkIdType>& values)
+    {
+      vtkNew<vtkIdTypeArray> array;
+      AllocateTuples(array, static_cast<vtkIdType>(values.size()));
+      std::copy(values.begin(), values.end(), array->GetPointer(0));
+      return vtkSmartPointer<vtkIdTypeArray>(array.GetPointer());
+    };
+    this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells), -1);
+    grid->SetCells(this->Types, cells, idArray(this->FaceLocations), idArray(this->Faces));
+  }
+
+private:
+  /// A grid without polyhedra: its types, offsets and connectivity array by array.
+  int AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
+    const std::array<bool, 256>& present)
+  {
+    const vtkIdType cells = grid->GetNumberOfCells();
+    vtkCellArray* source = grid->GetCells();
+    const vtkIdType ids = source->GetNumberOfConnectivityIds();
+    std::memcpy(this->Types->GetPointer(this->NumberOfCells),
+      grid->GetCellTypesArray()->GetPointer(0), static_cast<std::size_t>(cells));
+    vtkIdType* offsets = this->Offsets->GetPointer(this->NumberOfCells);
+    vtkIdType* connectivity = this->Connectivity->GetPointer(this->NumberOfIds);
+    const vtkIdType base = this->NumberOfIds;
+    const auto shift = [base](vtkIdType offset) { return base + offset; };
+    const auto renumber = [&nodeOf](vtkIdType id) { return nodeOf[static_cast<std::size_t>(id)]; };
+    if (source->IsStorage64Bit())
+    {
+      CopyMapped(source->GetOffsetsArray64(), 0, cells + 1, offsets, shift);
+      CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, renumber);
+    }
+    else
+    {
+      CopyMapped(source->GetOffsetsArray32(), 0, cells + 1, offsets, shift);
+      CopyMapped(source->GetConnectivityArray32(), 0, ids, connectivity, renumber);
+    }
+    this->NumberOfCells += cells;
+    this->NumberOfIds += ids;
+    int dimension = 0;
+    for (int type = 0; type < 256; ++type)
+    {
+      if (present[type])
+      {
+        dimension =
+          std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+      }
+    }
+    return dimension;
+  }
+
+  int AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
+  {
     int dimension = 0;
     auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
     auto* polyData = vtkPolyData::SafeDownCast(block);
     vtkNew<vtkIdList> ids;
+    vtkIdType* connectivity = this->Connectivity->GetPointer(0);
+    vtkIdType* offsets = this->Offsets->GetPointer(0);
+    unsigned char* types = this->Types->GetPointer(0);
     for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
     {
       vtkIdType count = 0;
@@ -153,16 +319,16 @@ struct MergedCells
       }
       for (vtkIdType k = 0; k < count; ++k)
       {
-        this->Connectivity.push_back(nodeOf[static_cast<std::size_t>(points[k])]);
+        connectivity[this->NumberOfIds++] = nodeOf[static_cast<std::size_t>(points[k])];
       }
-      this->Offsets.push_back(static_cast<vtkIdType>(this->Connectivity.size()));
       const int type = block->GetCellType(c);
-      this->Types.push_back(static_cast<unsigned char>(type));
+      types[this->NumberOfCells++] = static_cast<unsigned char>(type);
+      offsets[this->NumberOfCells] = this->NumberOfIds;
       dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
       if (type == VTK_POLYHEDRON && grid)
       {
         // Polyhedra need their faces, renumbered like their points.
-        this->FaceLocations.resize(this->Types.size() - 1, -1);
+        this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells - 1), -1);
         this->FaceLocations.push_back(static_cast<vtkIdType>(this->Faces.size()));
         grid->GetFaceStream(c, ids);
         const vtkIdType* stream = ids->GetPointer(0);
@@ -180,30 +346,6 @@ struct MergedCells
       }
     }
     return dimension;
-  }
-
-  /// Gives `grid` the cells.
-  void SetOn(vtkUnstructuredGrid* grid)
-  {
-    const auto idArray = [](const std::vector<vtkIdType>& values)
-    {
-      vtkNew<vtkIdTypeArray> array;
-      AllocateTuples(array, static_cast<vtkIdType>(values.size()));
-      std::copy(values.begin(), values.end(), array->GetPointer(0));
-      return vtkSmartPointer<vtkIdTypeArray>(array.GetPointer());
-    };
-    vtkNew<vtkUnsignedCharArray> types;
-    AllocateTuples(types, static_cast<vtkIdType>(this->Types.size()));
-    std::copy(this->Types.begin(), this->Types.end(), types->GetPointer(0));
-    vtkNew<vtkCellArray> cells;
-    cells->SetData(idArray(this->Offsets), idArray(this->Connectivity));
-    if (this->FaceLocations.empty())
-    {
-      grid->SetCells(types, cells);
-      return;
-    }
-    this->FaceLocations.resize(this->Types.size(), -1);
-    grid->SetCells(types, cells, idArray(this->FaceLocations), idArray(this->Faces));
   }
 };
 } // namespace
@@ -232,11 +374,24 @@ CompositeMesh::CompositeMesh(
   xyz.reserve(3 * blockPoints);
   std::vector<std::vector<double>> values(arrays.size());
   std::vector<int> components(arrays.size(), 0);
-  MergedCells cells;
 
   const std::map<unsigned int, std::string> partitionNames = PartitionNames(input);
   auto iterator = vtk::TakeSmartPointer(input->NewIterator());
   iterator->SkipEmptyNodesOn();
+  vtkIdType totalCells = 0;
+  vtkIdType totalIds = 0;
+  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+  {
+    if (auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject()))
+    {
+      vtkIdType cells = 0;
+      vtkIdType ids = 0;
+      CountCells(block, cells, ids);
+      totalCells += cells;
+      totalIds += ids;
+    }
+  }
+  MergedCells cells(totalCells, totalIds);
   for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
   {
     auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject());
@@ -291,27 +446,19 @@ CompositeMesh::CompositeMesh(
       if (node == kept)
       {
         xyz.insert(xyz.end(), p, p + 3);
-        for (std::size_t a = 0; a < arrays.size(); ++a)
-        {
-          values[a].resize(values[a].size() + static_cast<std::size_t>(components[a]), 0.0);
-        }
       }
-      for (std::size_t a = 0; a < arrays.size(); ++a)
+    }
+    for (std::size_t a = 0; a < arrays.size(); ++a)
+    {
+      const int m = components[a];
+      values[a].resize(xyz.size() / 3 * static_cast<std::size_t>(m), 0.0); // the new nodes: 0
+      vtkDataArray* source = sources[a];
+      if (source && source->GetNumberOfComponents() == m) // else the block contributes zeros
       {
-        const int m = components[a];
-        vtkDataArray* source = sources[a];
-        if (!source || source->GetNumberOfComponents() != m)
+        MergeNodeValues worker{ leaf.NodeOf, values[a].data(), arrays[a] == markerName };
+        if (!vtkArrayDispatch::Dispatch::Execute(source, worker))
         {
-          continue; // a block without the array (or with another shape) contributes zeros
-        }
-        double* target = values[a].data() + static_cast<std::size_t>(node) * m;
-        if (arrays[a] == markerName)
-        {
-          target[0] = std::max(target[0], source->GetComponent(i, 0)); // moving anywhere: moving
-        }
-        else if (std::all_of(target, target + m, [](double v) { return v == 0.0; }))
-        {
-          source->GetTuple(i, target); // the first non-zero value found for the node
+          worker(source); // an array type outside the dispatch list
         }
       }
     }
@@ -320,9 +467,9 @@ CompositeMesh::CompositeMesh(
     {
       leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
     }
-    leaf.FirstCell = static_cast<vtkIdType>(cells.Types.size());
+    leaf.FirstCell = cells.NumberOfCells;
     leaf.CellDimension = cells.Append(block, leaf.NodeOf);
-    leaf.Cells = static_cast<vtkIdType>(cells.Types.size()) - leaf.FirstCell;
+    leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
     this->Leaves.push_back(std::move(leaf));
   }
 

@@ -11,6 +11,7 @@
 #include "vtkNew.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -93,6 +94,19 @@ vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points)
     grid->InsertNextCell(points->GetCellType(c), ids);
   }
   return grid;
+}
+
+std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh)
+{
+  std::array<bool, 256> present{};
+  vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
+  const vtkIdType n = types ? types->GetNumberOfValues() : 0;
+  const unsigned char* values = n > 0 ? types->GetPointer(0) : nullptr;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    present[values[c]] = true;
+  }
+  return present;
 }
 
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)

@@ -30,7 +30,7 @@ class InternalFacesCache
 {
 public:
   /// The internal faces of `mesh`'s 3D cells (found again when its cells changed).
-  const dgmf::InternalFaces& Get(vtkUnstructuredGrid* mesh);
+  const dgmf::InternalFaces& Get(vtkUnstructuredGrid* mesh, const dgmf::ParallelFor& parallelFor);
   /// The orientation of `mesh`'s cells with the points `original` (n points of `mesh`).
   const dgmf::InputOrientation& Orient(
     vtkUnstructuredGrid* mesh, const double* original, const dgmf::ParallelFor& parallelFor);

@@ -178,7 +178,7 @@ TEST(NonOrthogonality, TheSharedFaceIsFoundAndTheAnglesAreCheckMeshs)
 {
   std::vector<double> points;
   HexCells cells = TwoCubes(points);
-  const dgmf::InternalFaces faces = dgmf::FindInternalFaces(cells, 12);
+  const dgmf::InternalFaces faces = dgmf::FindInternalFaces(cells, 12, dgmf_test::TwoThreadFor);
   ASSERT_EQ(faces.Size(), 1u);
   EXPECT_EQ(faces.Owner[0], 0);
   EXPECT_EQ(faces.Neighbour[0], 1);
@@ -222,7 +222,8 @@ TEST(NonOrthogonality, TheSharedFaceIsFoundAndTheAnglesAreCheckMeshs)
   HexCells mirrored = cells;
   auto& c = mirrored.Corners[1];
   c = { c[4], c[5], c[6], c[7], c[0], c[1], c[2], c[3] };
-  const dgmf::InternalFaces mirroredFaces = dgmf::FindInternalFaces(mirrored, 12);
+  const dgmf::InternalFaces mirroredFaces =
+    dgmf::FindInternalFaces(mirrored, 12, dgmf_test::TwoThreadFor);
   ASSERT_EQ(mirroredFaces.Size(), 1u);
   const dgmf::InputOrientation mirroredOrientation =
     dgmf::OrientCells(mirrored, mirroredFaces, points.data(), dgmf_test::TwoThreadFor);

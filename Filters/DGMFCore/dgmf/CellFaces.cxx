@@ -42,4 +42,16 @@ std::int64_t FaceStreamLength(const std::int64_t* faceStream)
   return at;
 }
 
+const std::int64_t* FaceOfStream(
+  const std::int64_t* faceStream, std::int32_t face, std::int64_t& count)
+{
+  std::int64_t at = 1;
+  for (std::int32_t f = 0; f < face; ++f)
+  {
+    at += 1 + faceStream[at];
+  }
+  count = faceStream[at];
+  return faceStream + at + 1;
+}
+
 } // namespace dgmf

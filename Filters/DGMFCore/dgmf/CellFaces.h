@@ -24,6 +24,10 @@ const std::int64_t* GetShapeFaceStream(CellShape shape);
 /// The number of values of a face stream (1 + for each face, 1 + its corners).
 std::int64_t FaceStreamLength(const std::int64_t* faceStream);
 
+/// The points of face `face` of a face stream; `count` gets their number.
+const std::int64_t* FaceOfStream(
+  const std::int64_t* faceStream, std::int32_t face, std::int64_t& count);
+
 } // namespace dgmf
 
 #endif

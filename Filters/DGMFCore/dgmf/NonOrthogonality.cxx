@@ -1,5 +1,6 @@
 #include "dgmf/NonOrthogonality.h"
 
+#include "dgmf/CellFaces.h"
 #include "dgmf/CellGeometry.h"
 
 #include <algorithm>
@@ -53,18 +54,6 @@ FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t 
   return { (1.0 / (3.0 * sumA)) * sumAc, 0.5 * sumN };
 }
 
-/// The face `face` of a face stream: its first id and its number of ids.
-const std::int64_t* FaceAt(
-  const std::vector<std::int64_t>& stream, std::int32_t face, std::int64_t& n)
-{
-  std::int64_t at = 1;
-  for (std::int32_t f = 0; f < face; ++f)
-  {
-    at += 1 + stream[at];
-  }
-  n = stream[at];
-  return &stream[at + 1];
-}
 /// The centre of a cell as OpenFOAM computes it (primitiveMeshCellCentresAndVols), with the
 /// pyramid volumes taken positive whatever the orientation of the cell's faces; `signedVolume`
 /// gets 3 x the volume the faces give as they are oriented.
@@ -136,7 +125,7 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
           streamCell = owner;
         }
         std::int64_t n = 0;
-        const std::int64_t* ids = FaceAt(stream, faces.Face[f], n);
+        const std::int64_t* ids = FaceOfStream(stream.data(), faces.Face[f], n);
         const FaceGeometry face = FaceOf(points, ids, n);
         const Vec3 d = Load(centres.data(), neighbour) - Load(centres.data(), owner);
         const double cosine = cellSign[static_cast<std::size_t>(owner)] * Dot(d, face.Area) /
@@ -159,106 +148,6 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
 }
 
 } // namespace
-
-InternalFaces FindInternalFaces(const FaceCells& cells, std::size_t numberOfPoints)
-{
-  const std::size_t numberOfCells = cells.GetNumberOfCells();
-  // Bucket every face by its smallest point id (counting sort), then pair equal faces within
-  // each bucket.
-  std::vector<std::int64_t> start(numberOfPoints + 1, 0);
-  std::vector<std::int64_t> stream;
-  const auto smallest = [&stream](std::int64_t at)
-  { return *std::min_element(&stream[at + 1], &stream[at + 1] + stream[at]); };
-  for (std::size_t c = 0; c < numberOfCells; ++c)
-  {
-    cells.GetFaces(c, stream);
-    for (std::int64_t f = 0, at = 1; !stream.empty() && f < stream[0]; ++f, at += 1 + stream[at])
-    {
-      ++start[static_cast<std::size_t>(smallest(at)) + 1];
-    }
-  }
-  for (std::size_t p = 0; p < numberOfPoints; ++p)
-  {
-    start[p + 1] += start[p];
-  }
-  struct Entry
-  {
-    std::int64_t Cell;
-    std::int32_t Face;
-  };
-  std::vector<Entry> entries(static_cast<std::size_t>(start[numberOfPoints]));
-  std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t c = 0; c < numberOfCells; ++c)
-  {
-    cells.GetFaces(c, stream);
-    for (std::int64_t f = 0, at = 1; !stream.empty() && f < stream[0]; ++f, at += 1 + stream[at])
-    {
-      entries[static_cast<std::size_t>(fill[static_cast<std::size_t>(smallest(at))]++)] = {
-        static_cast<std::int64_t>(c), static_cast<std::int32_t>(f)
-      };
-    }
-  }
-  InternalFaces faces;
-  std::vector<std::int64_t> other;
-  const auto sortedFace = [&](const Entry& e, std::vector<std::int64_t>& ids)
-  {
-    cells.GetFaces(static_cast<std::size_t>(e.Cell), stream);
-    std::int64_t n = 0;
-    const std::int64_t* begin = FaceAt(stream, e.Face, n);
-    ids.assign(begin, begin + n);
-    std::sort(ids.begin(), ids.end());
-  };
-  std::vector<std::int64_t> first;
-  std::vector<std::uint8_t> paired;
-  for (std::size_t p = 0; p < numberOfPoints; ++p)
-  {
-    paired.assign(static_cast<std::size_t>(start[p + 1] - start[p]), 0);
-    for (std::int64_t a = start[p]; a < start[p + 1]; ++a)
-    {
-      if (paired[static_cast<std::size_t>(a - start[p])])
-      {
-        continue;
-      }
-      sortedFace(entries[static_cast<std::size_t>(a)], first);
-      for (std::int64_t b = a + 1; b < start[p + 1]; ++b)
-      {
-        if (paired[static_cast<std::size_t>(b - start[p])] ||
-          entries[static_cast<std::size_t>(b)].Cell == entries[static_cast<std::size_t>(a)].Cell)
-        {
-          continue;
-        }
-        sortedFace(entries[static_cast<std::size_t>(b)], other);
-        if (other == first)
-        {
-          paired[static_cast<std::size_t>(a - start[p])] = 1;
-          paired[static_cast<std::size_t>(b - start[p])] = 1;
-          const Entry& owner = entries[static_cast<std::size_t>(a)];
-          faces.Owner.push_back(owner.Cell);
-          faces.Face.push_back(owner.Face);
-          faces.Neighbour.push_back(entries[static_cast<std::size_t>(b)].Cell);
-          break;
-        }
-      }
-    }
-  }
-  // In the order of their owners: the angles take each owner's faces in one go.
-  std::vector<std::size_t> order(faces.Size());
-  for (std::size_t f = 0; f < order.size(); ++f)
-  {
-    order[f] = f;
-  }
-  std::sort(order.begin(), order.end(),
-    [&faces](std::size_t a, std::size_t b)
-    { return std::tie(faces.Owner[a], faces.Face[a]) < std::tie(faces.Owner[b], faces.Face[b]); });
-  InternalFaces sorted;
-  for (std::size_t f : order)
-  {
-    sorted.Owner.push_back(faces.Owner[f]);
-    sorted.Neighbour.push_back(faces.Neighbour[f]);
-    sorted.Face.push_back(faces.Face[f]);
-  }
-  return sorted;
-}
 
 InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
   const double* original, const ParallelFor& parallelFor)

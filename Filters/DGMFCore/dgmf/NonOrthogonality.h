@@ -7,6 +7,7 @@
 #ifndef dgmf_NonOrthogonality_h
 #define dgmf_NonOrthogonality_h
 
+#include "dgmf/FaceMatching.h"
 #include "dgmf/ParallelFor.h"
 
 #include <cstddef>
@@ -15,36 +16,6 @@
 
 namespace dgmf
 {
-
-/// The faces of the cells of a mesh, for the non-orthogonality (the adapter gives VTK's).
-class FaceCells
-{
-public:
-  virtual ~FaceCells() = default;
-  virtual std::size_t GetNumberOfCells() const = 0;
-  /**
-   * The faces of `cell` as a face stream with the mesh's point ids (CellFaces.h): the number of
-   * faces, then each face's number of points and its points in order around it. A stream of 0
-   * faces for cells that take no part (2D cells, cells without faces). Called concurrently.
-   */
-  virtual void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const = 0;
-};
-
-/// The faces shared by two cells, each once, in increasing order of owner.
-struct InternalFaces
-{
-  std::vector<std::int64_t> Owner;     ///< the cell whose face stream gives the face
-  std::vector<std::int64_t> Neighbour; ///< the other cell
-  std::vector<std::int32_t> Face;      ///< the face's position in the owner's stream
-
-  std::size_t Size() const { return this->Owner.size(); }
-};
-
-/**
- * The internal faces of `cells` (faces with the same set of points in two cells), found by
- * bucketing the faces by their smallest point id: O(faces). `numberOfPoints` bounds the ids.
- */
-InternalFaces FindInternalFaces(const FaceCells& cells, std::size_t numberOfPoints);
 
 /// What the non-orthogonality takes from the mesh before the deformation.
 struct InputOrientation

@@ -1,0 +1,50 @@
+/**
+ * @file DGMFFaceCells.h
+ * @brief The faces of a vtkUnstructuredGrid's 3D cells as the core's face matching reads them
+ * (private to the DGMF::Filters module).
+ */
+#ifndef DGMFFaceCells_h
+#define DGMFFaceCells_h
+
+#include "dgmf/FaceMatching.h"
+
+#include "vtkType.h"
+
+#include <array>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/**
+ * The faces of a grid's 3D cells in VTK's face order: tetrahedra, hexahedra, voxels, wedges,
+ * pyramids (their corners) and polyhedra (their face streams); other cells have no faces here.
+ * With `canonical` (one id per point), every point id is replaced by canonical[id] (coincident
+ * points taken as one).
+ */
+class VTKFaceCells : public dgmf::FaceCells
+{
+public:
+  explicit VTKFaceCells(
+    vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>* canonical = nullptr);
+
+  std::size_t GetNumberOfCells() const override;
+  void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override;
+
+  /**
+   * Whether every 3D cell type of `types` (CellTypesPresent) has its faces here, i.e. no 3D cell
+   * other than the linear shapes and polyhedra (quadratic and Lagrange cells have mid-edge nodes
+   * on their faces).
+   */
+  static bool CoversAll3DCells(const std::array<bool, 256>& types);
+
+private:
+  vtkUnstructuredGrid* Mesh;
+  const std::vector<vtkIdType>* Canonical;
+};
+
+} // namespace dgmf_vtk
+
+#endif

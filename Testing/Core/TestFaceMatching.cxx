@@ -1,0 +1,177 @@
+// The core's face matching: internal faces (two cells) and boundary faces (one cell), the same
+// with one and two threads, faces of more than 4 points compared point by point, bad ids refused.
+#include "dgmf/CellFaces.h"
+#include "dgmf/FaceMatching.h"
+
+#include "TwoThreadFor.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace
+{
+/// Cells given by their face streams (any faces, any number of points per face).
+class StreamCells : public dgmf::FaceCells
+{
+public:
+  std::vector<std::vector<std::int64_t>> Streams;
+
+  std::size_t GetNumberOfCells() const override { return this->Streams.size(); }
+  void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
+  {
+    stream = this->Streams[cell];
+  }
+  void AddHexahedron(const std::vector<std::int64_t>& corners)
+  {
+    const std::int64_t* local = dgmf::GetShapeFaceStream(dgmf::CellShape::Hexahedron);
+    std::vector<std::int64_t> stream(local, local + dgmf::FaceStreamLength(local));
+    for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
+    {
+      for (std::int64_t k = 0; k < local[at]; ++k)
+      {
+        stream[at + 1 + k] = corners[local[at + 1 + k]];
+      }
+    }
+    this->Streams.push_back(stream);
+  }
+};
+
+/// An n x n x n block of hexahedra, cells numbered along x, then y, then z.
+StreamCells Block(int n)
+{
+  StreamCells cells;
+  const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        cells.AddHexahedron({ id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) });
+      }
+    }
+  }
+  return cells;
+}
+} // namespace
+
+TEST(FaceMatching, ABlockOfHexahedraHasItsInnerFacesOnceAndItsOuterFacesAsBoundary)
+{
+  const int n = 6;
+  const StreamCells cells = Block(n);
+  const std::size_t points = static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1));
+  const dgmf::InternalFaces inner = dgmf::FindInternalFaces(cells, points, dgmf::SerialFor);
+  const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, points, dgmf::SerialFor);
+  EXPECT_EQ(inner.Size(), static_cast<std::size_t>(3 * n * n * (n - 1)));
+  EXPECT_EQ(outer.Size(), static_cast<std::size_t>(6 * n * n));
+  // Each cell's 6 faces: inside (as owner or neighbour) or on the boundary, exactly once.
+  std::vector<int> uses(cells.GetNumberOfCells(), 0);
+  for (std::size_t f = 0; f < inner.Size(); ++f)
+  {
+    EXPECT_LT(inner.Owner[f], inner.Neighbour[f]);
+    ++uses[static_cast<std::size_t>(inner.Owner[f])];
+    ++uses[static_cast<std::size_t>(inner.Neighbour[f])];
+    if (f > 0) // by owner, then by face
+    {
+      EXPECT_TRUE(inner.Owner[f - 1] < inner.Owner[f] ||
+        (inner.Owner[f - 1] == inner.Owner[f] && inner.Face[f - 1] < inner.Face[f]));
+    }
+  }
+  for (std::size_t f = 0; f < outer.Size(); ++f)
+  {
+    ++uses[static_cast<std::size_t>(outer.Cell[f])];
+  }
+  for (std::size_t c = 0; c < uses.size(); ++c)
+  {
+    EXPECT_EQ(uses[c], 6) << "cell " << c;
+  }
+  // The x-neighbour of cell 0 shares its face 1 (+x) with its face 0 (-x).
+  EXPECT_EQ(inner.Owner[0], 0);
+  EXPECT_EQ(inner.Face[0], 1);
+  EXPECT_EQ(inner.Neighbour[0], 1);
+}
+
+TEST(FaceMatching, TheSameFacesWithOneAndTwoThreads)
+{
+  const StreamCells cells = Block(20);
+  const std::size_t points = 21 * 21 * 21;
+  const dgmf::InternalFaces one = dgmf::FindInternalFaces(cells, points, dgmf::SerialFor);
+  const dgmf::InternalFaces two = dgmf::FindInternalFaces(cells, points, dgmf_test::TwoThreadFor);
+  EXPECT_EQ(one.Owner, two.Owner);
+  EXPECT_EQ(one.Neighbour, two.Neighbour);
+  EXPECT_EQ(one.Face, two.Face);
+  const dgmf::BoundaryFaces outerOne = dgmf::FindBoundaryFaces(cells, points, dgmf::SerialFor);
+  const dgmf::BoundaryFaces outerTwo =
+    dgmf::FindBoundaryFaces(cells, points, dgmf_test::TwoThreadFor);
+  EXPECT_EQ(outerOne.Cell, outerTwo.Cell);
+  EXPECT_EQ(outerOne.Face, outerTwo.Face);
+}
+
+TEST(FaceMatching, FacesOfMoreThanFourPointsArePairedOnlyWhenAllTheirPointsAgree)
+{
+  // Three one-face "cells": hexagons 0-5, the same hexagon listed the other way round, and a
+  // hexagon with the same three smallest ids but other points.
+  StreamCells cells;
+  cells.Streams.push_back({ 1, 6, 0, 1, 2, 3, 4, 5 });
+  cells.Streams.push_back({ 1, 6, 5, 4, 3, 2, 1, 0 });
+  cells.Streams.push_back({ 1, 6, 0, 1, 2, 6, 7, 8 });
+  const dgmf::InternalFaces inner = dgmf::FindInternalFaces(cells, 9, dgmf_test::TwoThreadFor);
+  ASSERT_EQ(inner.Size(), 1u);
+  EXPECT_EQ(inner.Owner[0], 0);
+  EXPECT_EQ(inner.Neighbour[0], 1);
+  const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, 9, dgmf_test::TwoThreadFor);
+  ASSERT_EQ(outer.Size(), 1u);
+  EXPECT_EQ(outer.Cell[0], 2);
+}
+
+TEST(FaceMatching, TrianglesAndQuadrilateralsOnTheSamePointsAreDifferentFaces)
+{
+  StreamCells cells;
+  cells.Streams.push_back({ 1, 4, 0, 1, 2, 3 });
+  cells.Streams.push_back({ 1, 3, 0, 1, 2 });
+  cells.Streams.push_back({ 1, 3, 2, 1, 0 });
+  const dgmf::InternalFaces inner = dgmf::FindInternalFaces(cells, 4, dgmf::SerialFor);
+  ASSERT_EQ(inner.Size(), 1u);
+  EXPECT_EQ(inner.Owner[0], 1);
+  EXPECT_EQ(inner.Neighbour[0], 2);
+  const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, 4, dgmf::SerialFor);
+  ASSERT_EQ(outer.Size(), 1u);
+  EXPECT_EQ(outer.Cell[0], 0);
+}
+
+TEST(FaceMatching, AFaceOfThreeCellsPairsTheFirstTwoAndLeavesTheThird)
+{
+  StreamCells cells;
+  for (int c = 0; c < 3; ++c)
+  {
+    cells.Streams.push_back({ 1, 3, 0, 1, 2 });
+  }
+  const dgmf::InternalFaces inner = dgmf::FindInternalFaces(cells, 3, dgmf::SerialFor);
+  ASSERT_EQ(inner.Size(), 1u);
+  EXPECT_EQ(inner.Owner[0], 0);
+  EXPECT_EQ(inner.Neighbour[0], 1);
+  const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, 3, dgmf::SerialFor);
+  ASSERT_EQ(outer.Size(), 1u);
+  EXPECT_EQ(outer.Cell[0], 2);
+}
+
+TEST(FaceMatching, PointIdsOutsideTheMeshAreRefusedWithTheCellNamed)
+{
+  StreamCells cells;
+  cells.Streams.push_back({ 1, 3, 0, 1, 2 });
+  cells.Streams.push_back({ 1, 3, 0, 1, 7 });
+  try
+  {
+    dgmf::FindBoundaryFaces(cells, 3, dgmf::SerialFor);
+    FAIL() << "an id outside the points was accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("Cell 1 uses point id 7"), std::string::npos) << e.what();
+  }
+}
