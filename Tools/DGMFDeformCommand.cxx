@@ -34,6 +34,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
+#include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -365,6 +366,15 @@ int main(int argc, char* argv[])
   {
     return parsed;
   }
+  // VTK's own threaded loops in this program (the ranges of every array the .vtu writer records:
+  // 2.4 s of the 3.5 s write of an 8.26M-node mesh on one thread) run on the filter's threads:
+  // Debian's ParaView build defaults to the Sequential backend.
+  const char* backend = vtkSMPTools::GetBackend();
+  if (!backend || std::string(backend) == "Sequential")
+  {
+    vtkSMPTools::SetBackend("STDThread");
+  }
+  vtkSMPTools::Initialize(filter->GetNumberOfThreads());
 
   // The input: a VTK mesh file (boundaries by marker), or a solver's mesh file or an OpenFOAM
   // case (boundaries by name).
