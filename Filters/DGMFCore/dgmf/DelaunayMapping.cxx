@@ -133,7 +133,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     !IsNumberingCoherent(*this->Graph, points, this->Kinds.data(), numberOfNodes))
   {
     const std::vector<std::int32_t> order =
-      SpatialLocationOrder(*this->Graph, points, this->Kinds.data(), numberOfNodes);
+      SpatialLocationOrder(*this->Graph, points, this->Kinds.data(), numberOfNodes, parallelFor);
     // Each block gathers its nodes' coordinates, is located as one contiguous run, and scatters
     // its results: the nodes' own arrays are read and written with independent accesses, which
     // the processor overlaps, instead of inside the walks.

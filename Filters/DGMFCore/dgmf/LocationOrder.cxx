@@ -23,6 +23,18 @@ constexpr std::int64_t SubCells = 8;
 /// A seed cell with more nodes than this is ordered by its sub-cells too.
 constexpr std::size_t CrowdedCell = 32;
 
+/// The layout of a node's sort key: id in bits 0-30, sub-cell rank in 31-39, cell rank above.
+constexpr int SubShift = 31;
+constexpr int RankShift = 40;
+constexpr int MaximumRankBits = 64 - RankShift;
+constexpr std::uint64_t NodeMask = (std::uint64_t{ 1 } << SubShift) - 1;
+/// Bits sorted per pass of the radix sort.
+constexpr int DigitBits = 13;
+/// Nodes per block of the parallel passes.
+constexpr std::size_t KeyBlock = 65536;
+constexpr std::uint32_t NoRank = 0xffffffffu; ///< a boundary node's rank
+
+
 /// The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k)) along CGAL's
 /// Hilbert curve through the cells' centres.
 std::vector<std::uint32_t> HilbertRanks(const std::int64_t cells[3], int dimension)
@@ -151,56 +163,82 @@ bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const
 }
 
 std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
-  const NodeKind* kinds, std::size_t numberOfNodes)
+  const NodeKind* kinds, std::size_t numberOfNodes, const ParallelFor& parallelFor)
 {
   const Grid grid = graph.GetSeedGridGeometry();
   const int dimension = graph.GetDimension();
-  std::vector<std::int32_t> order;
-  order.reserve(numberOfNodes);
+  // Each interior node as one 64-bit key: its cell's rank along the curve (bits 40 and up), its
+  // sub-cell's rank in a crowded cell (bits 31-39; 0 elsewhere), its id (bits 0-30). Sorted by
+  // the ranks, stably, the nodes of a cell stay in increasing id within a sub-cell: the keys carry
+  // the ids, so no pass reads a node's data in the sorted (random) order.
+  const std::vector<std::uint32_t> cellRank = HilbertRanks(grid.Cells, dimension);
+  int rankBits = 0;
+  while ((std::size_t{ 1 } << rankBits) < cellRank.size())
+  {
+    ++rankBits;
+  }
+  // Beyond 2^24 cells (about 10 million boundary nodes) neighbouring ranks share a key.
+  const int coarsen = std::max(0, rankBits - MaximumRankBits);
+  rankBits -= coarsen;
+  std::vector<std::uint32_t> rankOfNode(numberOfNodes);
+  ForEachIndex(parallelFor, numberOfNodes, KeyBlock,
+    [&](std::size_t i)
+    {
+      rankOfNode[i] = IsBoundary(kinds[i])
+        ? NoRank
+        : cellRank[GridPosition(grid, points + 3 * i, dimension).CellIndex(grid)];
+    });
+  std::vector<std::uint64_t> keys;
+  keys.reserve(numberOfNodes);
+  std::vector<std::uint32_t> nodesPerCell(cellRank.size(), 0);
   for (std::size_t i = 0; i < numberOfNodes; ++i)
   {
-    if (!IsBoundary(kinds[i]))
+    if (rankOfNode[i] != NoRank)
     {
-      order.push_back(static_cast<std::int32_t>(i));
+      ++nodesPerCell[rankOfNode[i]];
+      keys.push_back(static_cast<std::uint64_t>(rankOfNode[i] >> coarsen) << RankShift | i);
     }
   }
-  // The cells along the curve; each node's rank, computed once.
-  const std::vector<std::uint32_t> cellRank = HilbertRanks(grid.Cells, dimension);
-  std::vector<std::uint32_t> rankOfNode(numberOfNodes);
-  for (std::int32_t node : order)
-  {
-    const auto i = static_cast<std::size_t>(node);
-    rankOfNode[i] = cellRank[GridPosition(grid, points + 3 * i, dimension).CellIndex(grid)];
-  }
-  std::vector<std::size_t> start;
-  std::vector<std::int32_t> scratch;
-  CountingSort(
-    order.data(), order.size(), cellRank.size(),
-    [&](std::int32_t node) { return rankOfNode[static_cast<std::size_t>(node)]; }, start, scratch);
   rankOfNode = std::vector<std::uint32_t>();
-
   // A crowded cell (near a body, where the graph's elements are small) in the order of the same
   // curve through its sub-cells.
   const std::int64_t sub[3] = { SubCells, SubCells, dimension == 3 ? SubCells : 1 };
   const std::vector<std::uint32_t> subRank = HilbertRanks(sub, dimension);
-  std::vector<std::size_t> subStart;
-  for (std::size_t first = 0; first < order.size();)
-  {
-    // The cell's nodes end where start[] (now the cells' ends) says.
-    const std::size_t last = *std::upper_bound(start.begin(), start.end(), first);
-    const std::size_t count = last - first;
-    if (count > CrowdedCell)
+  ForEachIndex(parallelFor, keys.size(), KeyBlock,
+    [&](std::size_t k)
     {
-      CountingSort(
-        order.data() + first, count, subRank.size(),
-        [&](std::int32_t node)
-        {
-          return subRank[GridPosition(grid, points + 3 * static_cast<std::size_t>(node), dimension)
-                           .SubIndex()];
-        },
-        subStart, scratch);
+      std::uint64_t& key = keys[k];
+      const std::size_t node = key & NodeMask;
+      const GridPosition position(grid, points + 3 * node, dimension);
+      if (nodesPerCell[cellRank[position.CellIndex(grid)]] > CrowdedCell)
+      {
+        key |= static_cast<std::uint64_t>(subRank[position.SubIndex()]) << SubShift;
+      }
+    });
+  // LSD radix sort on bits [SubShift, RankShift + rankBits), digits of up to 13 bits (8,192
+  // buckets: the writes stay within the caches).
+  std::vector<std::uint64_t> scratch(keys.size());
+  std::vector<std::size_t> start;
+  for (int low = SubShift; low < RankShift + rankBits; low += DigitBits)
+  {
+    const int bits = std::min(DigitBits, RankShift + rankBits - low);
+    const std::uint64_t mask = (std::uint64_t{ 1 } << bits) - 1;
+    start.assign((std::size_t{ 1 } << bits) + 1, 0);
+    for (std::uint64_t key : keys)
+    {
+      ++start[((key >> low) & mask) + 1];
     }
-    first = last;
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (std::uint64_t key : keys)
+    {
+      scratch[start[(key >> low) & mask]++] = key;
+    }
+    keys.swap(scratch);
+  }
+  std::vector<std::int32_t> order(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    order[k] = static_cast<std::int32_t>(keys[k] & NodeMask);
   }
   return order;
 }

@@ -8,6 +8,7 @@
 
 #include "dgmf/DelaunayGraph.h"
 #include "dgmf/NodeKind.h"
+#include "dgmf/ParallelFor.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -32,12 +33,14 @@ constexpr std::size_t CoherenceSamples = 4096;
 /**
  * The interior nodes in a spatial order: grouped by the graph's seed grid cell, the cells visited
  * along CGAL's Hilbert curve through the grid (Hilbert_sort_middle_policy), the nodes of a cell
- * in increasing id. Consecutive nodes are then near each other whatever the mesh's numbering,
- * so each visibility walk starts next to its node (LocateNodes). A counting sort over the cells:
- * O(numberOfNodes + cells log cells), depending only on the graph and the points.
+ * in increasing id (of a cell with more than 32 nodes, by the same curve through 8^3 sub-cells,
+ * then by id). Consecutive nodes are then near each other whatever the mesh's numbering, so each
+ * visibility walk starts next to its node (LocateNodes). Each node's key (cell rank, sub-cell
+ * rank, id) is computed in parallel, in node order; a radix sort of the keys, O(numberOfNodes +
+ * cells log cells). The order depends only on the graph and the points.
  */
 std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
-  const NodeKind* kinds, std::size_t numberOfNodes);
+  const NodeKind* kinds, std::size_t numberOfNodes, const ParallelFor& parallelFor);
 
 } // namespace dgmf
 
