@@ -34,7 +34,6 @@ constexpr int DigitBits = 13;
 constexpr std::size_t KeyBlock = 65536;
 constexpr std::uint32_t NoRank = 0xffffffffu; ///< a boundary node's rank
 
-
 /// The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k)) along CGAL's
 /// Hilbert curve through the cells' centres.
 std::vector<std::uint32_t> HilbertRanks(const std::int64_t cells[3], int dimension)
