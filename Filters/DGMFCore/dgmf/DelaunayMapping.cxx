@@ -4,6 +4,7 @@
 #include "dgmf/Finite.h"
 #include "dgmf/LocationOrder.h"
 #include "dgmf/NodeLocation.h"
+#include "dgmf/Simd.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +14,12 @@
 
 namespace dgmf
 {
+namespace
+{
+/// How many nodes ahead the spatial order's gather and scatter ask for a node's data.
+constexpr std::size_t GatherAhead = 16;
+} // namespace
+
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride,
   const std::function<void()>& alongside)
@@ -151,12 +158,22 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         std::vector<std::int32_t> element(count, NotLocated);
         for (std::size_t k = 0; k < count; ++k)
         {
+          if (k + GatherAhead < count) // the nodes are far apart in memory: ask ahead
+          {
+            simd::Prefetch(points + 3 * static_cast<std::size_t>(nodes[k + GatherAhead]));
+          }
           std::copy_n(points + 3 * static_cast<std::size_t>(nodes[k]), 3, xyz.data() + 3 * k);
         }
         counts[piece] = LocateNodes(
           *this->Graph, xyz.data(), interior.data(), 0, count, element.data(), w.data());
         for (std::size_t k = 0; k < count; ++k)
         {
+          if (k + GatherAhead < count)
+          {
+            const auto ahead = static_cast<std::size_t>(nodes[k + GatherAhead]);
+            simd::PrefetchForWrite(this->NodeElement.data() + ahead);
+            simd::PrefetchForWrite(this->Weights.data() + m * ahead);
+          }
           const auto node = static_cast<std::size_t>(nodes[k]);
           this->NodeElement[node] = element[k];
           std::copy_n(w.data() + m * k, m, this->Weights.data() + m * node);

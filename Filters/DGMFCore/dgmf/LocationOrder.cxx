@@ -133,6 +133,60 @@ void CountingSort(std::int32_t* nodes, std::size_t count, std::size_t keys, Key&
   }
   std::copy(scratch.begin(), scratch.end(), nodes);
 }
+
+/**
+ * Sorts `keys` by their bits [low, high), stably: an LSD radix sort in digits of up to DigitBits
+ * bits (8,192 buckets: the writes stay within the caches). Each pass counts the digits of fixed
+ * blocks of keys in parallel, then each block writes its keys from its own offsets, so the result
+ * does not depend on the threads.
+ */
+void RadixSort(std::vector<std::uint64_t>& keys, int low, int high, const ParallelFor& parallelFor)
+{
+  const std::size_t blocks =
+    std::max<std::size_t>(1, std::min<std::size_t>(64, keys.size() / 65536));
+  const std::size_t perBlock = (keys.size() + blocks - 1) / blocks;
+  std::vector<std::uint64_t> scratch(keys.size());
+  std::vector<std::size_t> offsets;
+  for (int first = low; first < high; first += DigitBits)
+  {
+    const int bits = std::min(DigitBits, high - first);
+    const std::uint64_t mask = (std::uint64_t{ 1 } << bits) - 1;
+    const std::size_t digits = std::size_t{ 1 } << bits;
+    offsets.assign(
+      blocks * digits, 0); // block b's count, then offset, of digit d: [b * digits + d]
+    const auto forBlock = [&](std::size_t b, const auto& body)
+    {
+      const std::size_t end = std::min(keys.size(), (b + 1) * perBlock);
+      for (std::size_t k = b * perBlock; k < end; ++k)
+      {
+        body(keys[k]);
+      }
+    };
+    ForEachBlock(parallelFor, blocks,
+      [&](std::size_t b)
+      {
+        std::size_t* count = offsets.data() + b * digits;
+        forBlock(b, [&](std::uint64_t key) { ++count[(key >> first) & mask]; });
+      });
+    std::size_t total = 0;
+    for (std::size_t d = 0; d < digits; ++d)
+    {
+      for (std::size_t b = 0; b < blocks; ++b)
+      {
+        const std::size_t count = offsets[b * digits + d];
+        offsets[b * digits + d] = total;
+        total += count;
+      }
+    }
+    ForEachBlock(parallelFor, blocks,
+      [&](std::size_t b)
+      {
+        std::size_t* next = offsets.data() + b * digits;
+        forBlock(b, [&](std::uint64_t key) { scratch[next[(key >> first) & mask]++] = key; });
+      });
+    keys.swap(scratch);
+  }
+}
 } // namespace
 
 bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
@@ -214,26 +268,7 @@ std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const
         key |= static_cast<std::uint64_t>(subRank[position.SubIndex()]) << SubShift;
       }
     });
-  // LSD radix sort on bits [SubShift, RankShift + rankBits), digits of up to 13 bits (8,192
-  // buckets: the writes stay within the caches).
-  std::vector<std::uint64_t> scratch(keys.size());
-  std::vector<std::size_t> start;
-  for (int low = SubShift; low < RankShift + rankBits; low += DigitBits)
-  {
-    const int bits = std::min(DigitBits, RankShift + rankBits - low);
-    const std::uint64_t mask = (std::uint64_t{ 1 } << bits) - 1;
-    start.assign((std::size_t{ 1 } << bits) + 1, 0);
-    for (std::uint64_t key : keys)
-    {
-      ++start[((key >> low) & mask) + 1];
-    }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    for (std::uint64_t key : keys)
-    {
-      scratch[start[(key >> low) & mask]++] = key;
-    }
-    keys.swap(scratch);
-  }
+  RadixSort(keys, SubShift, RankShift + rankBits, parallelFor);
   std::vector<std::int32_t> order(keys.size());
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
