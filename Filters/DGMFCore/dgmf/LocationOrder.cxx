@@ -31,7 +31,7 @@ constexpr std::uint64_t NodeMask = (std::uint64_t{ 1 } << SubShift) - 1;
 /// Bits sorted per pass of the radix sort.
 constexpr int DigitBits = 13;
 /// Nodes per block of the parallel passes.
-constexpr std::size_t KeyBlock = 65536;
+constexpr std::size_t KeyBlock = 4096;
 constexpr std::uint32_t NoRank = 0xffffffffu; ///< a boundary node's rank
 
 /// The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k)) along CGAL's
@@ -143,7 +143,7 @@ void CountingSort(std::int32_t* nodes, std::size_t count, std::size_t keys, Key&
 void RadixSort(std::vector<std::uint64_t>& keys, int low, int high, const ParallelFor& parallelFor)
 {
   const std::size_t blocks =
-    std::max<std::size_t>(1, std::min<std::size_t>(64, keys.size() / 65536));
+    std::max<std::size_t>(1, std::min<std::size_t>(64, keys.size() / KeyBlock));
   const std::size_t perBlock = (keys.size() + blocks - 1) / blocks;
   std::vector<std::uint64_t> scratch(keys.size());
   std::vector<std::size_t> offsets;
