@@ -2,22 +2,14 @@
 
 #include "DGMFArrayAllocation.h"
 #include "DGMFFaceCells.h"
-
-#include "DGMFMeshConversion.h"
 #include "DGMFOutputArrays.h"
 
-#include "dgmf/CellFaces.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkCellArray.h"
-#include "vtkCellType.h"
-#include "vtkCellTypes.h"
-#include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 namespace dgmf_vtk
