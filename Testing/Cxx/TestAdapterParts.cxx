@@ -17,9 +17,12 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
@@ -336,6 +339,119 @@ TEST(CompositeMesh, BlocksMergeAtSharedNodesAndScatterBack)
   EXPECT_EQ(second->GetPoint(5)[0], 4.0);
   EXPECT_EQ(second->GetPoint(5)[1], 11.0);
   EXPECT_TRUE(second->GetPointData()->GetArray("BoundaryMarker")); // the block's own arrays
+}
+
+TEST(CompositeMesh, EveryKindOfBlockKeepsItsCellsOnTheMergedNodes)
+{
+  // A grid with 64-bit cell storage, the same shifted with 32-bit storage and a float
+  // displacement, a polydata patch, and a grid with a polyhedron: each block's cells must come
+  // out in order, of the same types, on merged nodes at the same places.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, TwoSquares(0.0));
+  auto narrow = TwoSquares(2.0);
+  vtkNew<vtkCellArray> cells32;
+  cells32->Use32BitStorage();
+  for (vtkIdType c = 0; c < narrow->GetNumberOfCells(); ++c)
+  {
+    vtkNew<vtkIdList> ids;
+    narrow->GetCellPoints(c, ids);
+    cells32->InsertNextCell(ids);
+  }
+  ASSERT_FALSE(cells32->IsStorage64Bit());
+  narrow->SetCells(VTK_QUAD, cells32);
+  vtkNew<vtkFloatArray> displacement;
+  displacement->SetName("Displacement");
+  displacement->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < narrow->GetNumberOfPoints(); ++i)
+  {
+    displacement->InsertNextTuple3(0.5f * static_cast<float>(i), 0.0f, 0.25f);
+  }
+  narrow->GetPointData()->AddArray(displacement);
+  blocks->SetBlock(1, narrow);
+  vtkNew<vtkPolyData> patch; // the line y = 0 of the first block, as two segments
+  vtkNew<vtkPoints> patchPoints;
+  for (int i = 0; i < 3; ++i)
+  {
+    patchPoints->InsertNextPoint(i, 0.0, 0.0);
+  }
+  patch->SetPoints(patchPoints);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType segments[2][2] = { { 0, 1 }, { 1, 2 } };
+  lines->InsertNextCell(2, segments[0]);
+  lines->InsertNextCell(2, segments[1]);
+  patch->SetLines(lines);
+  blocks->SetBlock(2, patch);
+  auto cube = vtkSmartPointer<vtkUnstructuredGrid>::New(); // a unit cube above x in [0, 1]
+  vtkNew<vtkPoints> cubePoints;
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int i = 0; i < 2; ++i)
+      {
+        cubePoints->InsertNextPoint(i, j, k);
+      }
+    }
+  }
+  cube->SetPoints(cubePoints);
+  const vtkIdType corners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  const vtkIdType faces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
+    3, 1, 4, 4, 5, 7, 6 };
+  cube->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
+  blocks->SetBlock(3, cube);
+
+  const dgmf_vtk::CompositeMesh composite(blocks, "Displacement", "BoundaryMarker");
+  vtkUnstructuredGrid* merged = composite.GetMergedMesh();
+  // 6 + 6 - 2 shared + 0 new on the patch + 8 - 4 shared with the first block.
+  EXPECT_EQ(merged->GetNumberOfPoints(), 14);
+  ASSERT_EQ(merged->GetNumberOfCells(), 2 + 2 + 2 + 1);
+  vtkIdType first = 0;
+  for (unsigned int b = 0; b < blocks->GetNumberOfBlocks(); ++b)
+  {
+    auto* block = vtkDataSet::SafeDownCast(blocks->GetBlock(b));
+    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
+    {
+      vtkNew<vtkIdList> own, ids;
+      block->GetCellPoints(c, own);
+      merged->GetCellPoints(first + c, ids);
+      EXPECT_EQ(merged->GetCellType(first + c), block->GetCellType(c)) << "block " << b;
+      ASSERT_EQ(ids->GetNumberOfIds(), own->GetNumberOfIds()) << "block " << b << " cell " << c;
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        double p[3], q[3];
+        block->GetPoint(own->GetId(k), p);
+        merged->GetPoint(ids->GetId(k), q);
+        EXPECT_EQ(p[0], q[0]);
+        EXPECT_EQ(p[1], q[1]);
+        EXPECT_EQ(p[2], q[2]);
+      }
+    }
+    first += block->GetNumberOfCells();
+  }
+  vtkNew<vtkIdList> stream;
+  merged->GetFaceStream(6, stream);
+  EXPECT_EQ(stream->GetId(0), 6); // the polyhedron kept its 6 faces
+  // The float displacement as doubles at its block's nodes; zeros where no block has one.
+  vtkDataArray* merges = merged->GetPointData()->GetArray("Displacement");
+  ASSERT_TRUE(merges);
+  EXPECT_TRUE(vtkDoubleArray::SafeDownCast(merges));
+  double shared[3], own[3];
+  merges->GetTuple(2, shared); // (2, 0, 0): the first block's, then the second's node 0
+  EXPECT_EQ(shared[0], 0.0);
+  EXPECT_EQ(shared[2], 0.25);
+  bool found = false;
+  for (vtkIdType i = 0; i < merged->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    merged->GetPoint(i, p);
+    if (p[0] == 4.0 && p[1] == 1.0)
+    {
+      merges->GetTuple(i, own);
+      EXPECT_EQ(own[0], 2.5); // node 5 of the second block
+      found = true;
+    }
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChanges)
