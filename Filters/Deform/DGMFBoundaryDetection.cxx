@@ -172,6 +172,85 @@ void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vt
 }
 
 /**
+ * The edges of a grid's polygons (triangles, quads, pixels, polygons) as the core's face matching
+ * reads faces: each edge a 2-point face, in VTK's edge order and point order for the cell type
+ * (vtkCell::GetEdge); other cells have none. Point ids through `canonical` when it is not empty.
+ */
+class PolygonEdgeCells : public dgmf::FaceCells
+{
+public:
+  PolygonEdgeCells(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical)
+    : Mesh(mesh)
+    , Canonical(canonical)
+  {
+  }
+  std::size_t GetNumberOfCells() const override
+  {
+    return static_cast<std::size_t>(this->Mesh->GetNumberOfCells());
+  }
+  void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
+  {
+    stream.assign(1, 0);
+    const auto id = static_cast<vtkIdType>(cell);
+    const int type = this->Mesh->GetCellType(id);
+    if (!IsPolygonType(type))
+    {
+      return;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    thread_local vtkNew<vtkIdList> scratch; // called for every cell, on every thread
+    this->Mesh->GetCells()->GetCellAtId(id, npts, pts, scratch);
+    static const int pixelEdges[4][2] = { { 0, 1 }, { 1, 3 }, { 2, 3 }, { 0, 2 } };
+    const auto point = [&](vtkIdType k)
+    {
+      const vtkIdType p = pts[k];
+      return static_cast<std::int64_t>(
+        this->Canonical.empty() ? p : this->Canonical[static_cast<std::size_t>(p)]);
+    };
+    stream[0] = npts;
+    for (vtkIdType e = 0; e < npts; ++e)
+    {
+      const bool pixel = type == VTK_PIXEL && npts == 4;
+      stream.push_back(2);
+      stream.push_back(point(pixel ? pixelEdges[e][0] : e));
+      stream.push_back(point(pixel ? pixelEdges[e][1] : (e + 1) % npts));
+    }
+  }
+
+private:
+  vtkUnstructuredGrid* Mesh;
+  const std::vector<vtkIdType>& Canonical;
+};
+
+/**
+ * The boundary edges of a 2D mesh of polygons by the core's face matching (edges of one polygon),
+ * in the order of their cells and of VTK's edges, as FindBoundaryEdges gives them; ghost cells'
+ * edges left out.
+ */
+void FindBoundaryEdgesByMatching(
+  vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical, BoundaryFacets& facets)
+{
+  const PolygonEdgeCells cells(mesh, canonical);
+  const dgmf::BoundaryFaces edges = dgmf::FindBoundaryFaces(
+    cells, static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  std::vector<std::int64_t> stream;
+  for (std::size_t f = 0; f < edges.Size(); ++f)
+  {
+    if (ghosts && (ghosts->GetValue(edges.Cell[f]) & vtkDataSetAttributes::DUPLICATECELL) != 0)
+    {
+      continue;
+    }
+    cells.GetFaces(static_cast<std::size_t>(edges.Cell[f]), stream);
+    std::int64_t count = 0;
+    const std::int64_t* edge = dgmf::FaceOfStream(stream.data(), edges.Face[f], count);
+    const vtkIdType ids[2] = { edge[0], edge[1] };
+    AddFacet(facets, ids, 2);
+  }
+}
+
+/**
  * The facets sorted by their point ids (lexicographically). vtkGeometryFilter's threads emit the
  * faces in an order that changes from run to run: sorted, the facets (and the sums over them, such
  * as IDW's boundary areas) are the same, bit for bit, with any number of threads. Facets with the
@@ -315,6 +394,15 @@ vtkSmartPointer<vtkUnstructuredGrid> RenumberedCopy(
   return copy;
 }
 
+/// The boundary edges of a 2D `mesh` by counting each edge's cells in a hash map (any 2D cell
+/// type), on its canonical points when `facets` has them.
+BoundaryFacets EdgesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets facets)
+{
+  FindBoundaryEdges(
+    facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
+  return facets;
+}
+
 /// The boundary faces of `mesh` from vtkGeometryFilter, on its canonical points when `facets` has
 /// them, sorted.
 BoundaryFacets FacetsByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets facets)
@@ -332,16 +420,19 @@ BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension, bool
   {
     facets.Canonical = CanonicalPointIds(mesh);
   }
-  if (dimension == 2)
-  {
-    FindBoundaryEdges(
-      facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
-    return facets;
-  }
   const std::array<bool, 256> types = CellTypesPresent(mesh);
   bool has2DCells = false;
   bool polygonsOnly = true;
   Find2DTypes(types, has2DCells, polygonsOnly);
+  if (dimension == 2)
+  {
+    if (polygonsOnly) // quadratic cells' edges have mid-edge nodes: counted the VTK way
+    {
+      FindBoundaryEdgesByMatching(mesh, facets.Canonical, facets);
+      return facets;
+    }
+    return EdgesByCounting(mesh, std::move(facets));
+  }
   if (!VTKFaceCells::CoversAll3DCells(types) || !polygonsOnly)
   {
     return FacetsByGeometryFilter(mesh, std::move(facets));
@@ -350,14 +441,16 @@ BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension, bool
   return SortedFacets(facets);
 }
 
-BoundaryFacets FindBoundaryFacetsByGeometryFilter(vtkUnstructuredGrid* mesh, bool distinctPoints)
+BoundaryFacets FindBoundaryFacetsByGeometryFilter(
+  vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints)
 {
   BoundaryFacets facets;
   if (!distinctPoints)
   {
     facets.Canonical = CanonicalPointIds(mesh);
   }
-  return FacetsByGeometryFilter(mesh, std::move(facets));
+  return dimension == 2 ? EdgesByCounting(mesh, std::move(facets))
+                        : FacetsByGeometryFilter(mesh, std::move(facets));
 }
 
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints)

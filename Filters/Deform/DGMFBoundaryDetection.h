@@ -36,8 +36,9 @@ struct BoundaryFacets
  *   vtkGeometryFilter when the grid has other 3D cells (quadratic, Lagrange: their faces carry
  *   mid-edge nodes) or 2D cells other than polygons. The same facets in the same order whatever
  *   the number of threads.
- * - 2D meshes: the edges used by exactly one 2D cell (end nodes first, then mid-edge nodes of
- *   higher-order cells).
+ * - 2D meshes: the edges used by one 2D cell only, in the order of their cells and of VTK's
+ *   edges (end nodes first, then mid-edge nodes of higher-order cells): by the face matching for
+ *   polygons, by counting each edge's cells in a hash map when there are quadratic cells.
  * Coincident nodes with different ids are the same node here (a partition interface or a ghost
  * layer duplicates them): a face between two cells that share only coincident copies is inside.
  * The faces of ghost cells (the outer side of a ghost layer) are not the boundary.
@@ -48,11 +49,12 @@ BoundaryFacets FindBoundaryFacets(
   vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints = false);
 
 /**
- * The boundary of a 3D mesh as FindBoundaryFacets gives it, always from vtkGeometryFilter (the
- * reference the tests compare the face matching with).
+ * The boundary of a mesh as FindBoundaryFacets gives it, always by VTK's own means: 3D faces from
+ * vtkGeometryFilter, 2D edges by counting each edge's cells in a hash map (the paths for cells the
+ * face matching does not read, and the reference the tests compare it with).
  */
 BoundaryFacets FindBoundaryFacetsByGeometryFilter(
-  vtkUnstructuredGrid* mesh, bool distinctPoints = false);
+  vtkUnstructuredGrid* mesh, int dimension = 3, bool distinctPoints = false);
 
 /// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);

@@ -777,3 +777,75 @@ TEST(BoundaryDetection, QuadraticCellsStillGetTheirMidEdgeNodesOnTheBoundary)
   const auto flags = dgmf_vtk::FlagBoundaryNodes(facets, 20);
   EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 20);
 }
+
+TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
+{
+  // A 6 x 4 grid of unit squares in z = 0 cut into quads, triangle pairs, pixels and polygons
+  // (some with a point in the middle of an edge, which makes that edge non-conforming); the
+  // squares of x >= 3 on their own copies of the points of x = 3; the top row ghost cells.
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  const int nx = 6, ny = 4;
+  const auto id = [](int i, int j) { return static_cast<vtkIdType>(i + (nx + 1) * j); };
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      points->InsertNextPoint(i, j, 0.0);
+    }
+  }
+  const vtkIdType copies = points->GetNumberOfPoints();
+  for (int j = 0; j <= ny; ++j)
+  {
+    points->InsertNextPoint(3.0, j, 0.0);
+  }
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  const auto add = [&](int type, std::vector<vtkIdType> ids, bool ghost)
+  {
+    mesh->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
+    ghosts->InsertNextValue(ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+  };
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const auto corner = [&](int di, int dj)
+      { return i >= 3 && i + di == 3 ? copies + j + dj : id(i + di, j + dj); };
+      const vtkIdType a = corner(0, 0), b = corner(1, 0), c = corner(1, 1), d = corner(0, 1);
+      const bool ghost = j == ny - 1;
+      switch ((i + 2 * j) % 4)
+      {
+        case 0:
+          add(VTK_QUAD, { a, b, c, d }, ghost);
+          break;
+        case 1:
+          add(VTK_TRIANGLE, { a, b, c }, ghost);
+          add(VTK_TRIANGLE, { a, c, d }, ghost);
+          break;
+        case 2:
+          add(VTK_PIXEL, { a, b, d, c }, ghost);
+          break;
+        default:
+        {
+          const vtkIdType middle = points->InsertNextPoint(i + 0.5, j, 0.0);
+          add(VTK_POLYGON, { a, middle, b, c, d }, ghost);
+          break;
+        }
+      }
+    }
+  }
+  mesh->SetPoints(points);
+  mesh->GetCellData()->AddArray(ghosts);
+  dgmf_vtk::BoundaryFacets matched, counted;
+  dgmf_vtk::RunWithThreads(2,
+    [&]()
+    {
+      matched = dgmf_vtk::FindBoundaryFacets(mesh, 2);
+      counted = dgmf_vtk::FindBoundaryFacetsByGeometryFilter(mesh, 2);
+    });
+  EXPECT_GT(counted.Size(), 2u * (nx + ny)); // the outline and the non-conforming edges
+  EXPECT_FALSE(matched.Canonical.empty());   // the copies of x = 3 were found
+  EXPECT_EQ(matched.Ids, counted.Ids);       // the same edges, in the same order
+  EXPECT_EQ(matched.Offsets, counted.Offsets);
+}
