@@ -41,6 +41,12 @@ void AddFacet(BoundaryFacets& facets, const vtkIdType* ids, vtkIdType count)
   facets.Offsets.push_back(static_cast<vtkIdType>(facets.Ids.size()));
 }
 
+/// Whether `cell` is a ghost cell (vtkGhostType DUPLICATECELL) of a mesh with `ghosts` (or none).
+bool IsGhostCell(vtkUnsignedCharArray* ghosts, vtkIdType cell)
+{
+  return ghosts && (ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0;
+}
+
 /// The boundary faces from vtkGeometryFilter: any cell type, several times slower than matching.
 void FindBoundaryFacesByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
@@ -81,8 +87,7 @@ void FindBoundaryFacesByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets
       // Cell data of a polydata is indexed over verts, lines, then polys.
       const vtkIdType index =
         boundary->GetNumberOfVerts() + boundary->GetNumberOfLines() + faces->GetCurrentCellId();
-      const auto cell = static_cast<vtkIdType>(cellIds->GetTuple1(index));
-      if ((ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0)
+      if (IsGhostCell(ghosts, static_cast<vtkIdType>(cellIds->GetTuple1(index))))
       {
         continue;
       }
@@ -119,24 +124,20 @@ void Find2DTypes(const std::array<bool, 256>& types, bool& any, bool& polygonsOn
 }
 
 /**
- * The boundary faces by the core's face matching (the faces of one 3D cell), plus the grid's 2D
- * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
- * `canonical` ones when given.
+ * Adds the faces of `cells` that no other cell has (dgmf::FindBoundaryFaces, on the vtkSMPTools
+ * threads), in the order of their cells and faces, except those of `mesh`'s ghost cells.
  */
-void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
-  bool has2DCells, BoundaryFacets& facets)
+void AddFacesOfOneCell(
+  const dgmf::FaceCells& cells, vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
-  const VTKFaceCells cells(mesh, &canonical);
   const dgmf::BoundaryFaces faces = dgmf::FindBoundaryFaces(
     cells, static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
   vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
-  const auto isGhost = [ghosts](vtkIdType cell)
-  { return ghosts && (ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0; };
   std::vector<std::int64_t> stream;
   std::vector<vtkIdType> ids;
   for (std::size_t f = 0; f < faces.Size(); ++f)
   {
-    if (isGhost(faces.Cell[f]))
+    if (IsGhostCell(ghosts, faces.Cell[f]))
     {
       continue;
     }
@@ -146,12 +147,25 @@ void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vt
     ids.assign(face, face + count);
     AddFacet(facets, ids.data(), static_cast<vtkIdType>(count));
   }
+}
+
+/**
+ * The boundary faces by the core's face matching (the faces of one 3D cell), plus the grid's 2D
+ * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
+ * `canonical` ones when given.
+ */
+void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
+  bool has2DCells, BoundaryFacets& facets)
+{
+  AddFacesOfOneCell(VTKFaceCells(mesh, &canonical), mesh, facets);
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  std::vector<vtkIdType> ids;
   // 2D cells are boundary facets as they are (vtkGeometryFilter passes them through).
   const vtkIdType numberOfCells = has2DCells ? mesh->GetNumberOfCells() : 0;
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     const int type = mesh->GetCellType(c);
-    if (!IsPolygonType(type) || isGhost(c))
+    if (!IsPolygonType(type) || IsGhostCell(ghosts, c))
     {
       continue;
     }
@@ -231,23 +245,7 @@ private:
 void FindBoundaryEdgesByMatching(
   vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical, BoundaryFacets& facets)
 {
-  const PolygonEdgeCells cells(mesh, canonical);
-  const dgmf::BoundaryFaces edges = dgmf::FindBoundaryFaces(
-    cells, static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
-  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
-  std::vector<std::int64_t> stream;
-  for (std::size_t f = 0; f < edges.Size(); ++f)
-  {
-    if (ghosts && (ghosts->GetValue(edges.Cell[f]) & vtkDataSetAttributes::DUPLICATECELL) != 0)
-    {
-      continue;
-    }
-    cells.GetFaces(static_cast<std::size_t>(edges.Cell[f]), stream);
-    std::int64_t count = 0;
-    const std::int64_t* edge = dgmf::FaceOfStream(stream.data(), edges.Face[f], count);
-    const vtkIdType ids[2] = { edge[0], edge[1] };
-    AddFacet(facets, ids, 2);
-  }
+  AddFacesOfOneCell(PolygonEdgeCells(mesh, canonical), mesh, facets);
 }
 
 /**
@@ -308,7 +306,7 @@ void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
       {
         continue;
       }
-      if (pass == 1 && ghosts && (ghosts->GetValue(c) & vtkDataSetAttributes::DUPLICATECELL) != 0)
+      if (pass == 1 && IsGhostCell(ghosts, c))
       {
         continue;
       }

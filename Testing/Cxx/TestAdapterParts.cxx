@@ -42,6 +42,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -589,6 +590,29 @@ TEST(BoundaryDetection, SameFacesAndAreasWithOneAndTwoThreads)
 
 namespace
 {
+/// Cells added to a grid with a ghost flag each; Finish() gives the grid its vtkGhostType array.
+struct GhostFlaggedCells
+{
+  vtkUnstructuredGrid* Grid;
+  vtkNew<vtkUnsignedCharArray> Ghosts;
+
+  /// Flags the cell just inserted (a ghost: DUPLICATECELL).
+  void Flag(bool ghost)
+  {
+    this->Ghosts->InsertNextValue(ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+  }
+  void Add(int type, std::vector<vtkIdType> ids, bool ghost)
+  {
+    this->Grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
+    this->Flag(ghost);
+  }
+  void Finish()
+  {
+    this->Ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    this->Grid->GetCellData()->AddArray(this->Ghosts);
+  }
+};
+
 /**
  * A 4 x 4 x 4 block of unit cubes cut into every kind of 3D cell the face matching reads:
  * hexahedra, voxels, two wedges, five tetrahedra, six pyramids about the cube's centre, and
@@ -623,13 +647,9 @@ vtkSmartPointer<vtkUnstructuredGrid> EveryCellKind()
     }
   }
   grid->SetPoints(points);
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  GhostFlaggedCells cells{ grid };
   const auto add = [&](int type, std::vector<vtkIdType> ids, bool ghost)
-  {
-    grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
-    ghosts->InsertNextValue(ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
-  };
+  { cells.Add(type, std::move(ids), ghost); };
   for (int k = 0; k < n; ++k)
   {
     for (int j = 0; j < n; ++j)
@@ -695,7 +715,7 @@ vtkSmartPointer<vtkUnstructuredGrid> EveryCellKind()
               }
             }
             grid->InsertNextCell(VTK_POLYHEDRON, 8, h, 6, stream.data() + 1);
-            ghosts->InsertNextValue(ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+            cells.Flag(ghost);
             break;
           }
         }
@@ -705,7 +725,7 @@ vtkSmartPointer<vtkUnstructuredGrid> EveryCellKind()
   add(VTK_QUAD, { id(0, 0, 0), id(0, 1, 0), id(0, 1, 1), id(0, 0, 1) }, false);
   add(VTK_QUAD, { id(0, 1, 0), id(0, 2, 0), id(0, 2, 1), id(0, 1, 1) }, false);
   add(VTK_PIXEL, { id(0, 2, 0), id(0, 3, 0), id(0, 2, 1), id(0, 3, 1) }, false);
-  grid->GetCellData()->AddArray(ghosts);
+  cells.Finish();
   grid->SetPoints(points); // with the pyramids' centres
   return grid;
 }
@@ -799,13 +819,9 @@ TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
   {
     points->InsertNextPoint(3.0, j, 0.0);
   }
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  GhostFlaggedCells cells{ mesh };
   const auto add = [&](int type, std::vector<vtkIdType> ids, bool ghost)
-  {
-    mesh->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
-    ghosts->InsertNextValue(ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
-  };
+  { cells.Add(type, std::move(ids), ghost); };
   for (int j = 0; j < ny; ++j)
   {
     for (int i = 0; i < nx; ++i)
@@ -836,7 +852,7 @@ TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
     }
   }
   mesh->SetPoints(points);
-  mesh->GetCellData()->AddArray(ghosts);
+  cells.Finish();
   dgmf_vtk::BoundaryFacets matched, counted;
   dgmf_vtk::RunWithThreads(2,
     [&]()

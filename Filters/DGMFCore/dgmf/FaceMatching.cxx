@@ -102,6 +102,15 @@ struct MatchSink
   bool KeepPairs = true; // false: only the unpaired faces are wanted
   std::vector<std::tuple<std::int64_t, std::int64_t, std::int32_t>> Pairs; // owner, other, face
   std::vector<std::pair<std::int64_t, std::int32_t>> Single;               // cell, face
+
+  template <typename Record>
+  void AddPair(const Record& owner, const Record& other)
+  {
+    if (this->KeepPairs)
+    {
+      this->Pairs.emplace_back(owner.Cell, other.Cell, owner.Face);
+    }
+  }
 };
 
 /// Two faces of more than 4 points with the same keys: the same points?
@@ -133,10 +142,7 @@ void PairGroup(const FaceCells& cells, const FaceRecord<Id>* group, std::size_t 
   }
   if (size == 2 && group[0].Cell != group[1].Cell && group[0].Count <= 4)
   {
-    if (sink.KeepPairs)
-    {
-      sink.Pairs.emplace_back(group[0].Cell, group[1].Cell, group[0].Face);
-    }
+    sink.AddPair(group[0], group[1]);
     return;
   }
   paired.assign(size, 0);
@@ -153,10 +159,7 @@ void PairGroup(const FaceCells& cells, const FaceRecord<Id>* group, std::size_t 
           SamePoints(cells, group[a].Cell, group[a].Face, group[b].Cell, group[b].Face)))
       {
         paired[a] = paired[b] = 1;
-        if (sink.KeepPairs)
-        {
-          sink.Pairs.emplace_back(group[a].Cell, group[b].Cell, group[a].Face);
-        }
+        sink.AddPair(group[a], group[b]);
         break;
       }
     }
