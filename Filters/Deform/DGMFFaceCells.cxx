@@ -9,7 +9,6 @@
 #include "vtkCellTypes.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 namespace dgmf_vtk
