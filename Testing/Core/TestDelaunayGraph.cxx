@@ -1,5 +1,6 @@
 // The Delaunay graph (CGAL) and point location: barycentric coordinates, hints, degenerate input.
 #include "SyntheticNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/DelaunayGraph.h"
 #include "dgmf/DelaunayMapping.h"
@@ -7,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -151,4 +154,118 @@ TEST(DelaunayGraph, DegenerateInputIsRejected)
   const double notFinite[] = { 0, 0, 0, 1, 0, 0, NAN, 1, 0 };
   EXPECT_THROW(dgmf::DelaunayGraph(2, notFinite, 3), std::invalid_argument);
   EXPECT_THROW(dgmf::DelaunayGraph(4, collinear, 4), std::invalid_argument);
+}
+
+namespace
+{
+/// Points of a grid on a box's faces (coplanar, cocircular), a sphere's (cospherical) and random
+/// ones inside, with some repeated: every kind of degeneracy the graph meets, in enough points
+/// for many blocks of every loop.
+std::vector<double> DegenerateCloud(int dimension)
+{
+  std::vector<double> xyz;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> inside(-0.9, 0.9);
+  const int grid = dimension == 3 ? 13 : 200;
+  for (int i = 0; i < grid; ++i)
+  {
+    for (int j = 0; j < grid; ++j)
+    {
+      const double u = -1.0 + 2.0 * i / (grid - 1), v = -1.0 + 2.0 * j / (grid - 1);
+      if (dimension == 2)
+      {
+        if (i == 0 || j == 0 || i == grid - 1 || j == grid - 1)
+        {
+          xyz.insert(xyz.end(), { u, v, 0.0 });
+        }
+        continue;
+      }
+      for (const double side : { -1.0, 1.0 })
+      {
+        xyz.insert(xyz.end(), { side, u, v, u, side, v, u, v, side });
+      }
+    }
+  }
+  for (int k = 0; k < 3000; ++k)
+  {
+    const double angle = 0.01 * k, height = -0.5 + k / 3000.0;
+    const double radius = dimension == 3 ? std::sqrt(0.25 - height * height) : 0.5;
+    xyz.insert(xyz.end(),
+      { radius * std::cos(angle), radius * std::sin(angle), dimension == 3 ? height : 0.0 });
+    xyz.insert(
+      xyz.end(), { inside(random), inside(random), dimension == 3 ? inside(random) : 0.0 });
+  }
+  xyz.insert(xyz.end(), xyz.begin() + 30, xyz.begin() + 60); // coincident with earlier points
+  return xyz;
+}
+} // namespace
+
+// The loops of the graph's construction run through the caller's ParallelFor: two threads must
+// give the same graph, bit for bit, as one, and the caller's work must run once beside CGAL.
+TEST(DelaunayGraph, TwoThreadsBuildTheSameGraphAsOne)
+{
+  for (const int dimension : { 2, 3 })
+  {
+    const std::vector<double> xyz = DegenerateCloud(dimension);
+    const std::size_t count = xyz.size() / 3;
+    const dgmf::DelaunayGraph serial(dimension, xyz.data(), count);
+    int calls = 0;
+    const dgmf::DelaunayGraph parallel(
+      dimension, xyz.data(), count, dgmf_test::TwoThreadFor, [&]() { ++calls; });
+    EXPECT_EQ(calls, 1);
+    ASSERT_GT(serial.GetNumberOfElements(), 3u * 4096u) << "too few elements for several blocks";
+    ASSERT_EQ(parallel.GetNumberOfVertices(), serial.GetNumberOfVertices());
+    ASSERT_EQ(parallel.GetNumberOfElements(), serial.GetNumberOfElements());
+    EXPECT_LT(serial.GetNumberOfVertices(), count) << "the coincident points share vertices";
+    EXPECT_EQ(parallel.GetVertexOfPoint(), serial.GetVertexOfPoint());
+    EXPECT_EQ(parallel.GetNumberOfFlatElements(), serial.GetNumberOfFlatElements());
+    EXPECT_GT(serial.GetNumberOfFlatElements(), 0u) << "the cloud has degenerate elements";
+    for (std::size_t v = 0; v < serial.GetNumberOfVertices(); ++v)
+    {
+      ASSERT_EQ(std::memcmp(parallel.GetVertexPosition(static_cast<std::int32_t>(v)),
+                  serial.GetVertexPosition(static_cast<std::int32_t>(v)), 3 * sizeof(double)),
+        0)
+        << "vertex " << v;
+    }
+    for (std::int32_t e = 0; e < static_cast<std::int32_t>(serial.GetNumberOfElements()); ++e)
+    {
+      ASSERT_EQ(std::memcmp(parallel.GetElement(e), serial.GetElement(e),
+                  static_cast<std::size_t>(dimension + 1) * sizeof(std::int32_t)),
+        0)
+        << "element " << e;
+      const dgmf::WalkRecord& a = parallel.GetWalkRecord(e);
+      const dgmf::WalkRecord& b = serial.GetWalkRecord(e);
+      ASSERT_EQ(std::memcmp(a.Corners, b.Corners, sizeof(a.Corners)), 0) << "element " << e;
+      ASSERT_EQ(std::memcmp(a.Neighbors, b.Neighbors, sizeof(a.Neighbors)), 0) << "element " << e;
+    }
+    // Folding the half x > 0 onto x < 0 inverts the elements there: both graphs count the same,
+    // on one thread or two.
+    std::vector<double> fold(3 * serial.GetNumberOfVertices(), 0.0);
+    for (std::size_t v = 0; v < serial.GetNumberOfVertices(); ++v)
+    {
+      const std::size_t point = static_cast<std::size_t>(serial.GetPointOfVertex()[v]);
+      fold[3 * v] = xyz[3 * point] > 0.0 ? -2.0 * xyz[3 * point] : 0.0;
+    }
+    const std::size_t inverted = serial.CountInvertedElements(fold.data());
+    EXPECT_GT(inverted, serial.GetNumberOfElements() / 4);
+    EXPECT_EQ(parallel.CountInvertedElements(fold.data(), dgmf_test::TwoThreadFor), inverted);
+  }
+}
+
+// The caller's work runs even when the graph rejects its input, and its exception (which may
+// explain the graph's) is the one thrown.
+TEST(DelaunayGraph, TheCallersFailureIsThrownInPreferenceToTheGraphs)
+{
+  const double coplanar[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0 };
+  bool ran = false;
+  EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5, dgmf_test::TwoThreadFor, [&]() { ran = true; }),
+    std::invalid_argument);
+  EXPECT_TRUE(ran);
+  EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5, dgmf::SerialFor,
+                 []() { throw std::runtime_error("the caller's check"); }),
+    std::runtime_error);
+  const std::vector<double> cloud = DegenerateCloud(3);
+  EXPECT_THROW(dgmf::DelaunayGraph(3, cloud.data(), cloud.size() / 3, dgmf_test::TwoThreadFor,
+                 []() { throw std::runtime_error("the caller's check"); }),
+    std::runtime_error);
 }

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,9 @@ namespace dgmf
 namespace
 {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+/// Elements per block of the loops over elements (fixed, so no result depends on the threads).
+constexpr std::size_t ElementBlock = 4096;
 
 using Vb2 = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, Kernel>;
 using Fb2 = CGAL::Triangulation_face_base_with_info_2<std::int32_t, Kernel>;
@@ -127,8 +131,8 @@ using PairSortTraits = std::conditional_t<std::is_same<Point, Kernel::Point_2>::
  * location time within 10 %. The vertices' info() must be their numbers 0 .. vertices - 1.
  */
 template <typename Handle, typename Triangulation, typename ElementIterator>
-std::vector<Handle> HilbertOrderedElements(
-  Triangulation& t, ElementIterator begin, ElementIterator end, int corners)
+std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator begin,
+  ElementIterator end, int corners, const ParallelFor& parallelFor)
 {
   using Vertex = typename Triangulation::Vertex_handle;
   using Point = typename Triangulation::Point;
@@ -145,55 +149,109 @@ std::vector<Handle> HilbertOrderedElements(
   {
     rank[static_cast<std::size_t>(vertices[r].second->info())] = r;
   }
-  std::vector<std::size_t> key;
-  std::vector<std::size_t> start(vertices.size() + 1, 0);
+  std::vector<Handle> elements;
   for (ElementIterator e = begin; e != end; ++e)
   {
-    std::size_t first = rank[static_cast<std::size_t>(e->vertex(0)->info())];
-    for (int k = 1; k < corners; ++k)
+    elements.push_back(e);
+  }
+  std::vector<std::size_t> key(elements.size());
+  ForEachIndex(parallelFor, elements.size(), ElementBlock,
+    [&](std::size_t e)
     {
-      first = std::min(first, rank[static_cast<std::size_t>(e->vertex(k)->info())]);
-    }
-    key.push_back(first);
+      std::size_t first = rank[static_cast<std::size_t>(elements[e]->vertex(0)->info())];
+      for (int k = 1; k < corners; ++k)
+      {
+        first = std::min(first, rank[static_cast<std::size_t>(elements[e]->vertex(k)->info())]);
+      }
+      key[e] = first;
+    });
+  std::vector<std::size_t> start(vertices.size() + 1, 0);
+  for (std::size_t first : key)
+  {
     ++start[first + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Handle> ordered(key.size());
-  std::size_t k = 0;
-  for (ElementIterator e = begin; e != end; ++e, ++k)
+  std::vector<Handle> ordered(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e)
   {
-    ordered[start[key[k]]++] = e;
+    ordered[start[key[e]]++] = elements[e];
   }
   return ordered;
 }
 } // namespace
 
 DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count)
+  : DelaunayGraph(dimension, xyz, count, SerialFor, {})
+{
+}
+
+DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count,
+  const ParallelFor& parallelFor, const std::function<void()>& duringInsertion)
   : Dimension(dimension)
 {
-  if (dimension != 2 && dimension != 3)
-  {
-    throw std::invalid_argument("DelaunayGraph: dimension must be 2 or 3");
-  }
-  if (count > static_cast<std::size_t>(INT32_MAX))
-  {
-    throw std::invalid_argument("DelaunayGraph: too many boundary points");
-  }
-  CheckFinite(xyz, count, dimension);
-  if (!SpansDimension(dimension, xyz, count))
-  {
-    throw std::invalid_argument(dimension == 2
-        ? "DelaunayGraph: the 2D boundary points are all collinear (or fewer than 3 distinct "
-          "points): no triangle can be built"
-        : "DelaunayGraph: the 3D boundary points are all coplanar (or fewer than 4 distinct "
-          "points): no tetrahedron can be built");
-  }
-  const int n = dimension + 1;
   // The graph is built on the points moved by GraphPerturbation of their nearest-neighbour
   // distance: see GraphPerturbation.h.
-  const std::vector<double> moved = PerturbPoints(dimension, xyz, count, GraphPerturbation);
+  std::vector<double> moved;
+  std::exception_ptr failure[2];
+  try
+  {
+    if (dimension != 2 && dimension != 3)
+    {
+      throw std::invalid_argument("DelaunayGraph: dimension must be 2 or 3");
+    }
+    if (count > static_cast<std::size_t>(INT32_MAX))
+    {
+      throw std::invalid_argument("DelaunayGraph: too many boundary points");
+    }
+    CheckFinite(xyz, count, dimension);
+    if (!SpansDimension(dimension, xyz, count))
+    {
+      throw std::invalid_argument(dimension == 2
+          ? "DelaunayGraph: the 2D boundary points are all collinear (or fewer than 3 distinct "
+            "points): no triangle can be built"
+          : "DelaunayGraph: the 3D boundary points are all coplanar (or fewer than 4 distinct "
+            "points): no tetrahedron can be built");
+    }
+    moved = PerturbPoints(dimension, xyz, count, GraphPerturbation, parallelFor);
+  }
+  catch (...)
+  {
+    failure[0] = std::current_exception();
+  }
+  // CGAL's insertion is sequential (its parallel insertion, with TBB, was no faster on 2 threads:
+  // speed.md): the caller's work runs beside it.
+  ForEachBlock(parallelFor, 2,
+    [&](std::size_t task)
+    {
+      try
+      {
+        if (task == 0 && !failure[0])
+        {
+          this->InsertPoints(moved, count);
+        }
+        else if (task == 1 && duringInsertion)
+        {
+          duringInsertion();
+        }
+      }
+      catch (...)
+      {
+        failure[task] = std::current_exception();
+      }
+    });
+  for (const std::exception_ptr& thrown : { failure[1], failure[0] })
+  {
+    if (thrown)
+    {
+      std::rethrow_exception(thrown);
+    }
+  }
+  this->BuildElements(xyz, moved, parallelFor);
+}
 
-  if (dimension == 2)
+void DelaunayGraph::InsertPoints(const std::vector<double>& moved, std::size_t count)
+{
+  if (this->Dimension == 2)
   {
     using Point = Kernel::Point_2;
     std::vector<std::pair<Point, std::int32_t>> points;
@@ -210,95 +268,112 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       throw std::invalid_argument("DelaunayGraph: the 2D boundary points are all collinear "
                                   "(or fewer than 3 distinct points): no triangle can be built");
     }
+    return;
+  }
+  using Point = Kernel::Point_3;
+  std::vector<std::pair<Point, std::int32_t>> points;
+  points.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    points.emplace_back(
+      Point(moved[3 * i], moved[3 * i + 1], moved[3 * i + 2]), static_cast<std::int32_t>(i));
+  }
+  this->Triangulation3 = std::make_unique<Impl3>();
+  Delaunay3& t = this->Triangulation3->Triangulation;
+  t.insert(points.begin(), points.end());
+  if (t.dimension() < 3)
+  {
+    throw std::invalid_argument("DelaunayGraph: the 3D boundary points are all coplanar "
+                                "(or fewer than 4 distinct points): no tetrahedron can be built");
+  }
+}
+
+void DelaunayGraph::BuildElements(
+  const double* xyz, const std::vector<double>& moved, const ParallelFor& parallelFor)
+{
+  const int dimension = this->Dimension;
+  const int n = dimension + 1;
+  const std::size_t count = moved.size() / 3;
+  if (dimension == 2)
+  {
+    Delaunay2& t = this->Triangulation2->Triangulation;
     NumberVertices<Delaunay2, Delaunay2::Vertex_handle>(
       t, count,
       [&](std::size_t i)
       {
         Delaunay2::Locate_type lt;
         int li;
-        Delaunay2::Face_handle f = t.locate(points[i].first, lt, li);
+        Delaunay2::Face_handle f =
+          t.locate(Kernel::Point_2(moved[3 * i], moved[3 * i + 1]), lt, li);
         return f->vertex(li);
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
     faces = HilbertOrderedElements<Delaunay2::Face_handle>(
-      t, t.finite_faces_begin(), t.finite_faces_end(), 3);
-    this->ElementVertices.reserve(n * faces.size());
-    for (std::size_t e = 0; e < faces.size(); ++e)
-    {
-      faces[e]->info() = static_cast<std::int32_t>(e);
-      for (int k = 0; k < 3; ++k)
+      t, t.finite_faces_begin(), t.finite_faces_end(), 3, parallelFor);
+    this->ElementVertices.resize(n * faces.size());
+    ForEachIndex(parallelFor, faces.size(), ElementBlock,
+      [&](std::size_t e)
       {
-        this->ElementVertices.push_back(faces[e]->vertex(k)->info());
-      }
-    }
+        faces[e]->info() = static_cast<std::int32_t>(e);
+        for (int k = 0; k < 3; ++k)
+        {
+          this->ElementVertices[3 * e + k] = faces[e]->vertex(k)->info();
+        }
+      });
     this->Records.resize(faces.size());
-    for (std::size_t e = 0; e < faces.size(); ++e)
-    {
-      for (int k = 0; k < 3; ++k)
+    ForEachIndex(parallelFor, faces.size(), ElementBlock,
+      [&](std::size_t e)
       {
-        const Delaunay2::Face_handle g = faces[e]->neighbor(k);
-        this->Records[e].Neighbors[k] = t.is_infinite(g) ? -1 : g->info();
-      }
-      this->Records[e].Neighbors[3] = -1;
-    }
+        for (int k = 0; k < 3; ++k)
+        {
+          const Delaunay2::Face_handle g = faces[e]->neighbor(k);
+          this->Records[e].Neighbors[k] = t.is_infinite(g) ? -1 : g->info();
+        }
+        this->Records[e].Neighbors[3] = -1;
+      });
   }
   else
   {
-    using Point = Kernel::Point_3;
-    std::vector<std::pair<Point, std::int32_t>> points;
-    points.reserve(count);
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      points.emplace_back(
-        Point(moved[3 * i], moved[3 * i + 1], moved[3 * i + 2]), static_cast<std::int32_t>(i));
-    }
-    this->Triangulation3 = std::make_unique<Impl3>();
     Delaunay3& t = this->Triangulation3->Triangulation;
-    t.insert(points.begin(), points.end());
-    if (t.dimension() < 3)
-    {
-      throw std::invalid_argument("DelaunayGraph: the 3D boundary points are all coplanar "
-                                  "(or fewer than 4 distinct points): no tetrahedron can be built");
-    }
     NumberVertices<Delaunay3, Delaunay3::Vertex_handle>(
       t, count,
       [&](std::size_t i)
       {
         Delaunay3::Locate_type lt;
         int li, lj;
-        Delaunay3::Cell_handle c = t.locate(points[i].first, lt, li, lj);
+        Delaunay3::Cell_handle c =
+          t.locate(Kernel::Point_3(moved[3 * i], moved[3 * i + 1], moved[3 * i + 2]), lt, li, lj);
         return c->vertex(li);
       },
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
     cells = HilbertOrderedElements<Delaunay3::Cell_handle>(
-      t, t.finite_cells_begin(), t.finite_cells_end(), 4);
-    this->ElementVertices.reserve(n * cells.size());
-    for (std::size_t e = 0; e < cells.size(); ++e)
-    {
-      cells[e]->info() = static_cast<std::int32_t>(e);
-      for (int k = 0; k < 4; ++k)
-      {
-        this->ElementVertices.push_back(cells[e]->vertex(k)->info());
-      }
-    }
-    // Infinite cells get -1, so a walk ending outside the hull is recognised.
+      t, t.finite_cells_begin(), t.finite_cells_end(), 4, parallelFor);
+    // Infinite cells keep -1, so a walk ending outside the hull is recognised.
     for (auto c = t.all_cells_begin(); c != t.all_cells_end(); ++c)
     {
-      if (t.is_infinite(c))
-      {
-        c->info() = -1;
-      }
+      c->info() = -1;
     }
+    this->ElementVertices.resize(n * cells.size());
+    ForEachIndex(parallelFor, cells.size(), ElementBlock,
+      [&](std::size_t e)
+      {
+        cells[e]->info() = static_cast<std::int32_t>(e);
+        for (int k = 0; k < 4; ++k)
+        {
+          this->ElementVertices[4 * e + k] = cells[e]->vertex(k)->info();
+        }
+      });
     this->Records.resize(cells.size());
-    for (std::size_t e = 0; e < cells.size(); ++e)
-    {
-      for (int k = 0; k < 4; ++k)
+    ForEachIndex(parallelFor, cells.size(), ElementBlock,
+      [&](std::size_t e)
       {
-        this->Records[e].Neighbors[k] = cells[e]->neighbor(k)->info();
-      }
-    }
+        for (int k = 0; k < 4; ++k)
+        {
+          this->Records[e].Neighbors[k] = cells[e]->neighbor(k)->info();
+        }
+      });
   }
 
   this->VertexPositions.resize(3 * this->PointOfVertex.size());
@@ -314,23 +389,23 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
   }
   // Each element's corner coordinates, stored with the element: a walk step reads one record
   // instead of chasing the vertex indices.
-  const std::size_t elements = this->GetNumberOfElements();
-  for (std::size_t e = 0; e < elements; ++e)
-  {
-    const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
-    WalkRecord& record = this->Records[e];
-    for (int k = 0; k < 4; ++k)
+  ForEachIndex(parallelFor, this->GetNumberOfElements(), ElementBlock,
+    [&](std::size_t e)
     {
-      for (int c = 0; c < 3; ++c)
+      const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
+      WalkRecord& record = this->Records[e];
+      for (int k = 0; k < 4; ++k)
       {
-        record.Corners[k][c] = k < n ? this->GetVertexPosition(v[k])[c] : 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          record.Corners[k][c] = k < n ? this->GetVertexPosition(v[k])[c] : 0.0;
+        }
       }
-    }
-  }
+    });
   this->BuildSeedGrid();
   // Elements that are flat in the original coordinates: artefacts of coplanar or cospherical
   // boundary points, given a tiny volume by the perturbation.
-  this->FlatElements = this->CountInvertedElements(nullptr);
+  this->FlatElements = this->CountInvertedElements(nullptr, parallelFor);
 }
 
 DelaunayGraph::~DelaunayGraph() = default;
@@ -481,47 +556,55 @@ DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int
   return result;
 }
 
-std::size_t DelaunayGraph::CountInvertedElements(const double* displacements) const
+std::size_t DelaunayGraph::CountInvertedElements(
+  const double* displacements, const ParallelFor& parallelFor) const
 {
-  std::size_t inverted = 0;
   const std::size_t elements = this->GetNumberOfElements();
   const int n = this->Dimension + 1;
-  for (std::size_t e = 0; e < elements; ++e)
-  {
-    const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
-    double before[4][3], after[4][3];
-    for (int k = 0; k < n; ++k)
+  const std::size_t blocks = (elements + ElementBlock - 1) / ElementBlock;
+  std::vector<std::size_t> invertedInBlock(blocks, 0);
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
     {
-      const double* x = this->OriginalPositions.data() + 3 * static_cast<std::size_t>(v[k]);
-      const double* d =
-        displacements ? displacements + 3 * static_cast<std::size_t>(v[k]) : nullptr;
-      for (int c = 0; c < 3; ++c)
+      const std::size_t end = std::min(elements, (block + 1) * ElementBlock);
+      for (std::size_t e = block * ElementBlock; e < end; ++e)
       {
-        before[k][c] = x[c];
-        after[k][c] = d ? x[c] + d[c] : x[c];
+        const std::int32_t* v = this->GetElement(static_cast<std::int32_t>(e));
+        double before[4][3], after[4][3];
+        for (int k = 0; k < n; ++k)
+        {
+          const double* x = this->OriginalPositions.data() + 3 * static_cast<std::size_t>(v[k]);
+          const double* d =
+            displacements ? displacements + 3 * static_cast<std::size_t>(v[k]) : nullptr;
+          for (int c = 0; c < 3; ++c)
+          {
+            before[k][c] = x[c];
+            after[k][c] = d ? x[c] + d[c] : x[c];
+          }
+        }
+        auto orientation = [this](const double(*q)[3])
+        {
+          if (this->Dimension == 2)
+          {
+            return CGAL::orientation(Kernel::Point_2(q[0][0], q[0][1]),
+              Kernel::Point_2(q[1][0], q[1][1]), Kernel::Point_2(q[2][0], q[2][1]));
+          }
+          return CGAL::orientation(Kernel::Point_3(q[0][0], q[0][1], q[0][2]),
+            Kernel::Point_3(q[1][0], q[1][1], q[1][2]), Kernel::Point_3(q[2][0], q[2][1], q[2][2]),
+            Kernel::Point_3(q[3][0], q[3][1], q[3][2]));
+        };
+        if (!displacements)
+        {
+          // counting flat elements
+          invertedInBlock[block] += orientation(before) != CGAL::POSITIVE ? 1 : 0;
+        }
+        else if (orientation(before) == CGAL::POSITIVE && orientation(after) != CGAL::POSITIVE)
+        {
+          ++invertedInBlock[block];
+        }
       }
-    }
-    auto orientation = [this](const double(*q)[3])
-    {
-      if (this->Dimension == 2)
-      {
-        return CGAL::orientation(Kernel::Point_2(q[0][0], q[0][1]),
-          Kernel::Point_2(q[1][0], q[1][1]), Kernel::Point_2(q[2][0], q[2][1]));
-      }
-      return CGAL::orientation(Kernel::Point_3(q[0][0], q[0][1], q[0][2]),
-        Kernel::Point_3(q[1][0], q[1][1], q[1][2]), Kernel::Point_3(q[2][0], q[2][1], q[2][2]),
-        Kernel::Point_3(q[3][0], q[3][1], q[3][2]));
-    };
-    if (!displacements)
-    {
-      inverted += orientation(before) != CGAL::POSITIVE ? 1 : 0; // counting flat elements
-    }
-    else if (orientation(before) == CGAL::POSITIVE && orientation(after) != CGAL::POSITIVE)
-    {
-      ++inverted;
-    }
-  }
-  return inverted;
+    });
+  return std::accumulate(invertedInBlock.begin(), invertedInBlock.end(), std::size_t(0));
 }
 
 std::size_t DelaunayGraph::GetMemorySize() const

@@ -5,12 +5,14 @@
 #ifndef dgmf_DelaunayGraph_h
 #define dgmf_DelaunayGraph_h
 
+#include "dgmf/ParallelFor.h"
 #include "dgmf/Simd.h"
 #include "dgmf/WalkRecord.h"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -51,10 +53,22 @@ public:
   };
 
   /**
-   * Builds the graph of `count` points, `xyz` holding 3 coordinates per point.
+   * Builds the graph of `count` points, `xyz` holding 3 coordinates per point, on the calling
+   * thread.
    * @param dimension 2 or 3
    */
   DelaunayGraph(int dimension, const double* xyz, std::size_t count);
+
+  /**
+   * Builds the same graph (the same bits), its loops (the perturbation's nearest-neighbour
+   * queries, the elements' order, records and flat-element count) run through `parallelFor`;
+   * `duringInsertion`, when given, runs in a second task while CGAL inserts the points (which it
+   * does on one thread), or after it with one thread. An exception of `duringInsertion` is thrown
+   * in preference to the graph's own, which the caller's work may explain (its own checks of the
+   * input). `duringInsertion` runs even when the graph's input is rejected.
+   */
+  DelaunayGraph(int dimension, const double* xyz, std::size_t count, const ParallelFor& parallelFor,
+    const std::function<void()>& duringInsertion);
   ~DelaunayGraph();
   DelaunayGraph(const DelaunayGraph&) = delete;
   DelaunayGraph& operator=(const DelaunayGraph&) = delete;
@@ -94,9 +108,11 @@ public:
   /**
    * Number of elements, positively oriented in the original coordinates, whose orientation is not
    * positive when every vertex is displaced by `vertexDisplacements` (3 doubles per vertex): the
-   * graph inversions that make DGM fail. Exact predicates.
+   * graph inversions that make DGM fail. Exact predicates; the elements are visited through
+   * `parallelFor`.
    */
-  std::size_t CountInvertedElements(const double* vertexDisplacements) const;
+  std::size_t CountInvertedElements(
+    const double* vertexDisplacements, const ParallelFor& parallelFor = SerialFor) const;
 
   /// Number of elements that are flat in the original (unperturbed) coordinates.
   std::size_t GetNumberOfFlatElements() const { return this->FlatElements; }
@@ -176,6 +192,11 @@ private:
   double SeedInverseSize = 1.0;
   std::int64_t SeedCells[3] = { 1, 1, 1 };
   std::vector<std::int32_t> SeedGrid;
+  /// CGAL's triangulation of the perturbed points (3 coordinates each).
+  void InsertPoints(const std::vector<double>& moved, std::size_t count);
+  /// The vertices' numbers, the elements' order, records and seed grid, and the flat elements.
+  void BuildElements(
+    const double* xyz, const std::vector<double>& moved, const ParallelFor& parallelFor);
   void BuildSeedGrid();
 };
 

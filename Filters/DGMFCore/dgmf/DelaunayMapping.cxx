@@ -50,49 +50,28 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     const double* p = points + 3 * static_cast<std::size_t>(node);
     boundaryXYZ.insert(boundaryXYZ.end(), p, p + 3);
   }
-  // The graph is built on one thread (CGAL's insertion is sequential); meanwhile another prepares
-  // the node arrays, whose first touch costs as much as a pass of the location (page faults),
-  // and runs the caller's `alongside` work. With one thread, one after the other.
+  // CGAL inserts the graph's points on one thread; meanwhile another prepares the node arrays,
+  // whose first touch costs as much as a pass of the location (page faults), and runs the
+  // caller's `alongside` work. With one thread, one after the other. The check of every point
+  // explains a failure of the graph's as well: its exception is thrown in preference.
   const int n = dimension + 1;
-  std::exception_ptr failure[2];
-  ForEachBlock(parallelFor, 2,
-    [&](std::size_t task)
+  this->Graph = std::make_unique<DelaunayGraph>(dimension, boundaryXYZ.data(),
+    this->BoundaryNodes.size(), parallelFor,
+    [&]()
     {
-      try
+      const std::size_t bad = FirstNonFinite(points, 3 * numberOfNodes);
+      if (bad < 3 * numberOfNodes)
       {
-        if (task == 0)
-        {
-          this->Graph = std::make_unique<DelaunayGraph>(
-            dimension, boundaryXYZ.data(), this->BoundaryNodes.size());
-          return;
-        }
-        const std::size_t bad = FirstNonFinite(points, 3 * numberOfNodes);
-        if (bad < 3 * numberOfNodes)
-        {
-          throw std::invalid_argument(
-            "The input mesh has NaN or infinite point coordinates (point " +
-            std::to_string(bad / 3) + ").");
-        }
-        this->NodeElement.assign(numberOfNodes, NotLocated);
-        this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
-        if (alongside)
-        {
-          alongside();
-        }
+        throw std::invalid_argument("The input mesh has NaN or infinite point coordinates (point " +
+          std::to_string(bad / 3) + ").");
       }
-      catch (...)
+      this->NodeElement.assign(numberOfNodes, NotLocated);
+      this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
+      if (alongside)
       {
-        failure[task] = std::current_exception();
+        alongside();
       }
     });
-  // The check of every point (task 1) explains a failure of the graph's (task 0) as well.
-  for (const std::exception_ptr& thrown : { failure[1], failure[0] })
-  {
-    if (thrown)
-    {
-      std::rethrow_exception(thrown);
-    }
-  }
   boundaryXYZ = std::vector<double>();
 
   // Vertex kinds: a vertex shared by coincident nodes is moving if any of them moves.

@@ -48,7 +48,8 @@ double Signed(std::uint64_t h)
 
 /// Distance from each distinct point to its nearest distinct neighbour (CGAL kd-tree).
 template <int Dimension>
-std::vector<double> NearestDistances(const std::vector<std::array<double, 3>>& unique)
+std::vector<double> NearestDistances(
+  const std::vector<std::array<double, 3>>& unique, const ParallelFor& parallelFor)
 {
   using Point = typename std::conditional<Dimension == 2, Kernel::Point_2, Kernel::Point_3>::type;
   using Traits = typename std::conditional<Dimension == 2, CGAL::Search_traits_2<Kernel>,
@@ -68,24 +69,26 @@ std::vector<double> NearestDistances(const std::vector<std::array<double, 3>>& u
     }
   }
   typename Search::Tree tree(points.begin(), points.end());
+  tree.build(); // built before the queries, which then only read it and may run in parallel
   std::vector<double> distance(points.size(), 0.0);
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    Search search(tree, points[i], 2);
-    for (auto it = search.begin(); it != search.end(); ++it)
+  ForEachIndex(parallelFor, points.size(), 1024,
+    [&](std::size_t i)
     {
-      if (it->second > 0.0)
+      Search search(tree, points[i], 2);
+      for (auto it = search.begin(); it != search.end(); ++it)
       {
-        distance[i] = std::sqrt(it->second);
+        if (it->second > 0.0)
+        {
+          distance[i] = std::sqrt(it->second);
+        }
       }
-    }
-  }
+    });
   return distance;
 }
 } // namespace
 
-std::vector<double> PerturbPoints(
-  int dimension, const double* xyz, std::size_t count, double relative)
+std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t count,
+  double relative, const ParallelFor& parallelFor)
 {
   std::vector<double> moved(3 * count);
   if (count == 0)
@@ -112,8 +115,8 @@ std::vector<double> PerturbPoints(
     }
     uniqueOf[i] = unique.size() - 1;
   }
-  const std::vector<double> nearest =
-    dimension == 2 ? NearestDistances<2>(unique) : NearestDistances<3>(unique);
+  const std::vector<double> nearest = dimension == 2 ? NearestDistances<2>(unique, parallelFor)
+                                                     : NearestDistances<3>(unique, parallelFor);
   for (std::size_t i = 0; i < count; ++i)
   {
     const std::size_t u = uniqueOf[i];
