@@ -7,6 +7,7 @@
 #include "dgmf/openfoam/CaseDirectory.h"
 
 #include "DGMFCommandMessages.h"
+#include "DGMFVTUWriter.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellData.h"
@@ -23,7 +24,6 @@
 #include "vtkUnstructuredGridReader.h"
 #include "vtkUnstructuredGridWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
-#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <cstring>
 #include <filesystem>
@@ -228,9 +228,13 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
   }
   else
   {
-    vtkNew<vtkXMLUnstructuredGridWriter> xml;
+    vtkNew<DGMFVTUWriter> xml; // VTK's writer, same bytes, without its serial scans
+    xml->SkipCellTypeScan(written);
     xml->SetFileName(temporary.c_str());
     xml->SetInputData(mesh);
+    // Compressed blocks of 1 MiB instead of VTK's 32 KiB: 0.2 - 0.35 s less on an 8M-node grid
+    // and a file 5 % smaller (speed.md).
+    xml->SetBlockSize(1 << 20);
     // Appended raw with LZ4 by default: 2.2 times faster to write and 4 times faster to read than
     // inline binary (speed.md); ParaView on Debian 12 reads appended files with the expat
     // work-around only (README), inline binary without it.

@@ -64,10 +64,10 @@ bool IsCompression(const std::string& name);
 bool IsMeshFileName(const std::string& path);
 
 /**
- * Writes `mesh` to `path`: an XML unstructured grid (inline binary) for .vtu, a legacy VTK file
- * (binary) for .vtk. String arrays are left out (meshio 7 and older VTK readers cannot read
- * them). The file is written beside `path` under a temporary name and renamed over it, so `path`
- * never holds half a file. False, with the reason printed, when it cannot.
+ * Writes `mesh` to `path`: an XML unstructured grid (`encoding`; DGMFVTUWriter) for .vtu, a legacy
+ * VTK file (binary) for .vtk. String arrays are left out (meshio 7 and older VTK readers cannot
+ * read them). The file is written beside `path` under a temporary name and renamed over it, so
+ * `path` never holds half a file. False, with the reason printed, when it cannot.
  */
 bool WriteMeshFile(
   vtkUnstructuredGrid* mesh, const std::string& path, const VTUEncoding& encoding = VTUEncoding());

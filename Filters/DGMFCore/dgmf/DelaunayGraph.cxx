@@ -212,14 +212,13 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
           : "DelaunayGraph: the 3D boundary points are all coplanar (or fewer than 4 distinct "
             "points): no tetrahedron can be built");
     }
-    moved = PerturbPoints(dimension, xyz, count, GraphPerturbation, parallelFor);
   }
   catch (...)
   {
     failure[0] = std::current_exception();
   }
-  // CGAL's insertion is sequential (its parallel insertion, with TBB, was no faster on 2 threads:
-  // speed.md): the caller's work runs beside it.
+  // The perturbation and CGAL's insertion are sequential (CGAL's parallel insertion, with TBB,
+  // was no faster on 2 threads: speed.md): the caller's work runs beside them.
   ForEachBlock(parallelFor, 2,
     [&](std::size_t task)
     {
@@ -227,6 +226,7 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
       {
         if (task == 0 && !failure[0])
         {
+          moved = PerturbPoints(dimension, xyz, count, GraphPerturbation);
           this->InsertPoints(moved, count);
         }
         else if (task == 1 && duringInsertion)

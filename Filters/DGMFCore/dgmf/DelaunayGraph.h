@@ -60,12 +60,12 @@ public:
   DelaunayGraph(int dimension, const double* xyz, std::size_t count);
 
   /**
-   * Builds the same graph (the same bits), its loops (the perturbation's nearest-neighbour
-   * queries, the elements' order, records and flat-element count) run through `parallelFor`;
-   * `duringInsertion`, when given, runs in a second task while CGAL inserts the points (which it
-   * does on one thread), or after it with one thread. An exception of `duringInsertion` is thrown
-   * in preference to the graph's own, which the caller's work may explain (its own checks of the
-   * input). `duringInsertion` runs even when the graph's input is rejected.
+   * Builds the same graph (the same bits), its loops over the elements (their order, records
+   * and flat-element count) run through `parallelFor`; `duringInsertion`, when given, runs in a
+   * second task while the points are perturbed and CGAL inserts them (on one thread), or after
+   * that with one thread. An exception of `duringInsertion` is thrown in preference to the
+   * graph's own, which the caller's work may explain (its own checks of the input).
+   * `duringInsertion` runs even when the graph's input is rejected.
    */
   DelaunayGraph(int dimension, const double* xyz, std::size_t count, const ParallelFor& parallelFor,
     const std::function<void()>& duringInsertion);

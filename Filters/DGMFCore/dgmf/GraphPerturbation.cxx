@@ -48,8 +48,7 @@ double Signed(std::uint64_t h)
 
 /// Distance from each distinct point to its nearest distinct neighbour (CGAL kd-tree).
 template <int Dimension>
-std::vector<double> NearestDistances(
-  const std::vector<std::array<double, 3>>& unique, const ParallelFor& parallelFor)
+std::vector<double> NearestDistances(const std::vector<std::array<double, 3>>& unique)
 {
   using Point = typename std::conditional<Dimension == 2, Kernel::Point_2, Kernel::Point_3>::type;
   using Traits = typename std::conditional<Dimension == 2, CGAL::Search_traits_2<Kernel>,
@@ -69,26 +68,24 @@ std::vector<double> NearestDistances(
     }
   }
   typename Search::Tree tree(points.begin(), points.end());
-  tree.build(); // built before the queries, which then only read it and may run in parallel
   std::vector<double> distance(points.size(), 0.0);
-  ForEachIndex(parallelFor, points.size(), 1024,
-    [&](std::size_t i)
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    Search search(tree, points[i], 2);
+    for (auto it = search.begin(); it != search.end(); ++it)
     {
-      Search search(tree, points[i], 2);
-      for (auto it = search.begin(); it != search.end(); ++it)
+      if (it->second > 0.0)
       {
-        if (it->second > 0.0)
-        {
-          distance[i] = std::sqrt(it->second);
-        }
+        distance[i] = std::sqrt(it->second);
       }
-    });
+    }
+  }
   return distance;
 }
 } // namespace
 
-std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t count,
-  double relative, const ParallelFor& parallelFor)
+std::vector<double> PerturbPoints(
+  int dimension, const double* xyz, std::size_t count, double relative)
 {
   std::vector<double> moved(3 * count);
   if (count == 0)
@@ -115,8 +112,8 @@ std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t 
     }
     uniqueOf[i] = unique.size() - 1;
   }
-  const std::vector<double> nearest = dimension == 2 ? NearestDistances<2>(unique, parallelFor)
-                                                     : NearestDistances<3>(unique, parallelFor);
+  const std::vector<double> nearest =
+    dimension == 2 ? NearestDistances<2>(unique) : NearestDistances<3>(unique);
   for (std::size_t i = 0; i < count; ++i)
   {
     const std::size_t u = uniqueOf[i];

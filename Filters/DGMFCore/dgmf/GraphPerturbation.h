@@ -13,8 +13,6 @@
 #ifndef dgmf_GraphPerturbation_h
 #define dgmf_GraphPerturbation_h
 
-#include "dgmf/ParallelFor.h"
-
 #include <cstddef>
 #include <vector>
 
@@ -28,11 +26,10 @@ constexpr double GraphPerturbation = 1e-11;
  * Copies of `count` points (3 coordinates each; in 2D z is ignored and set to 0), each moved by at
  * most `relative` times the distance to its nearest distinct neighbour (per coordinate), in a
  * direction that is a hash of its coordinates: deterministic, and coincident points stay
- * coincident. The nearest-neighbour queries run through `parallelFor` (the same result with any
- * number of threads).
+ * coincident.
  */
-std::vector<double> PerturbPoints(int dimension, const double* xyz, std::size_t count,
-  double relative, const ParallelFor& parallelFor = SerialFor);
+std::vector<double> PerturbPoints(
+  int dimension, const double* xyz, std::size_t count, double relative);
 
 /// True when the points span the dimension (not all collinear in 2D, not all coplanar in 3D),
 /// decided with CGAL's exact predicates.

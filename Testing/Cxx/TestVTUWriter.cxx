@@ -1,0 +1,201 @@
+// dgmf-deform's .vtu writer (Tools/DGMFVTUWriter): the same bytes as VTK's own writer, with its
+// shortcuts taken only where VTK would choose the same.
+#include "DGMFVTUWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace
+{
+/// A grid of hexahedra and tetrahedra (or, with `quadratic`, one quadratic tetrahedron too),
+/// with point and cell arrays of several types, components, NaN and infinite values.
+vtkSmartPointer<vtkUnstructuredGrid> MixedGrid(bool quadratic)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  const int n = 12;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        points->InsertNextPoint(i + 0.01 * j, j - 0.02 * k, k + 0.003 * i * i);
+      }
+    }
+  }
+  grid->SetPoints(points);
+  auto id = [&](int i, int j, int k) { return static_cast<vtkIdType>(i + n * (j + n * k)); };
+  for (int k = 0; k + 1 < n; ++k)
+  {
+    for (int j = 0; j + 1 < n; ++j)
+    {
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        if ((i + j + k) % 3 == 0)
+        {
+          const vtkIdType tet[4] = { id(i, j, k), id(i + 1, j, k), id(i, j + 1, k),
+            id(i, j, k + 1) };
+          grid->InsertNextCell(VTK_TETRA, 4, tet);
+          continue;
+        }
+        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      }
+    }
+  }
+  if (quadratic)
+  {
+    const vtkIdType tet10[10] = { 0, 2, 2 * n, 2 * n * n, 1, n + 1, n, n * n, n * n + 1,
+      n * n + n };
+    grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, tet10);
+  }
+  const vtkIdType nodes = grid->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("Displacement");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(nodes);
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("BoundaryMarker");
+  marker->SetNumberOfTuples(nodes);
+  vtkNew<vtkFloatArray> f;
+  f->SetName("f");
+  f->SetNumberOfTuples(nodes);
+  for (vtkIdType p = 0; p < nodes; ++p)
+  {
+    const double x = std::sin(0.37 * p);
+    displacement->SetTuple3(p, x, -2.0 * x * x, 0.5 - x);
+    marker->SetValue(p, static_cast<int>(p % 7) - 3);
+    f->SetValue(p, static_cast<float>(std::cos(0.11 * p)));
+  }
+  displacement->SetTuple3(5, std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0);
+  f->SetValue(7, std::numeric_limits<float>::quiet_NaN());
+  f->SetValue(9, -std::numeric_limits<float>::infinity());
+  grid->GetPointData()->AddArray(displacement);
+  grid->GetPointData()->AddArray(marker);
+  grid->GetPointData()->AddArray(f);
+  vtkNew<vtkDoubleArray> quality;
+  quality->SetName("SizeSkew");
+  quality->SetNumberOfTuples(grid->GetNumberOfCells());
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    quality->SetValue(c, 1.0 / (1.0 + static_cast<double>(c % 13)));
+  }
+  grid->GetCellData()->AddArray(quality);
+  return grid;
+}
+
+/// The .vtu `writer` writes for `grid` (to a string), with the given mode and compressor.
+std::string Written(
+  vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* grid, bool appended, int compressor)
+{
+  writer->SetInputData(grid);
+  writer->WriteToOutputStringOn();
+  appended ? writer->SetDataModeToAppended() : writer->SetDataModeToBinary();
+  writer->SetEncodeAppendedData(0);
+  writer->SetCompressorType(compressor);
+  writer->SetBlockSize(1 << 12);
+  EXPECT_EQ(writer->Write(), 1);
+  EXPECT_EQ(writer->GetErrorCode(), 0u);
+  return writer->GetOutputString();
+}
+
+/**
+ * The bytes of VTK's writer and of DGMFVTUWriter (on a shallow copy, as dgmf-deform writes), each
+ * on a grid of its own made by `make`: a write caches the arrays' ranges in their information,
+ * and a second write of the same arrays writes that cache into the header (VTK's behaviour).
+ */
+void ExpectSameBytes(const std::function<vtkSmartPointer<vtkUnstructuredGrid>()>& make,
+  bool expectSkip, bool appended, int compressor)
+{
+  vtkNew<vtkXMLUnstructuredGridWriter> stock;
+  const std::string expected = Written(stock, make(), appended, compressor);
+  vtkNew<vtkUnstructuredGrid> copy;
+  copy->ShallowCopy(make());
+  const int pointArrays = copy->GetPointData()->GetNumberOfArrays();
+  vtkNew<dgmf_cli::DGMFVTUWriter> fast;
+  EXPECT_EQ(fast->SkipCellTypeScan(copy), expectSkip);
+  const std::string actual = Written(fast, copy, appended, compressor);
+  EXPECT_EQ(copy->GetPointData()->GetNumberOfArrays(), pointArrays) << "ghost arrays left";
+  EXPECT_GT(expected.size(), 1000u);
+  if (expectSkip)
+  {
+    EXPECT_EQ(actual.find("vtkGhostType"), std::string::npos);
+  }
+  if (actual != expected && std::getenv("DGMF_DUMP_VTU"))
+  {
+    std::ofstream(std::string(std::getenv("DGMF_DUMP_VTU")) + ".expected") << expected;
+    std::ofstream(std::string(std::getenv("DGMF_DUMP_VTU")) + ".actual") << actual;
+  }
+  EXPECT_TRUE(actual == expected) << "appended " << appended << ", compressor " << compressor
+                                  << ": " << actual.size() << " against " << expected.size()
+                                  << " bytes";
+}
+} // namespace
+
+TEST(VTUWriter, WritesTheBytesOfVtksWriterForLinearCells)
+{
+  for (const bool appended : { true, false })
+  {
+    for (const int compressor : { vtkXMLWriterBase::LZ4, vtkXMLWriterBase::NONE })
+    {
+      ExpectSameBytes([]() { return MixedGrid(false); }, true, appended, compressor);
+    }
+  }
+}
+
+// Quadratic cells and a grid's own ghost arrays: VTK's own choice of version, no shortcut.
+TEST(VTUWriter, LeavesQuadraticCellsAndGhostArraysToVtk)
+{
+  ExpectSameBytes([]() { return MixedGrid(true); }, false, true, vtkXMLWriterBase::LZ4);
+  ExpectSameBytes(
+    []()
+    {
+      vtkSmartPointer<vtkUnstructuredGrid> grid = MixedGrid(false);
+      grid->AllocateCellGhostArray();
+      grid->GetCellGhostArray()->SetValue(3, 1);
+      return grid;
+    },
+    false, true, vtkXMLWriterBase::LZ4);
+}
+
+TEST(VTUWriter, CachedRangesAreVtksRanges)
+{
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = MixedGrid(false);
+  for (int k = 0; k < grid->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* array = grid->GetPointData()->GetArray(k);
+    vtkSmartPointer<vtkDataArray> fresh;
+    fresh.TakeReference(array->NewInstance());
+    fresh->DeepCopy(array);
+    dgmf_cli::DGMFVTUWriter::CacheRange(array);
+    double expected[2], actual[2];
+    fresh->GetRange(expected, -1);
+    array->GetRange(actual, -1);
+    EXPECT_EQ(actual[0], expected[0]) << array->GetName();
+    EXPECT_EQ(actual[1], expected[1]) << array->GetName();
+    EXPECT_LT(expected[0], expected[1]) << array->GetName();
+  }
+}

@@ -1,0 +1,192 @@
+#include "DGMFVTUWriter.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArrayRange.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace dgmf_cli
+{
+vtkStandardNewMacro(DGMFVTUWriter);
+
+DGMFVTUWriter::DGMFVTUWriter() = default;
+DGMFVTUWriter::~DGMFVTUWriter() = default;
+
+namespace
+{
+/// The lowest and highest value (or squared norm) seen by one thread.
+struct Extremes
+{
+  double Low = std::numeric_limits<double>::infinity();
+  double High = -std::numeric_limits<double>::infinity();
+};
+
+/// GetRange(-1)'s range: component 0 of one-component arrays, the norm of longer tuples.
+struct RangeWorker
+{
+  double Range[2] = { 0.0, 0.0 };
+
+  template <typename ArrayType>
+  void operator()(ArrayType* array)
+  {
+    const int components = array->GetNumberOfComponents();
+    vtkSMPThreadLocal<Extremes> local;
+    vtkSMPTools::For(0, array->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        Extremes& extremes = local.Local(); // once per chunk, not per value
+        double low = extremes.Low, high = extremes.High;
+        for (const auto tuple : vtk::DataArrayTupleRange(array, begin, end))
+        {
+          double value = 0.0;
+          if (components == 1)
+          {
+            value = static_cast<double>(tuple[0]);
+          }
+          else
+          {
+            for (int c = 0; c < components; ++c)
+            {
+              const double x = static_cast<double>(tuple[c]);
+              value += x * x;
+            }
+          }
+          if (!std::isnan(value))
+          {
+            low = std::min(low, value);
+            high = std::max(high, value);
+          }
+        }
+        extremes.Low = low;
+        extremes.High = high;
+      });
+    Extremes all;
+    for (const Extremes& extremes : local)
+    {
+      all.Low = std::min(all.Low, extremes.Low);
+      all.High = std::max(all.High, extremes.High);
+    }
+    this->Range[0] = components == 1 ? all.Low : std::sqrt(all.Low);
+    this->Range[1] = components == 1 ? all.High : std::sqrt(all.High);
+  }
+};
+
+/// True when every cell is of a linear type up to VTK_HEXAGONAL_PRISM (checked in parallel).
+bool OnlyLinearCells(vtkUnstructuredGrid* grid)
+{
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  if (!types)
+  {
+    return true;
+  }
+  const unsigned char* type = types->GetPointer(0);
+  std::atomic<bool> linear(true);
+  vtkSMPTools::For(0, types->GetNumberOfValues(),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      bool all = true;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        all = all && type[i] <= VTK_HEXAGONAL_PRISM;
+      }
+      if (!all)
+      {
+        linear = false;
+      }
+    });
+  return linear;
+}
+} // namespace
+
+void DGMFVTUWriter::CacheRange(vtkDataArray* array)
+{
+  if (!array || array->GetNumberOfTuples() == 0)
+  {
+    return;
+  }
+  RangeWorker worker;
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker))
+  {
+    worker(array);
+  }
+  vtkInformation* information = array->GetInformation();
+  if (array->GetNumberOfComponents() == 1)
+  {
+    vtkNew<vtkInformationVector> perComponent;
+    perComponent->SetNumberOfInformationObjects(1);
+    perComponent->GetInformationObject(0)->Set(vtkDataArray::COMPONENT_RANGE(), worker.Range, 2);
+    information->Set(vtkAbstractArray::PER_COMPONENT(), perComponent);
+  }
+  else
+  {
+    information->Set(vtkDataArray::L2_NORM_RANGE(), worker.Range, 2);
+  }
+}
+
+bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
+{
+  this->RemoveAddedGhostArrays = false;
+  if (grid->GetPointGhostArray() || grid->GetCellGhostArray() || !OnlyLinearCells(grid))
+  {
+    return false;
+  }
+  grid->AllocatePointGhostArray();
+  grid->AllocateCellGhostArray();
+  this->RemoveAddedGhostArrays = true;
+  return true;
+}
+
+int DGMFVTUWriter::StartFile()
+{
+  // VTK has chosen the version (no scan: the ghost arrays were there); nothing is written yet.
+  if (this->RemoveAddedGhostArrays)
+  {
+    if (auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput()))
+    {
+      grid->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+      grid->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    }
+    this->UsePreviousVersion = true; // the scan's choice for linear cells without ghosts
+    this->RemoveAddedGhostArrays = false;
+  }
+  return this->Superclass::StartFile();
+}
+
+void DGMFVTUWriter::WriteAppendedPieceData(int index)
+{
+  // The header (with the ranges' placeholders) is written; the appended data's writing asks each
+  // array for its range. Cached here, not before Write(): the cache would be written as
+  // InformationKey elements into the header.
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput()))
+  {
+    if (grid->GetPoints())
+    {
+      CacheRange(grid->GetPoints()->GetData());
+    }
+    for (vtkDataSetAttributes* arrays : { static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(grid->GetCellData()) })
+    {
+      for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+      {
+        CacheRange(arrays->GetArray(k));
+      }
+    }
+  }
+  this->Superclass::WriteAppendedPieceData(index);
+}
+
+} // namespace dgmf_cli
