@@ -178,6 +178,25 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   }
   return ordered;
 }
+
+/// Numbers the ordered elements (their info() becomes their index) and lists their `corners`
+/// vertices, element after element.
+template <typename Handle>
+void NumberElements(const std::vector<Handle>& elements, int corners,
+  std::vector<std::int32_t>& elementVertices, const ParallelFor& parallelFor)
+{
+  const auto n = static_cast<std::size_t>(corners);
+  elementVertices.resize(n * elements.size());
+  ForEachIndex(parallelFor, elements.size(), ElementBlock,
+    [&](std::size_t e)
+    {
+      elements[e]->info() = static_cast<std::int32_t>(e);
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        elementVertices[n * e + k] = elements[e]->vertex(static_cast<int>(k))->info();
+      }
+    });
+}
 } // namespace
 
 DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count)
@@ -311,16 +330,7 @@ void DelaunayGraph::BuildElements(
     std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
     faces = HilbertOrderedElements<Delaunay2::Face_handle>(
       t, t.finite_faces_begin(), t.finite_faces_end(), 3, parallelFor);
-    this->ElementVertices.resize(n * faces.size());
-    ForEachIndex(parallelFor, faces.size(), ElementBlock,
-      [&](std::size_t e)
-      {
-        faces[e]->info() = static_cast<std::int32_t>(e);
-        for (int k = 0; k < 3; ++k)
-        {
-          this->ElementVertices[3 * e + k] = faces[e]->vertex(k)->info();
-        }
-      });
+    NumberElements(faces, n, this->ElementVertices, parallelFor);
     this->Records.resize(faces.size());
     ForEachIndex(parallelFor, faces.size(), ElementBlock,
       [&](std::size_t e)
@@ -355,16 +365,7 @@ void DelaunayGraph::BuildElements(
     {
       c->info() = -1;
     }
-    this->ElementVertices.resize(n * cells.size());
-    ForEachIndex(parallelFor, cells.size(), ElementBlock,
-      [&](std::size_t e)
-      {
-        cells[e]->info() = static_cast<std::int32_t>(e);
-        for (int k = 0; k < 4; ++k)
-        {
-          this->ElementVertices[4 * e + k] = cells[e]->vertex(k)->info();
-        }
-      });
+    NumberElements(cells, n, this->ElementVertices, parallelFor);
     this->Records.resize(cells.size());
     ForEachIndex(parallelFor, cells.size(), ElementBlock,
       [&](std::size_t e)
