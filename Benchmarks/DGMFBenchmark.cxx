@@ -91,6 +91,15 @@ struct Result
   double QualityWithFacesFirst = 0, QualityWithFaces = 0; // SizeSkew and non-orthogonality
   double CacheBytesPerNode = 0;
 };
+
+const char* const Usage =
+  "usage: dgmf-benchmark [--sizes 0,1,2,3] [--methods dgm,dgmf,dgrbf,idw] [--threads 1,2]\n"
+  "         [--repeats N] [--idw-max-size K] [--numberings layered,hilbert,random]\n"
+  "         [--inputs grid,multiblock] [--quality 0] [--csv FILE]\n"
+  "         [--frames N [--frames-csv FILE]] [--command dgmf-deform [--command-csv FILE]]\n"
+  "         [--mesh FILE.vtu [--mesh-marker NAME] [--mesh-csv FILE]]\n"
+  "Times the paper's Table 3 on this machine (see the top of Benchmarks/DGMFBenchmark.cxx);\n"
+  "writes benchmark.csv (or --csv FILE) in the current directory.\n";
 } // namespace
 
 int main(int argc, char* argv[])
@@ -111,6 +120,22 @@ int main(int argc, char* argv[])
   int repeats = 3;
   int idwMaxSize = 1;
   std::string csvPath = "benchmark.csv";
+  // Options come in pairs; a lone --help (or any odd option) must not start a run, which takes
+  // minutes and overwrites benchmark.csv.
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    if (option == "--help" || option == "-h")
+    {
+      std::cout << Usage;
+      return 0;
+    }
+  }
+  if (argc % 2 == 0)
+  {
+    std::cerr << "dgmf-benchmark: option " << argv[argc - 1] << " has no value\n" << Usage;
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i];
