@@ -123,6 +123,10 @@ void DGMFVTUWriter::CacheRange(vtkDataArray* array)
   {
     worker(array);
   }
+  if (!(worker.Range[0] <= worker.Range[1]))
+  {
+    return; // only NaN: VTK's own computation decides what such a range is
+  }
   vtkInformation* information = array->GetInformation();
   if (array->GetNumberOfComponents() == 1)
   {

@@ -47,7 +47,8 @@ public:
   /**
    * Computes the range of `array` as vtkDataArray::GetRange(-1) does (component 0 of a
    * one-component array, else the tuples' Euclidean norm; NaN skipped), with vtkSMPTools, and
-   * caches it in the array's information where GetRange looks first.
+   * caches it in the array's information where GetRange looks first (not for an array of NaN
+   * only, whose range is left to VTK).
    */
   static void CacheRange(vtkDataArray* array);
 
