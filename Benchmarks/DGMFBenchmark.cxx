@@ -18,7 +18,7 @@
  * --inputs grid,multiblock: the mesh as one grid with its marker (default), and as a CFD reader's
  * multiblock (NamedBlocks.h: the volume and named patches, the body moving by name; layered
  * numbering only; the quality is not timed again).
- * --quality 0: the quality metric is not timed (its columns are empty).
+ * --quality 0 (or off): the quality metric is not timed (its columns are empty).
  * --frames N: also a periodic motion of N frames (PeriodicMotion.h), DGMF on the grid, written to
  * --frames-csv FILE (default motion.csv): the first frame (the graph) and the frames per second.
  * --mesh FILE.vtu [--mesh-marker NAME] [--mesh-csv FILE]: instead, DGMF on that mesh (its marker
@@ -157,7 +157,7 @@ int main(int argc, char* argv[])
     else if (option == "--command")
       command = value;
     else if (option == "--quality")
-      timeQuality = value != "0";
+      timeQuality = value != "0" && value != "off";
     else if (option == "--frames")
       frames = std::max(0, std::atoi(value.c_str()));
     else if (option == "--mesh")

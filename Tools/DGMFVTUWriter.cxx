@@ -123,9 +123,12 @@ void DGMFVTUWriter::CacheRange(vtkDataArray* array)
   {
     worker(array);
   }
-  if (!(worker.Range[0] <= worker.Range[1]))
+  if (worker.Range[0] == std::numeric_limits<double>::infinity() ||
+    worker.Range[1] == -std::numeric_limits<double>::infinity())
   {
-    return; // only NaN: VTK's own computation decides what such a range is
+    // Only NaN, or only +inf or -inf: VTK starts from the type's largest and smallest values
+    // and writes those; left to its own computation.
+    return;
   }
   vtkInformation* information = array->GetInformation();
   if (array->GetNumberOfComponents() == 1)
@@ -143,30 +146,40 @@ void DGMFVTUWriter::CacheRange(vtkDataArray* array)
 
 bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
 {
-  this->RemoveAddedGhostArrays = false;
-  if (grid->GetPointGhostArray() || grid->GetCellGhostArray() || !OnlyLinearCells(grid))
+  this->PreparedGrid = nullptr;
+  this->AddedPointGhosts = nullptr;
+  this->AddedCellGhosts = nullptr;
+  // Any array named vtkGhostType (of whatever type) is the grid's own: VTK's path.
+  const char* ghosts = vtkDataSetAttributes::GhostArrayName();
+  if (!grid || grid->GetPointData()->HasArray(ghosts) || grid->GetCellData()->HasArray(ghosts) ||
+    !OnlyLinearCells(grid))
   {
     return false;
   }
   grid->AllocatePointGhostArray();
   grid->AllocateCellGhostArray();
-  this->RemoveAddedGhostArrays = true;
+  this->PreparedGrid = grid;
+  this->AddedPointGhosts = grid->GetPointGhostArray();
+  this->AddedCellGhosts = grid->GetCellGhostArray();
   return true;
 }
 
 int DGMFVTUWriter::StartFile()
 {
   // VTK has chosen the version (no scan: the ghost arrays were there); nothing is written yet.
-  if (this->RemoveAddedGhostArrays)
+  // Only the arrays this writer added, to the grid it prepared, are removed.
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+  if (grid && grid == this->PreparedGrid && this->AddedPointGhosts &&
+    grid->GetPointGhostArray() == this->AddedPointGhosts && this->AddedCellGhosts &&
+    grid->GetCellGhostArray() == this->AddedCellGhosts)
   {
-    if (auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput()))
-    {
-      grid->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-      grid->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-    }
+    grid->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    grid->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
     this->UsePreviousVersion = true; // the scan's choice for linear cells without ghosts
-    this->RemoveAddedGhostArrays = false;
   }
+  this->PreparedGrid = nullptr;
+  this->AddedPointGhosts = nullptr;
+  this->AddedCellGhosts = nullptr;
   return this->Superclass::StartFile();
 }
 

@@ -14,6 +14,9 @@
 #ifndef DGMFVTUWriter_h
 #define DGMFVTUWriter_h
 
+#include "vtkUnsignedCharArray.h" // for the weak pointers
+#include "vtkUnstructuredGrid.h"  // for the weak pointers
+#include "vtkWeakPointer.h"       // for the added ghost arrays
 #include "vtkXMLUnstructuredGridWriter.h"
 
 class vtkDataArray;
@@ -36,19 +39,20 @@ public:
 
   /**
    * Prepares `grid`, a shallow copy the caller owns and is about to write with this writer, so
-   * that VTK skips its cell-type scan: when the grid has no ghost arrays and only linear cells
-   * (VTK's types up to the hexagonal prism, where VTK keeps its previous file version), empty
-   * ghost arrays are added (with them VTK does not scan) and this writer removes them again
-   * before anything is written and keeps the previous version, as the scan would have. Other
-   * grids are left as they are. Returns true when the grid was prepared.
+   * that VTK skips its cell-type scan: when the grid has no array named vtkGhostType and only
+   * linear cells (VTK's types up to the hexagonal prism, where VTK keeps its previous file
+   * version), zero-filled ghost arrays are added (with them VTK does not scan) and this writer
+   * removes them again before anything is written, if its input is still that grid with those
+   * arrays, and keeps the previous version, as the scan would have. Other grids are left as they
+   * are. Returns true when the grid was prepared.
    */
   bool SkipCellTypeScan(vtkUnstructuredGrid* grid);
 
   /**
    * Computes the range of `array` as vtkDataArray::GetRange(-1) does (component 0 of a
    * one-component array, else the tuples' Euclidean norm; NaN skipped), with vtkSMPTools, and
-   * caches it in the array's information where GetRange looks first (not for an array of NaN
-   * only, whose range is left to VTK).
+   * caches it in the array's information where GetRange looks first (not for an array with no
+   * value other than NaN, or only +inf or -inf, whose range is left to VTK).
    */
   static void CacheRange(vtkDataArray* array);
 
@@ -61,7 +65,11 @@ protected:
 private:
   DGMFVTUWriter(const DGMFVTUWriter&) = delete;
   void operator=(const DGMFVTUWriter&) = delete;
-  bool RemoveAddedGhostArrays = false;
+  /// The grid SkipCellTypeScan prepared and the ghost arrays it added (removed in StartFile
+  /// only if the input is still that grid with those arrays).
+  vtkWeakPointer<vtkUnstructuredGrid> PreparedGrid;
+  vtkWeakPointer<vtkUnsignedCharArray> AddedPointGhosts;
+  vtkWeakPointer<vtkUnsignedCharArray> AddedCellGhosts;
 };
 
 } // namespace dgmf_cli
