@@ -3,6 +3,7 @@
 // meshes without bad cells are left bit for bit; results do not depend on the ParallelFor.
 #include "TwoThreadFor.h"
 #include "dgmf/LocalRepair.h"
+#include "dgmf/NodeRepairer.h"
 
 #include <gtest/gtest.h>
 
@@ -728,4 +729,55 @@ TEST(LocalRepair, RejectsInvalidInput)
   TestMesh empty;
   const RepairReport report = Repair(empty, RepairParameters());
   EXPECT_EQ(report.BadCellsBefore, 0u);
+}
+
+TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
+{
+  // The guard judges a moving node's tetrahedra through forms affine (the Jacobian) and quadratic
+  // (the squared edges) in the node's position. For every corner of random tetrahedra of both
+  // orientations, the form at random positions equals ComputeSizeSkew of the cell with that
+  // corner moved, and AtMost agrees with the value, also without the cube root.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t checked = 0, inverted = 0;
+  for (int t = 0; t < 500; ++t)
+  {
+    double original[12];
+    for (int k = 0; k < 12; ++k)
+      original[k] = unit(random);
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      double deformed[12];
+      for (int k = 0; k < 12; ++k)
+        deformed[k] = original[k] + 0.2 * unit(random);
+      const dgmf::Vec3 o = dgmf::Load(original, 0);
+      const double alpha0 =
+        dgmf::Dot(dgmf::Cross(dgmf::Load(original, 1) - o, dgmf::Load(original, 2) - o),
+          dgmf::Load(original, 3) - o);
+      const dgmf::repair::TetraForm form =
+        dgmf::repair::MakeTetraForm(deformed, corner, alpha0 < 0.0 ? -1.0 : 1.0, std::abs(alpha0));
+      if (!form.Usable)
+        continue; // a degenerate original
+      for (int trial = 0; trial < 4; ++trial)
+      {
+        const dgmf::Vec3 y{ 1.5 * unit(random), 1.5 * unit(random), 1.5 * unit(random) };
+        double moved[12];
+        std::copy(deformed, deformed + 12, moved);
+        dgmf::Store(y, moved, corner);
+        const CellQuality full = dgmf::ComputeSizeSkew(CellShape::Tetra, original, moved);
+        const CellQuality viaForm = form.Evaluate(y);
+        ASSERT_EQ(full.Inverted, viaForm.Inverted) << "case " << t << " corner " << corner;
+        ASSERT_NEAR(viaForm.SizeSkew, full.SizeSkew, 1e-12) << "case " << t;
+        for (double cutoff : { 0.05, 0.3, 0.7 })
+        {
+          if (std::abs(full.SizeSkew - cutoff) > 1e-9)
+            ASSERT_EQ(form.AtMost(y, cutoff), full.SizeSkew <= cutoff) << "case " << t;
+        }
+        ++checked;
+        inverted += full.Inverted ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(checked, 7000u);
+  EXPECT_GT(inverted, 1000u);
 }

@@ -782,3 +782,57 @@ TEST(SizeSkewQuality, TwoHexahedraAtOnceGiveTheSameBitsAsOneAtATime)
   EXPECT_GT(inverted, 10u);
   EXPECT_GT(degenerate, 10u);
 }
+
+TEST(SizeSkewQuality, TetraFromThreeNumbersIsTheTetrahedronsSizeSkew)
+{
+  // Random tetrahedra of both orientations and of sizes 1e-3 to 1e3, moved by up to twice their
+  // size (some inverted): TetraSizeSkew from (alpha, squared edges, original alpha) is
+  // ComputeSizeSkew up to round-off, and inverted exactly when ComputeSizeSkew says so.
+  std::mt19937 random(23);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t inverted = 0, valid = 0;
+  for (int t = 0; t < 4000; ++t)
+  {
+    const double scale = std::pow(10.0, 3.0 * unit(random));
+    const double amplitude = t % 3 == 0 ? 2.0 : 0.3;
+    double original[12], deformed[12];
+    for (int k = 0; k < 12; ++k)
+    {
+      original[k] = scale * unit(random);
+      deformed[k] = original[k] + amplitude * scale * unit(random);
+    }
+    const auto alphaOf = [](const double* p)
+    {
+      double e[3][3];
+      for (int c = 0; c < 3; ++c)
+        for (int d = 0; d < 3; ++d)
+          e[c][d] = p[3 * (c + 1) + d] - p[d];
+      return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    };
+    const double alpha0 = alphaOf(original);
+    if (std::abs(alpha0) < 1e-3 * scale * scale * scale)
+      continue; // nearly flat originals: their inversion is decided at round-off
+    const double orientation = alpha0 > 0.0 ? 1.0 : -1.0;
+    const double alpha = orientation * alphaOf(deformed);
+    double edgeSquares = 0.0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        for (int d = 0; d < 3; ++d)
+          edgeSquares += std::pow(deformed[3 * b + d] - deformed[3 * a + d], 2);
+    const CellQuality full = ComputeSizeSkew(CellShape::Tetra, original, deformed);
+    const CellQuality fromNumbers = dgmf::TetraSizeSkew(alpha, edgeSquares, orientation * alpha0);
+    if (std::abs(alpha) < 1e-9 * scale * scale * scale)
+      continue; // flat after the motion: either verdict is round-off
+    ASSERT_EQ(full.Inverted, fromNumbers.Inverted) << "case " << t;
+    EXPECT_NEAR(fromNumbers.SizeSkew, full.SizeSkew, 1e-13) << "case " << t;
+    (full.Inverted ? inverted : valid) += 1;
+  }
+  EXPECT_GT(inverted, 100u);
+  EXPECT_GT(valid, 1000u);
+  // Not numbers score 0 (inverted), never NaN.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(dgmf::TetraSizeSkew(nan, 1.0, 1.0).Inverted);
+  EXPECT_EQ(dgmf::TetraSizeSkew(1.0, nan, 1.0).SizeSkew, 0.0);
+}

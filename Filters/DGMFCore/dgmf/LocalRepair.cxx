@@ -423,10 +423,15 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
       ++report.MovedNodes;
     }
   }
+  // The passes judge tetrahedra through their forms (equal up to round-off); the cells' values
+  // are taken again from the full metric, so that they are the bits the mesh's quality gives.
+  double corners[3 * kMaximumCorners];
   for (const ActiveCell& cell : cells)
   {
-    quality[cell.Cell] = cell.Quality;
-    inverted[cell.Cell] = cell.Inverted ? 1 : 0;
+    GatherCorners(mesh, cell.Cell, points, corners);
+    const CellQuality q = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+    quality[cell.Cell] = q.SizeSkew;
+    inverted[cell.Cell] = q.Inverted ? 1 : 0;
   }
   summarize(report.BadCellsAfter, report.InvertedAfter, report.MinimumAfter);
   return report;

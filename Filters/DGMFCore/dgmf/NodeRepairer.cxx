@@ -68,6 +68,7 @@ void NodeRepairer::InitializeCell(
       sum += this->Alpha3(cell.Tables.Corners[k], cell.Original);
     }
     cell.Orientation = sum < 0.0 ? -1.0 : 1.0;
+    cell.OriginalAlpha = cell.Orientation * sum; // a tetrahedron's one corner
     cell.Beta = kUntangleFraction * std::abs(sum) / cell.Tables.NumberOfCorners;
     if (!std::isfinite(cell.Beta))
     {
@@ -79,6 +80,8 @@ void NodeRepairer::InitializeCell(
 std::size_t NodeRepairer::Run(int maximumPasses, double threshold, const Progress& progress)
 {
   this->Threshold = threshold;
+  this->FormsNode = -1;
+  this->CollectEdgeEnds();
   std::size_t passes = 0;
   this->Dirty.assign(this->Nodes.size(), 1);
   for (int pass = 0; pass < maximumPasses; ++pass)
@@ -155,8 +158,22 @@ double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position,
     {
       continue;
     }
-    this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+    CellQuality quality;
+    if (this->FormsNode == node.Id && this->Forms[offset].Usable)
+    {
+      const TetraForm& form = this->Forms[offset];
+      if (qualities == nullptr && cutoff > 0.0 && form.AtMost(position, cutoff))
+      {
+        minimum = std::min(minimum, cutoff); // ruled out: the caller needs no more
+        break;
+      }
+      quality = form.Evaluate(position);
+    }
+    else
+    {
+      this->GatherWith(cell, node.Id, position, corners);
+      quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+    }
     inverted = inverted || quality.Inverted;
     minimum = std::min(minimum, quality.SizeSkew);
     if (qualities != nullptr)
@@ -231,49 +248,115 @@ double NodeRepairer::CornerMargins(const FreeNode& node, const Vec3& position,
   return objective;
 }
 
+TetraForm MakeTetraForm(const double* corners, int corner, double orientation, double originalAlpha)
+{
+  TetraForm form;
+  int k = 0;
+  for (int c = 0; c < 4; ++c)
+  {
+    if (c != corner)
+    {
+      form.Others[k++] = Load(corners, c);
+    }
+  }
+  // The corner Jacobian det(p1 - p0, p2 - p0, p3 - p0) changes sign with each transposition:
+  // with the moving corner taken from its place to the last, (-1)^(3 - corner) times
+  // (o1 - o0) x (o2 - o0) . (y - o0), o the others in their order.
+  const double sign = ((3 - corner) % 2 == 0 ? 1.0 : -1.0) * orientation;
+  const Vec3 e01 = form.Others[1] - form.Others[0];
+  const Vec3 e02 = form.Others[2] - form.Others[0];
+  const Vec3 e12 = form.Others[2] - form.Others[1];
+  form.Normal = sign * Cross(e01, e02);
+  form.OppositeEdges = Dot(e01, e01) + Dot(e02, e02) + Dot(e12, e12);
+  form.OriginalAlpha = originalAlpha;
+  form.Usable = originalAlpha > 0.0 && IsFinite(form.Normal) && std::isfinite(form.OppositeEdges);
+  return form;
+}
+
+void NodeRepairer::PrepareForms(const FreeNode& node)
+{
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  this->Forms.assign(count, TetraForm());
+  this->FormsNode = node.Id;
+  double corners[3 * kMaximumCorners];
+  for (std::size_t offset = 0; offset < count; ++offset)
+  {
+    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
+    if (cell.Shape != CellShape::Tetra || cell.Degenerate)
+    {
+      continue;
+    }
+    int corner = -1;
+    for (int c = 0; c < 4; ++c)
+    {
+      if (cell.Nodes[c] == node.Id)
+      {
+        corner = corner < 0 ? c : 4; // 4: the node twice (a collapsed cell): evaluated in full
+      }
+    }
+    if (corner < 0 || corner > 3)
+    {
+      continue;
+    }
+    GatherCorners(this->Mesh, cell.Cell, this->Points, corners);
+    this->Forms[offset] = MakeTetraForm(corners, corner, cell.Orientation, cell.OriginalAlpha);
+  }
+}
+
+void NodeRepairer::CollectEdgeEnds()
+{
+  this->EdgeEnds.clear();
+  for (FreeNode& node : this->Nodes)
+  {
+    node.EdgeBegin = this->EdgeEnds.size();
+    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    {
+      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      for (int e = 0; e < cell.Tables.NumberOfEdges; ++e)
+      {
+        const std::int64_t a = cell.Nodes[cell.Tables.Edges[e][0]];
+        const std::int64_t b = cell.Nodes[cell.Tables.Edges[e][1]];
+        if ((a == node.Id) != (b == node.Id)) // an edge of the node (and not a collapsed one)
+        {
+          this->EdgeEnds.push_back(a == node.Id ? b : a);
+        }
+      }
+    }
+    node.EdgeEnd = this->EdgeEnds.size();
+  }
+}
+
 void NodeRepairer::Neighbourhood(
   const FreeNode& node, const Vec3& x, Vec3& laplacian, double& length) const
 {
-  Vec3 reference{ 0.0, 0.0, 0.0 };
-  Vec3 sum{ 0.0, 0.0, 0.0 };
-  double deformedLength = 0.0;
-  double originalLength = 0.0;
-  int count = 0;
-  const Vec3 x0 = Load(this->OriginalPoints, node.Id);
-  for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
-  {
-    const ActiveCell& cell = this->Cells[this->Incident[i]];
-    for (int e = 0; e < cell.Tables.NumberOfEdges; ++e)
-    {
-      const std::int64_t a = cell.Nodes[cell.Tables.Edges[e][0]];
-      const std::int64_t b = cell.Nodes[cell.Tables.Edges[e][1]];
-      if ((a == node.Id) == (b == node.Id))
-      {
-        continue; // not an edge of the node (or a collapsed edge in the connectivity)
-      }
-      const std::int64_t other = a == node.Id ? b : a;
-      const Vec3 p = Load(this->Points, other);
-      if (count == 0)
-      {
-        reference = p;
-      }
-      sum = sum + (p - reference);
-      deformedLength += Norm(p - x);
-      originalLength += Norm(Load(this->OriginalPoints, other) - x0);
-      ++count;
-    }
-  }
+  const std::size_t count = node.EdgeEnd - node.EdgeBegin;
   if (count == 0)
   {
     laplacian = x;
     length = 0.0;
     return;
   }
-  laplacian = reference + (1.0 / count) * sum;
-  length = deformedLength / count;
+  const std::int64_t* ends = this->EdgeEnds.data() + node.EdgeBegin;
+  const Vec3 reference = Load(this->Points, ends[0]);
+  Vec3 sum{ 0.0, 0.0, 0.0 };
+  double deformedLength = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 p = Load(this->Points, ends[i]);
+    sum = sum + (p - reference);
+    deformedLength += Norm(p - x);
+  }
+  laplacian = reference + (1.0 / static_cast<double>(count)) * sum;
+  length = deformedLength / static_cast<double>(count);
   if (!(length > 0.0 && std::isfinite(length)))
   {
-    length = originalLength / count;
+    const Vec3 x0 = Load(this->OriginalPoints, node.Id);
+    double originalLength = 0.0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      originalLength += Norm(Load(this->OriginalPoints, ends[i]) - x0);
+    }
+    length = originalLength / static_cast<double>(count);
   }
 }
 
@@ -317,12 +400,24 @@ void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
 {
   Store(position, this->Points, node.Id);
+  // The node's own forms (SmoothNode) give its tetrahedra's values at the new position, the
+  // values its trials were judged by; after the move its neighbours' forms would need it anew.
+  const bool forms = this->FormsNode == node.Id;
+  this->FormsNode = -1;
   double corners[3 * kMaximumCorners];
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {
     ActiveCell& cell = this->Cells[this->Incident[i]];
-    this->GatherWith(cell, node.Id, position, corners);
-    const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+    CellQuality quality;
+    if (forms && this->Forms[i - node.CellBegin].Usable)
+    {
+      quality = this->Forms[i - node.CellBegin].Evaluate(position);
+    }
+    else
+    {
+      this->GatherWith(cell, node.Id, position, corners);
+      quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+    }
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; k < cell.NumberOfNodes; ++k)

@@ -11,6 +11,7 @@
 #include "dgmf/LocalRepair.h"
 #include "dgmf/Progress.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -49,20 +50,79 @@ constexpr double kPatternSteps[] = { 0.125, 0.03125 };
 /// A cell incident to a free node, with what the node steps need about its original shape.
 struct ActiveCell
 {
-  std::size_t Cell = 0;
+  // What every visit of a node reads about its cells comes first (one cache line).
   CellShape Shape = CellShape::Triangle;
-  ShapeTables Tables{ nullptr, 0, nullptr, 0, 0 };
+  bool Degenerate = false; ///< degenerate original cell: always 0, ignored
+  bool Inverted = false;   ///< currently inverted
   int NumberOfNodes = 0;
-  const std::int64_t* Nodes = nullptr;       ///< into the mesh connectivity
-  double Original[3 * kMaximumCorners] = {}; ///< original corner coordinates
+  const std::int64_t* Nodes = nullptr; ///< into the mesh connectivity
+  double Quality = 0.0;                ///< current SizeSkew
+  double Orientation = 1.0;            ///< 3D: sign of the original cell's size
+  double OriginalAlpha = 0.0;          ///< tetrahedra: the original corner Jacobian, oriented
+  double Beta = 0.0;                   ///< untangling target of every corner Jacobian
+  int FreeNodeCount = 0;               ///< free nodes among its corners
+  std::size_t Cell = 0;
+  ShapeTables Tables{ nullptr, 0, nullptr, 0, 0 };
   Vec3 Normal0{ 0.0, 0.0, 0.0 };             ///< 2D: unit normal of the original cell
-  double Orientation = 1.0;                  ///< 3D: sign of the original cell's size
-  double Beta = 0.0;                         ///< untangling target of every corner Jacobian
-  bool Degenerate = false;                   ///< degenerate original cell: always 0, ignored
-  double Quality = 0.0;                      ///< current SizeSkew
-  bool Inverted = false;                     ///< currently inverted
-  int FreeNodeCount = 0;                     ///< free nodes among its corners
+  double Original[3 * kMaximumCorners] = {}; ///< original corner coordinates
 };
+
+/**
+ * A tetrahedron seen from one of its corners while the others stay: its corner Jacobian is
+ * affine and its squared edges quadratic in that corner's position y, so its SizeSkew at y
+ * (TetraSizeSkew) needs neither the cell's corners nor its connectivity.
+ */
+struct TetraForm
+{
+  bool Usable = false;          ///< a non-degenerate tetrahedron (the others are evaluated in full)
+  Vec3 Normal{ 0.0, 0.0, 0.0 }; ///< alpha(y) = Normal . (y - Others[0]), original orientation
+  Vec3 Others[3];               ///< the three corners that stay
+  double OppositeEdges = 0.0;   ///< squared lengths of the three edges between them
+  double OriginalAlpha = 0.0;   ///< the original cell's corner Jacobian (> 0)
+
+  /// The corner Jacobian and the sum of the squared edges with the corner at `y`.
+  void Measure(const Vec3& y, double& alpha, double& edgeSquares) const
+  {
+    const Vec3 d0 = y - this->Others[0];
+    const Vec3 d1 = y - this->Others[1];
+    const Vec3 d2 = y - this->Others[2];
+    alpha = Dot(this->Normal, d0);
+    edgeSquares = Dot(d0, d0) + Dot(d1, d1) + Dot(d2, d2) + this->OppositeEdges;
+  }
+
+  /// The cell's SizeSkew with the corner at `y` (equal to ComputeSizeSkew up to round-off).
+  CellQuality Evaluate(const Vec3& y) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    return TetraSizeSkew(alpha, edgeSquares, this->OriginalAlpha);
+  }
+
+  /**
+   * Whether the cell's SizeSkew with the corner at `y` is at most `cutoff` (> 0), decided
+   * without its cube root: SizeSkew^3 = 432 f_size^3 alpha^2 / edgeSquares^3 (TetraSizeSkew).
+   * True for an inverted cell and for values that are not numbers (they score 0).
+   */
+  bool AtMost(const Vec3& y, double cutoff) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    const double tau = alpha / this->OriginalAlpha;
+    const double size = std::min(tau, 1.0 / tau);
+    return !(alpha > 0.0 &&
+      432.0 * size * size * size * alpha * alpha >
+        cutoff * cutoff * cutoff * (edgeSquares * edgeSquares * edgeSquares));
+  }
+};
+
+/**
+ * The form of a tetrahedron whose current corners are `corners` (12 coordinates, VTK order) seen
+ * from corner `corner`: `orientation` is the sign of the original cell's corner Jacobian and
+ * `originalAlpha` its absolute value. Not usable if that is not positive or the others'
+ * coordinates are not finite.
+ */
+TetraForm MakeTetraForm(
+  const double* corners, int corner, double orientation, double originalAlpha);
 
 /// A node the repair may move.
 struct FreeNode
@@ -70,6 +130,10 @@ struct FreeNode
   std::int64_t Id = 0;
   std::size_t CellBegin = 0; ///< its cells are Incident[CellBegin, CellEnd)
   std::size_t CellEnd = 0;
+  /// The other ends of its edges, once per cell edge (an edge of k cells k times, in the order of
+  /// its cells and their edges): EdgeEnds[EdgeBegin, EdgeEnd). Filled by NodeRepairer::Run.
+  std::size_t EdgeBegin = 0;
+  std::size_t EdgeEnd = 0;
   int Dimension = 3; ///< 2: moves in Basis[0], Basis[1]; 3: in all directions
   Vec3 Basis[3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
   Vec3 Normal{ 0.0, 0.0, 0.0 }; ///< 2D: unit normal of the plane of its cells
@@ -111,6 +175,7 @@ public:
   std::vector<ActiveCell> Cells;
   std::vector<std::size_t> Incident; ///< active-cell indices, grouped by free node
   std::vector<FreeNode> Nodes;
+  std::vector<std::int64_t> EdgeEnds; ///< see FreeNode::EdgeBegin
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
   /// Runs at most `maximumPasses` passes; returns the number run.
@@ -133,11 +198,19 @@ private:
   std::vector<double> Qualities0;
   std::vector<Vec3> QualityGradients;
   std::vector<Vec3> Directions;
+  /// The tetrahedra of the node being smoothed (SmoothNode), by offset in its incident cells;
+  /// FormsNode is that node's id (-1: none).
+  std::vector<TetraForm> Forms;
+  std::int64_t FormsNode = -1;
+  /// Fills Forms for `node` from the current positions of its cells' other corners.
+  void PrepareForms(const FreeNode& node);
   static double Alpha3(const CornerEdges& corner, const double* corners);
   /// The cell's deformed corners with `node` at `position`.
   void GatherWith(
     const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const;
   std::size_t CountRepairableBadCells(double threshold) const;
+  /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables.
+  void CollectEdgeEnds();
   /**
    * Minimum SizeSkew over the node's cells (0 if one is inverted) with the node at `position`;
    * per-cell values to `qualities` if not null; `inverted` tells if one is inverted. Without

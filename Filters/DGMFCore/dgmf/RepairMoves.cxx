@@ -117,6 +117,7 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
   {
     return false;
   }
+  this->PrepareForms(node);
   std::size_t worst = 0;
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {

@@ -540,6 +540,21 @@ CellQuality ComputeSizeSkew(CellShape shape, const double* original, const doubl
   return CellQuality{ std::numeric_limits<double>::quiet_NaN(), false };
 }
 
+CellQuality TetraSizeSkew(double alpha, double edgeSquares, double originalAlpha)
+{
+  if (!(alpha > 0.0))
+  {
+    return Inverted();
+  }
+  // Evaluate3D's single tetrahedron corner: shape = 3 (2 alpha^2)^(1/3) / F with F half the
+  // squared edges, so SizeSkew = f_size * 6 / (edgeSquares * (2 alpha^2)^(-1/3)).
+  const double argument = 2.0 * alpha * alpha;
+  const double inverseRoot = argument >= kCubeRootLow && argument <= kCubeRootHigh
+    ? InverseCubeRootInRange(argument)
+    : 1.0 / std::cbrt(argument);
+  return Valid(SizeFactor(alpha / originalAlpha) * 6.0 / (edgeSquares * inverseRoot));
+}
+
 void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
   const double* original1, const double* deformed1, CellQuality& quality0, CellQuality& quality1)
 {

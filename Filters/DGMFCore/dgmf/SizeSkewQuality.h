@@ -55,6 +55,17 @@ struct CellQuality
 CellQuality ComputeSizeSkew(CellShape shape, const double* original, const double* deformed);
 
 /**
+ * The size-shape metric of a tetrahedron from three numbers: its deformed corner Jacobian
+ * `alpha` (six times its volume, signed in the original cell's orientation), the sum of its six
+ * squared edge lengths, and the original cell's corner Jacobian `originalAlpha` (> 0, the same
+ * orientation). Equal to ComputeSizeSkew for a non-degenerate tetrahedron up to round-off (a
+ * tetrahedron's four corners have the same Jacobian and the same Frobenius term, half the sum of
+ * the squared edges); for callers that keep these numbers as affine and quadratic functions of
+ * one moving corner (the quality guard). Inverted when `alpha` <= 0 or NaN.
+ */
+CellQuality TetraSizeSkew(double alpha, double edgeSquares, double originalAlpha);
+
+/**
  * ComputeSizeSkew of two hexahedra at once (the most common cell of large structured meshes): in
  * two-lane vectors, with the same operations in the same order, so the same results as two calls,
  * bit for bit, at a little more than the cost of one.
