@@ -161,13 +161,7 @@ double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position,
     CellQuality quality;
     if (this->FormsNode == node.Id && this->Forms[offset].Usable)
     {
-      const TetraForm& form = this->Forms[offset];
-      if (qualities == nullptr && cutoff > 0.0 && form.AtMost(position, cutoff))
-      {
-        minimum = std::min(minimum, cutoff); // ruled out: the caller needs no more
-        break;
-      }
-      quality = form.Evaluate(position);
+      quality = this->Forms[offset].Evaluate(position);
     }
     else
     {
@@ -181,6 +175,43 @@ double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position,
       qualities[offset] = quality.SizeSkew;
     }
     else if (minimum <= cutoff)
+    {
+      break;
+    }
+  }
+  return minimum;
+}
+
+double NodeRepairer::TrialMinimumCube(const FreeNode& node, const Vec3& position, bool& inverted,
+  double cutoffCube, std::size_t first) const
+{
+  double corners[3 * kMaximumCorners];
+  double minimum = kInfinity;
+  inverted = false;
+  const bool forms = this->FormsNode == node.Id;
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    const std::size_t offset = (first + j) % count;
+    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
+    if (cell.Degenerate)
+    {
+      continue;
+    }
+    double cube;
+    if (forms && this->Forms[offset].Usable)
+    {
+      cube = this->Forms[offset].CubedSizeSkew(position, inverted);
+    }
+    else
+    {
+      this->GatherWith(cell, node.Id, position, corners);
+      const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+      inverted = inverted || quality.Inverted;
+      cube = quality.SizeSkew * quality.SizeSkew * quality.SizeSkew;
+    }
+    minimum = std::min(minimum, cube);
+    if (minimum <= cutoffCube)
     {
       break;
     }

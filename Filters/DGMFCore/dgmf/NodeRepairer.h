@@ -99,19 +99,44 @@ struct TetraForm
   }
 
   /**
-   * Whether the cell's SizeSkew with the corner at `y` is at most `cutoff` (> 0), decided
-   * without its cube root: SizeSkew^3 = 432 f_size^3 alpha^2 / edgeSquares^3 (TetraSizeSkew).
-   * True for an inverted cell and for values that are not numbers (they score 0).
+   * The cube of the cell's SizeSkew with the corner at `y`, without a cube root:
+   * 432 f_size^3 alpha^2 / edgeSquares^3 (TetraSizeSkew), in [0, 1], 0 for values that are not
+   * numbers; 0 with `inverted` set for an inverted cell. Cubes order cells as their values do.
    */
-  bool AtMost(const Vec3& y, double cutoff) const
+  double CubedSizeSkew(const Vec3& y, bool& inverted) const
   {
     double alpha, edgeSquares;
     this->Measure(y, alpha, edgeSquares);
+    if (!(alpha > 0.0))
+    {
+      inverted = true;
+      return 0.0;
+    }
     const double tau = alpha / this->OriginalAlpha;
     const double size = std::min(tau, 1.0 / tau);
-    return !(alpha > 0.0 &&
-      432.0 * size * size * size * alpha * alpha >
-        cutoff * cutoff * cutoff * (edgeSquares * edgeSquares * edgeSquares));
+    const double ratio = alpha / edgeSquares; // alpha^2 / edgeSquares^3 without overflow
+    const double cube = 432.0 * size * size * size * (ratio * ratio / edgeSquares);
+    return cube > 0.0 ? std::min(cube, 1.0) : 0.0;
+  }
+
+  /**
+   * The gradient of the cell's SizeSkew with respect to the corner at `y`, where it is `quality`
+   * (> 0): quality ((+-1 + 2/3) grad alpha / alpha - grad edgeSquares / edgeSquares), +1 while
+   * the cell is smaller than the original (f_size = tau), -1 once larger (f_size = 1 / tau).
+   */
+  Vec3 Gradient(const Vec3& y, double quality) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    if (!(alpha > 0.0 && edgeSquares > 0.0))
+    {
+      return Vec3{ 0.0, 0.0, 0.0 };
+    }
+    const double sizeSign = alpha < this->OriginalAlpha ? 1.0 : -1.0;
+    const Vec3 edgeGradient =
+      2.0 * ((y - this->Others[0]) + (y - this->Others[1]) + (y - this->Others[2]));
+    return quality *
+      (((sizeSign + 2.0 / 3.0) / alpha) * this->Normal - (1.0 / edgeSquares) * edgeGradient);
   }
 };
 
@@ -219,6 +244,14 @@ private:
    */
   double IncidentMinimum(const FreeNode& node, const Vec3& position, bool& inverted,
     double* qualities, double cutoff = -kInfinity, std::size_t first = 0) const;
+  /**
+   * The cube of the minimum SizeSkew over the node's cells with the node at `position` (its
+   * tetrahedra through Forms, prepared for this node), stopping at the first cell whose cube is
+   * at or below `cutoffCube` (the caller rejects such a point anyway), starting with the cell at
+   * offset `first`. `inverted` tells if a cell evaluated is inverted.
+   */
+  double TrialMinimumCube(const FreeNode& node, const Vec3& position, bool& inverted,
+    double cutoffCube, std::size_t first) const;
   /**
    * alpha_k - beta for every corner of the node's cells with the node at `position`, appended to
    * `margins` in a fixed order (and beta to `targets`). Returns Knupp's objective

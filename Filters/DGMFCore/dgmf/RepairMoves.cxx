@@ -118,6 +118,7 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
     return false;
   }
   this->PrepareForms(node);
+  this->PrepareForms(node);
   std::size_t worst = 0;
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {
@@ -128,7 +129,9 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
       break;
     }
   }
-  double best = minimum0 + kMinimumGain;
+  // Trial points are compared by the cubes of their minima (no cube root per cell).
+  const double threshold = minimum0 + kMinimumGain;
+  double bestCube = threshold * threshold * threshold;
   Vec3 bestPosition = x;
   bool found = false;
   const auto tryPosition = [&](const Vec3& y)
@@ -138,10 +141,10 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
       return;
     }
     bool yInverted;
-    const double value = this->IncidentMinimum(node, y, yInverted, nullptr, best, worst);
-    if (!yInverted && value > best)
+    const double cube = this->TrialMinimumCube(node, y, yInverted, bestCube, worst);
+    if (!yInverted && cube > bestCube)
     {
-      best = value;
+      bestCube = cube;
       bestPosition = y;
       found = true;
     }
@@ -152,17 +155,21 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
     tryPosition(x + fraction * towardLaplacian);
   }
 
-  // SizeSkew gradients by forward differences from the cached values.
+  // SizeSkew gradients: the tetrahedra's from their forms, the other cells' by forward
+  // differences from the cached values.
   const std::size_t count = node.CellEnd - node.CellBegin;
   this->Qualities0.resize(count);
   this->Margins.resize(count);
   this->QualityGradients.assign(count, Vec3{ 0.0, 0.0, 0.0 });
+  bool differences = false;
   for (std::size_t i = 0; i < count; ++i)
   {
-    this->Qualities0[i] = this->Cells[this->Incident[node.CellBegin + i]].Quality;
+    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + i]];
+    this->Qualities0[i] = cell.Quality;
+    differences = differences || (!cell.Degenerate && !this->Forms[i].Usable);
   }
   const double delta = kGradientStep * h;
-  for (int d = 0; d < node.Dimension; ++d)
+  for (int d = 0; differences && d < node.Dimension; ++d)
   {
     bool inverted;
     this->IncidentMinimum(node, x + delta * node.Basis[d], inverted, this->Margins.data());
@@ -170,6 +177,13 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
     {
       const double slope = (this->Margins[i] - this->Qualities0[i]) / delta;
       this->QualityGradients[i] = this->QualityGradients[i] + slope * node.Basis[d];
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (this->Forms[i].Usable)
+    {
+      this->QualityGradients[i] = InPlane(node, this->Forms[i].Gradient(x, this->Qualities0[i]));
     }
   }
   Vec3 softAscent{ 0.0, 0.0, 0.0 };
