@@ -809,3 +809,51 @@ TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
   EXPECT_GT(inverted, 1000u);
   EXPECT_GT(gradients, 5000u);
 }
+
+TEST(LocalRepair, GivesUpOnlyWhenThePassesLeftCannotRemoveTheBadCells)
+{
+  // Tetrahedral grids with every interior node jittered, repaired against thresholds 0.5 to 0.75.
+  // Every repair that removes all bad cells in its 20 passes is not given up and gives the same
+  // bits with the option; one that cannot (jitter 0.4 spacings, threshold 0.75: hundreds of bad
+  // cells left after 20 passes) is given up within a few passes.
+  const auto run = [](double amplitude, double threshold, bool giveUp, TestMesh& grid)
+  {
+    grid = Grid3D(7, true);
+    Jitter(grid, amplitude * grid.Original[3], false, 1);
+    RepairParameters parameters;
+    parameters.Threshold = threshold;
+    parameters.GiveUpWhenHopeless = giveUp;
+    return Repair(grid, parameters);
+  };
+  std::size_t successes = 0;
+  for (double threshold : { 0.5, 0.6, 0.7 })
+  {
+    for (double amplitude : { 0.3, 0.4 })
+    {
+      TestMesh with, without;
+      const RepairReport withReport = run(amplitude, threshold, true, with);
+      const RepairReport withoutReport = run(amplitude, threshold, false, without);
+      ASSERT_EQ(withoutReport.BadCellsAfter, 0u) << amplitude << " " << threshold;
+      EXPECT_FALSE(withReport.GaveUp) << amplitude << " " << threshold;
+      EXPECT_EQ(withReport.Passes, withoutReport.Passes);
+      EXPECT_EQ(
+        std::memcmp(with.Points.data(), without.Points.data(), with.Points.size() * sizeof(double)),
+        0);
+      ++successes;
+    }
+  }
+  EXPECT_EQ(successes, 6u);
+
+  TestMesh hopeless, hopelessAllPasses;
+  const RepairReport givenUp = run(0.4, 0.75, true, hopeless);
+  const RepairReport allPasses = run(0.4, 0.75, false, hopelessAllPasses);
+  EXPECT_TRUE(givenUp.GaveUp);
+  EXPECT_GT(givenUp.BadCellsAfter, 0u);
+  EXPECT_LT(givenUp.Passes, 10u);
+  EXPECT_FALSE(allPasses.GaveUp);
+  EXPECT_EQ(allPasses.Passes, 20u);
+  EXPECT_GT(allPasses.BadCellsAfter, 100u); // it was indeed hopeless
+  std::cout << "[ repair   ] hopeless: bad " << givenUp.BadCellsBefore << " -> "
+            << givenUp.BadCellsAfter << ", given up after " << givenUp.Passes
+            << " passes (all 20 passes: " << allPasses.BadCellsAfter << ")\n";
+}

@@ -414,7 +414,8 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
   {
     std::copy(points + 3 * nodes[i].Id, points + 3 * nodes[i].Id + 3, before.begin() + 3 * i);
   }
-  report.Passes = repairer.Run(parameters.MaximumPasses, parameters.Threshold, parameters.Progress);
+  report.Passes = repairer.Run(parameters.MaximumPasses, parameters.Threshold, parameters.Progress,
+    parameters.GiveUpWhenHopeless, &report.GaveUp);
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
     const double* p = points + 3 * nodes[i].Id;

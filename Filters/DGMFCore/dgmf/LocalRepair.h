@@ -31,6 +31,13 @@ struct RepairParameters
   int Layers = 2;
   /// Most Gauss-Seidel passes over the free nodes (0: only count the bad cells).
   int MaximumPasses = 20;
+  /**
+   * Stop early when the passes left cannot remove the bad cells: from the third pass on, when
+   * the bad cells' count, shrinking by the factor of the last pass, would not reach 0 within
+   * MaximumPasses (or did not shrink at all). For callers that have something better to do with
+   * such a step (sub-steps: halve it); off by default (every pass is run). See GaveUp.
+   */
+  bool GiveUpWhenHopeless = false;
   /// Told after each pass (the fraction of MaximumPasses); may stop the repair (Aborted).
   dgmf::Progress Progress;
 };
@@ -45,6 +52,7 @@ struct RepairReport
   std::size_t FreeNodes = 0;      ///< interior nodes the repair was allowed to move
   std::size_t MovedNodes = 0;     ///< nodes whose position changed
   std::size_t Passes = 0;         ///< passes run over the free nodes
+  bool GaveUp = false;            ///< stopped by GiveUpWhenHopeless, with bad cells left
   double MinimumBefore = 0.0;     ///< lowest SizeSkew before the repair (0 if no covered cell)
   double MinimumAfter = 0.0;      ///< lowest SizeSkew after the repair
 };

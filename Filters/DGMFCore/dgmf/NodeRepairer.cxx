@@ -77,19 +77,40 @@ void NodeRepairer::InitializeCell(
   }
 }
 
-std::size_t NodeRepairer::Run(int maximumPasses, double threshold, const Progress& progress)
+std::size_t NodeRepairer::Run(
+  int maximumPasses, double threshold, const Progress& progress, bool giveUp, bool* gaveUp)
 {
   this->Threshold = threshold;
   this->FormsNode = -1;
   this->CollectEdgeEnds();
   std::size_t passes = 0;
   this->Dirty.assign(this->Nodes.size(), 1);
+  std::size_t previous = 0, first = 0;
   for (int pass = 0; pass < maximumPasses; ++pass)
   {
-    if (this->CountRepairableBadCells(threshold) == 0)
+    const std::size_t bad = this->CountRepairableBadCells(threshold);
+    if (bad == 0)
     {
       break;
     }
+    if (giveUp && pass >= 3)
+    {
+      // Passes needed at the last pass's rate (the count falls by about as many cells a pass
+      // while the repair goes well), for a count still a large part of the first one.
+      const double needed =
+        bad < previous ? static_cast<double>(bad) / static_cast<double>(previous - bad) : kInfinity;
+      const bool large = 10 * bad >= first;
+      if (large && needed > static_cast<double>(maximumPasses - pass))
+      {
+        if (gaveUp != nullptr)
+        {
+          *gaveUp = true;
+        }
+        break;
+      }
+    }
+    previous = bad;
+    first = pass == 0 ? bad : first;
     std::size_t moved = 0;
     for (std::size_t i = 0; i < this->Nodes.size(); ++i)
     {

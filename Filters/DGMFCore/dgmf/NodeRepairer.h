@@ -203,8 +203,13 @@ public:
   std::vector<std::int64_t> EdgeEnds; ///< see FreeNode::EdgeBegin
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
-  /// Runs at most `maximumPasses` passes; returns the number run.
-  std::size_t Run(int maximumPasses, double threshold, const Progress& progress = Progress());
+  /**
+   * Runs at most `maximumPasses` passes; returns the number run. With `giveUp`, stops when the
+   * passes left cannot remove the bad cells (RepairParameters::GiveUpWhenHopeless) and sets
+   * `gaveUp`.
+   */
+  std::size_t Run(int maximumPasses, double threshold, const Progress& progress = Progress(),
+    bool giveUp = false, bool* gaveUp = nullptr);
 
 private:
   const CellMesh& Mesh;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -192,6 +193,9 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
     repair.Layers = parameters.RepairLayers;
     repair.MaximumPasses = parameters.Repair ? parameters.RepairPasses : 0;
     repair.Progress = parameters.Progress.Part(s, next);
+    // A step the guard cannot clean is halved anyway: the guard gives it up as soon as its passes
+    // show that, instead of running them all (unless the step cannot be halved any more).
+    repair.GiveUpWhenHopeless = automatic && step > minimumStep;
     RepairReport repaired;
     if (parameters.Repair || automatic)
     {
@@ -213,6 +217,11 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
         ++report.RejectedSteps;
         rejected.Points.swap(trial);
         rejected.Repair = repaired;
+        if (repaired.GaveUp)
+        {
+          // Not repaired as far as it could be: never taken as the longer step.
+          rejected.Repair.BadCellsAfter = std::numeric_limits<std::size_t>::max();
+        }
         rejected.Next = next;
         step = std::max(minimumStep, 0.5 * (next - s));
         continue;
