@@ -213,19 +213,19 @@ double NodeRepairer::TrialMinimumCube(const FreeNode& node, const Vec3& position
   const std::size_t count = node.CellEnd - node.CellBegin;
   for (std::size_t j = 0; j < count; ++j)
   {
-    const std::size_t offset = (first + j) % count;
-    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
-    if (cell.Degenerate)
-    {
-      continue;
-    }
+    const std::size_t offset = j + first < count ? j + first : j + first - count;
     double cube;
     if (forms && this->Forms[offset].Usable)
     {
-      cube = this->Forms[offset].CubedSizeSkew(position, inverted);
+      cube = this->Forms[offset].CubedSizeSkew(position, inverted); // the cell is not read
     }
     else
     {
+      const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
+      if (cell.Degenerate)
+      {
+        continue;
+      }
       this->GatherWith(cell, node.Id, position, corners);
       const CellQuality quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
       inverted = inverted || quality.Inverted;
@@ -321,6 +321,7 @@ TetraForm MakeTetraForm(const double* corners, int corner, double orientation, d
   form.Normal = sign * Cross(e01, e02);
   form.OppositeEdges = Dot(e01, e01) + Dot(e02, e02) + Dot(e12, e12);
   form.OriginalAlpha = originalAlpha;
+  form.InverseOriginalAlpha = 1.0 / originalAlpha;
   form.Usable = originalAlpha > 0.0 && IsFinite(form.Normal) && std::isfinite(form.OppositeEdges);
   return form;
 }
@@ -328,29 +329,25 @@ TetraForm MakeTetraForm(const double* corners, int corner, double orientation, d
 void NodeRepairer::PrepareForms(const FreeNode& node)
 {
   const std::size_t count = node.CellEnd - node.CellBegin;
-  this->Forms.assign(count, TetraForm());
+  this->Forms.resize(count);
   this->FormsNode = node.Id;
-  double corners[3 * kMaximumCorners];
+  double corners[12];
   for (std::size_t offset = 0; offset < count; ++offset)
   {
-    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
-    if (cell.Shape != CellShape::Tetra || cell.Degenerate)
+    const int corner = this->TetraCorner[node.CellBegin + offset];
+    if (corner < 0)
     {
+      this->Forms[offset].Usable = false;
       continue;
     }
-    int corner = -1;
+    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
     for (int c = 0; c < 4; ++c)
     {
-      if (cell.Nodes[c] == node.Id)
+      if (c != corner) // the node's own corner is not read
       {
-        corner = corner < 0 ? c : 4; // 4: the node twice (a collapsed cell): evaluated in full
+        Store(Load(this->Points, cell.Nodes[c]), corners, c);
       }
     }
-    if (corner < 0 || corner > 3)
-    {
-      continue;
-    }
-    GatherCorners(this->Mesh, cell.Cell, this->Points, corners);
     this->Forms[offset] = MakeTetraForm(corners, corner, cell.Orientation, cell.OriginalAlpha);
   }
 }
@@ -375,6 +372,27 @@ void NodeRepairer::CollectEdgeEnds()
       }
     }
     node.EdgeEnd = this->EdgeEnds.size();
+  }
+  this->TetraCorner.assign(this->Incident.size(), -1);
+  for (const FreeNode& node : this->Nodes)
+  {
+    for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
+    {
+      const ActiveCell& cell = this->Cells[this->Incident[i]];
+      if (cell.Shape != CellShape::Tetra || cell.Degenerate)
+      {
+        continue;
+      }
+      int corner = -1;
+      for (int c = 0; c < 4; ++c)
+      {
+        if (cell.Nodes[c] == node.Id)
+        {
+          corner = corner < 0 ? c : 4; // 4: the node twice (a collapsed cell): evaluated in full
+        }
+      }
+      this->TetraCorner[i] = static_cast<std::int8_t>(corner >= 0 && corner < 4 ? corner : -1);
+    }
   }
 }
 

@@ -79,6 +79,7 @@ struct TetraForm
   Vec3 Others[3];               ///< the three corners that stay
   double OppositeEdges = 0.0;   ///< squared lengths of the three edges between them
   double OriginalAlpha = 0.0;   ///< the original cell's corner Jacobian (> 0)
+  double InverseOriginalAlpha = 0.0;
 
   /// The corner Jacobian and the sum of the squared edges with the corner at `y`.
   void Measure(const Vec3& y, double& alpha, double& edgeSquares) const
@@ -112,10 +113,14 @@ struct TetraForm
       inverted = true;
       return 0.0;
     }
-    const double tau = alpha / this->OriginalAlpha;
-    const double size = std::min(tau, 1.0 / tau);
-    const double ratio = alpha / edgeSquares; // alpha^2 / edgeSquares^3 without overflow
-    const double cube = 432.0 * size * size * size * (ratio * ratio / edgeSquares);
+    // 432 (alpha / edgeSquares)^2 / edgeSquares times tau^3 (smaller than the original) or
+    // divided by it (larger), with two divisions; alpha / edgeSquares keeps the powers in range.
+    const double ratio = alpha / edgeSquares;
+    const double tau = alpha * this->InverseOriginalAlpha;
+    const double tau3 = tau * tau * tau;
+    const bool smaller = tau < 1.0;
+    const double cube =
+      (432.0 * ratio * ratio * (smaller ? tau3 : 1.0)) / (edgeSquares * (smaller ? 1.0 : tau3));
     return cube > 0.0 ? std::min(cube, 1.0) : 0.0;
   }
 
@@ -201,6 +206,9 @@ public:
   std::vector<std::size_t> Incident; ///< active-cell indices, grouped by free node
   std::vector<FreeNode> Nodes;
   std::vector<std::int64_t> EdgeEnds; ///< see FreeNode::EdgeBegin
+  /// Per entry of Incident: the node's corner in that cell if it is a non-degenerate tetrahedron
+  /// with the node once (judged through a TetraForm), else -1. Filled by Run.
+  std::vector<std::int8_t> TetraCorner;
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
   /**
@@ -239,7 +247,8 @@ private:
   void GatherWith(
     const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const;
   std::size_t CountRepairableBadCells(double threshold) const;
-  /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables.
+  /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables, and
+  /// TetraCorner.
   void CollectEdgeEnds();
   /**
    * Minimum SizeSkew over the node's cells (0 if one is inverted) with the node at `position`;
