@@ -1,6 +1,9 @@
 #include "DGMFVTUWriter.h"
 
+#include "DGMFLookAheadCompressor.h"
+
 #include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArrayRange.h"
@@ -164,6 +167,49 @@ bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
   return true;
 }
 
+void DGMFVTUWriter::CompressAhead(int blocks)
+{
+  vtkDataCompressor* current = this->GetCompressor();
+  if (!current)
+  {
+    return;
+  }
+  const std::string name = current->GetClassName();
+  const std::string type = name == "vtkLZ4DataCompressor" ? "lz4"
+    : name == "vtkZLibDataCompressor"                     ? "zlib"
+    : name == "vtkLZMADataCompressor"                     ? "lzma"
+                                                          : "";
+  vtkSmartPointer<vtkDataCompressor> ahead = NewLookAheadCompressor(type, blocks);
+  if (ahead)
+  {
+    ahead->SetCompressionLevel(current->GetCompressionLevel());
+    this->SetCompressor(ahead);
+  }
+}
+
+namespace
+{
+/// Registers the memory of `array` with the look-ahead compressor if VTK writes it from there.
+void RegisterArray(LookAheadCompressor* compressor, vtkAbstractArray* array)
+{
+  if (array && array->HasStandardMemoryLayout() && array->GetNumberOfValues() > 0)
+  {
+    compressor->RegisterRange(array->GetVoidPointer(0),
+      static_cast<std::size_t>(array->GetNumberOfValues()) *
+        static_cast<std::size_t>(array->GetDataTypeSize()));
+  }
+}
+} // namespace
+
+int DGMFVTUWriter::EndFile()
+{
+  if (auto* ahead = dynamic_cast<LookAheadCompressor*>(this->GetCompressor()))
+  {
+    ahead->ClearRanges();
+  }
+  return this->Superclass::EndFile();
+}
+
 int DGMFVTUWriter::StartFile()
 {
   // VTK has chosen the version (no scan: the ghost arrays were there); nothing is written yet.
@@ -180,6 +226,33 @@ int DGMFVTUWriter::StartFile()
   this->PreparedGrid = nullptr;
   this->AddedPointGhosts = nullptr;
   this->AddedCellGhosts = nullptr;
+  // The arrays VTK will compress from their own memory, for the look-ahead compressor.
+  if (auto* ahead = dynamic_cast<LookAheadCompressor*>(this->GetCompressor()))
+  {
+    ahead->ClearRanges();
+    if (grid)
+    {
+      if (grid->GetPoints())
+      {
+        RegisterArray(ahead, grid->GetPoints()->GetData());
+      }
+      if (vtkCellArray* cells = grid->GetCells())
+      {
+        RegisterArray(ahead, cells->GetConnectivityArray());
+        RegisterArray(ahead, cells->GetOffsetsArray());
+      }
+      RegisterArray(ahead, grid->GetCellTypesArray());
+      for (vtkDataSetAttributes* arrays :
+        { static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
+          static_cast<vtkDataSetAttributes*>(grid->GetCellData()) })
+      {
+        for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+        {
+          RegisterArray(ahead, arrays->GetAbstractArray(k));
+        }
+      }
+    }
+  }
   return this->Superclass::StartFile();
 }
 

@@ -26,8 +26,9 @@ namespace dgmf_cli
 
 /**
  * @class DGMFVTUWriter
- * @brief vtkXMLUnstructuredGridWriter with the array ranges computed in parallel (appended mode)
- * and, with SkipCellTypeScan, the file version chosen without VTK's serial cell-type scan.
+ * @brief vtkXMLUnstructuredGridWriter with the array ranges computed in parallel (appended mode),
+ * with SkipCellTypeScan the file version chosen without VTK's serial cell-type scan, and with
+ * CompressAhead the blocks compressed in parallel.
  *
  * Writes the same bytes as vtkXMLUnstructuredGridWriter with the same settings (tested).
  */
@@ -56,10 +57,18 @@ public:
    */
   static void CacheRange(vtkDataArray* array);
 
+  /**
+   * Replaces the compressor set (LZ4, zlib or LZMA, with its level) by the same class compressing
+   * up to `blocks` blocks of an array at once in parallel (DGMFLookAheadCompressor.h): the same
+   * bytes. Call after choosing the compressor type; nothing happens for another compressor.
+   */
+  void CompressAhead(int blocks);
+
 protected:
   DGMFVTUWriter();
   ~DGMFVTUWriter() override;
   int StartFile() override;
+  int EndFile() override;
   void WriteAppendedPieceData(int index) override;
 
 private:

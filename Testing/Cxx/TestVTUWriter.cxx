@@ -2,6 +2,8 @@
 // shortcuts taken only where VTK would choose the same.
 #include "DGMFVTUWriter.h"
 
+#include "DGMFLookAheadCompressor.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -110,9 +112,10 @@ vtkSmartPointer<vtkUnstructuredGrid> MixedGrid(bool quadratic)
   return grid;
 }
 
-/// The .vtu `writer` writes for `grid` (to a string), with the given mode and compressor.
-std::string Written(
-  vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* grid, bool appended, int compressor)
+/// The .vtu `writer` writes for `grid` (to a string), with the given mode and compressor, and,
+/// for a DGMFVTUWriter with `ahead` > 0, the compressor's blocks compressed that many at once.
+std::string Written(vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* grid, bool appended,
+  int compressor, int ahead = 0)
 {
   writer->SetInputData(grid);
   writer->WriteToOutputStringOn();
@@ -120,6 +123,10 @@ std::string Written(
   writer->SetEncodeAppendedData(0);
   writer->SetCompressorType(compressor);
   writer->SetBlockSize(1 << 12);
+  if (auto* ours = dgmf_cli::DGMFVTUWriter::SafeDownCast(writer); ours && ahead > 0)
+  {
+    ours->CompressAhead(ahead);
+  }
   EXPECT_EQ(writer->Write(), 1);
   EXPECT_EQ(writer->GetErrorCode(), 0u);
   return writer->GetOutputString();
@@ -131,7 +138,7 @@ std::string Written(
  * and a second write of the same arrays writes that cache into the header (VTK's behaviour).
  */
 void ExpectSameBytes(const std::function<vtkSmartPointer<vtkUnstructuredGrid>()>& make,
-  bool expectSkip, bool appended, int compressor)
+  bool expectSkip, bool appended, int compressor, int ahead = 0)
 {
   vtkNew<vtkXMLUnstructuredGridWriter> stock;
   const std::string expected = Written(stock, make(), appended, compressor);
@@ -140,7 +147,18 @@ void ExpectSameBytes(const std::function<vtkSmartPointer<vtkUnstructuredGrid>()>
   const int pointArrays = copy->GetPointData()->GetNumberOfArrays();
   vtkNew<dgmf_cli::DGMFVTUWriter> fast;
   EXPECT_EQ(fast->SkipCellTypeScan(copy), expectSkip);
-  const std::string actual = Written(fast, copy, appended, compressor);
+  const std::string actual = Written(fast, copy, appended, compressor, ahead);
+  if (ahead > 0)
+  {
+    // The blocks were compressed ahead (most handed to VTK from the cache).
+    auto* lookAhead = dynamic_cast<dgmf_cli::LookAheadCompressor*>(fast->GetCompressor());
+    ASSERT_NE(lookAhead, nullptr);
+    EXPECT_GT(lookAhead->GetCacheHits(), 0u);
+    if (ahead >= 5)
+    {
+      EXPECT_GT(lookAhead->GetCacheHits(), lookAhead->GetCacheMisses());
+    }
+  }
   EXPECT_EQ(copy->GetPointData()->GetNumberOfArrays(), pointArrays) << "ghost arrays left";
   EXPECT_GT(expected.size(), 1000u);
   if (expectSkip)
@@ -165,6 +183,23 @@ TEST(VTUWriter, WritesTheBytesOfVtksWriterForLinearCells)
     for (const int compressor : { vtkXMLWriterBase::LZ4, vtkXMLWriterBase::NONE })
     {
       ExpectSameBytes([]() { return MixedGrid(false); }, true, appended, compressor);
+    }
+  }
+}
+
+// Blocks compressed ahead in parallel: VTK's bytes with each of its compressors, appended and
+// inline, windows of 1 to 5 blocks (the arrays' last blocks are shorter).
+TEST(VTUWriter, CompressingAheadWritesTheBytesOfVtksWriter)
+{
+  for (const bool appended : { true, false })
+  {
+    for (const int compressor :
+      { vtkXMLWriterBase::LZ4, vtkXMLWriterBase::ZLIB, vtkXMLWriterBase::LZMA })
+    {
+      for (const int ahead : { 2, 5 })
+      {
+        ExpectSameBytes([]() { return MixedGrid(false); }, true, appended, compressor, ahead);
+      }
     }
   }
 }

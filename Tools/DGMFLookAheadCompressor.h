@@ -1,0 +1,51 @@
+/**
+ * @file DGMFLookAheadCompressor.h
+ * @brief VTK's data compressors (LZ4, zlib, LZMA) compressing the blocks ahead of VTK's XML
+ * writer in parallel, with the same bytes.
+ *
+ * vtkXMLWriter compresses an array's blocks one after the other, on one thread (about 0.5 s of
+ * LZ4 for an 8M-node grid). It hands the compressor each block where it lies in the array's
+ * memory (little-endian, no conversion); this compressor, told where the arrays lie
+ * (RegisterRange), compresses the requested block and the next ones of the same array at once
+ * with vtkSMPTools, and hands VTK the following blocks from that cache when it asks for them.
+ * Every block is compressed by VTK's own compressor class, so the bytes are VTK's; a block the
+ * cache does not have (another pointer or size) is compressed on the spot, as VTK would.
+ */
+#ifndef DGMFLookAheadCompressor_h
+#define DGMFLookAheadCompressor_h
+
+#include "vtkDataCompressor.h"
+#include "vtkSmartPointer.h" // for New's result
+
+#include <cstddef>
+#include <string>
+
+namespace dgmf_cli
+{
+
+/**
+ * The compressor of vtkXMLWriter's compressor type `type` ("lz4", "zlib" or "lzma"), compressing
+ * up to `lookAhead` blocks at once of the memory ranges given to RegisterRange (cast the result:
+ * LookAheadCompressor). Its class name is VTK's (the file records it). Null for another type.
+ */
+vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(const std::string& type, int lookAhead);
+
+/// The look-ahead part of the compressors of NewLookAheadCompressor.
+class LookAheadCompressor
+{
+public:
+  virtual ~LookAheadCompressor() = default;
+  /// Blocks inside [begin, begin + bytes) may be compressed ahead (the memory must not change
+  /// until the write ends).
+  virtual void RegisterRange(const void* begin, std::size_t bytes) = 0;
+  /// Forgets the ranges and the blocks compressed ahead.
+  virtual void ClearRanges() = 0;
+  /// Blocks handed from the cache, and blocks asked for that were not there (compressed on the
+  /// spot, with the blocks ahead of them when in a range), since the compressor was made.
+  virtual std::size_t GetCacheHits() const = 0;
+  virtual std::size_t GetCacheMisses() const = 0;
+};
+
+} // namespace dgmf_cli
+
+#endif
