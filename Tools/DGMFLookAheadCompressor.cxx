@@ -54,8 +54,8 @@ protected:
   LookAhead() = default;
   ~LookAhead() override = default;
 
-  size_t CompressBuffer(unsigned char const* data, size_t size, unsigned char* compressed,
-    size_t space) override
+  size_t CompressBuffer(
+    unsigned char const* data, size_t size, unsigned char* compressed, size_t space) override
   {
     const auto cached = this->Cache.find(data);
     if (cached != this->Cache.end() && cached->second.Size == size &&
@@ -110,8 +110,8 @@ private:
           const unsigned char* start = data + static_cast<std::size_t>(k) * size;
           block.Size = std::min<std::size_t>(size, static_cast<std::size_t>(range.End - start));
           block.Bytes.resize(this->GetMaximumCompressionSpace(block.Size));
-          block.Bytes.resize(this->Base::CompressBuffer(
-            start, block.Size, block.Bytes.data(), block.Bytes.size()));
+          block.Bytes.resize(
+            this->Base::CompressBuffer(start, block.Size, block.Bytes.data(), block.Bytes.size()));
         }
       });
     for (std::size_t k = 1; k < count; ++k)
@@ -136,8 +136,8 @@ private:
 template <class Base>
 vtkSmartPointer<vtkDataCompressor> Make(int lookAhead)
 {
-  vtkSmartPointer<LookAhead<Base>> compressor = vtkSmartPointer<LookAhead<Base>>::Take(
-    LookAhead<Base>::New());
+  vtkSmartPointer<LookAhead<Base>> compressor =
+    vtkSmartPointer<LookAhead<Base>>::Take(LookAhead<Base>::New());
   compressor->SetLookAhead(lookAhead);
   return compressor;
 }
