@@ -3,7 +3,7 @@
 // meshes without bad cells are left bit for bit; results do not depend on the ParallelFor.
 #include "TwoThreadFor.h"
 #include "dgmf/LocalRepair.h"
-#include "dgmf/NodeRepairer.h"
+#include "dgmf/RepairTetraForm.h"
 
 #include <gtest/gtest.h>
 

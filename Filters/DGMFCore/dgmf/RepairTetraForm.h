@@ -1,0 +1,110 @@
+/**
+ * @file RepairTetraForm.h
+ * @brief The quality guard's view of a tetrahedron while one of its corners moves (private to the
+ * core: NodeRepairer uses it): its SizeSkew, the cube of it and its gradient as functions of that
+ * corner's position, without the cell's other corners or connectivity.
+ */
+#ifndef dgmf_RepairTetraForm_h
+#define dgmf_RepairTetraForm_h
+
+#include "dgmf/CellGeometry.h"
+#include "dgmf/SizeSkewQuality.h"
+
+#include <algorithm>
+
+namespace dgmf
+{
+namespace repair
+{
+
+/**
+ * A tetrahedron seen from one of its corners while the others stay: its corner Jacobian is
+ * affine and its squared edges quadratic in that corner's position y, so its SizeSkew at y
+ * (TetraSizeSkew) needs neither the cell's corners nor its connectivity.
+ */
+struct TetraForm
+{
+  bool Usable = false;          ///< a non-degenerate tetrahedron (the others are evaluated in full)
+  Vec3 Normal{ 0.0, 0.0, 0.0 }; ///< alpha(y) = Normal . (y - Others[0]), original orientation
+  Vec3 Others[3];               ///< the three corners that stay
+  double OppositeEdges = 0.0;   ///< squared lengths of the three edges between them
+  double OriginalAlpha = 0.0;   ///< the original cell's corner Jacobian (> 0)
+  double InverseOriginalAlpha = 0.0; ///< 1 / OriginalAlpha
+
+  /// The corner Jacobian and the sum of the squared edges with the corner at `y`.
+  void Measure(const Vec3& y, double& alpha, double& edgeSquares) const
+  {
+    const Vec3 d0 = y - this->Others[0];
+    const Vec3 d1 = y - this->Others[1];
+    const Vec3 d2 = y - this->Others[2];
+    alpha = Dot(this->Normal, d0);
+    edgeSquares = Dot(d0, d0) + Dot(d1, d1) + Dot(d2, d2) + this->OppositeEdges;
+  }
+
+  /// The cell's SizeSkew with the corner at `y` (equal to ComputeSizeSkew up to round-off).
+  CellQuality Evaluate(const Vec3& y) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    return TetraSizeSkew(alpha, edgeSquares, this->OriginalAlpha);
+  }
+
+  /**
+   * The cube of the cell's SizeSkew with the corner at `y`, without a cube root:
+   * 432 f_size^3 alpha^2 / edgeSquares^3 (TetraSizeSkew), in [0, 1], 0 for values that are not
+   * numbers; 0 with `inverted` set for an inverted cell. Cubes order cells as their values do.
+   */
+  double CubedSizeSkew(const Vec3& y, bool& inverted) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    if (!(alpha > 0.0))
+    {
+      inverted = true;
+      return 0.0;
+    }
+    // 432 (alpha / edgeSquares)^2 / edgeSquares times tau^3 (smaller than the original) or
+    // divided by it (larger), with two divisions; alpha / edgeSquares keeps the powers in range.
+    const double ratio = alpha / edgeSquares;
+    const double tau = alpha * this->InverseOriginalAlpha;
+    const double tau3 = tau * tau * tau;
+    const bool smaller = tau < 1.0;
+    const double cube =
+      (432.0 * ratio * ratio * (smaller ? tau3 : 1.0)) / (edgeSquares * (smaller ? 1.0 : tau3));
+    return cube > 0.0 ? std::min(cube, 1.0) : 0.0;
+  }
+
+  /**
+   * The gradient of the cell's SizeSkew with respect to the corner at `y`, where it is `quality`
+   * (> 0): quality ((+-1 + 2/3) grad alpha / alpha - grad edgeSquares / edgeSquares), +1 while
+   * the cell is smaller than the original (f_size = tau), -1 once larger (f_size = 1 / tau).
+   */
+  Vec3 Gradient(const Vec3& y, double quality) const
+  {
+    double alpha, edgeSquares;
+    this->Measure(y, alpha, edgeSquares);
+    if (!(alpha > 0.0 && edgeSquares > 0.0))
+    {
+      return Vec3{ 0.0, 0.0, 0.0 };
+    }
+    const double sizeSign = alpha < this->OriginalAlpha ? 1.0 : -1.0;
+    const Vec3 edgeGradient =
+      2.0 * ((y - this->Others[0]) + (y - this->Others[1]) + (y - this->Others[2]));
+    return quality *
+      (((sizeSign + 2.0 / 3.0) / alpha) * this->Normal - (1.0 / edgeSquares) * edgeGradient);
+  }
+};
+
+/**
+ * The form of a tetrahedron whose current corners are `corners` (12 coordinates, VTK order) seen
+ * from corner `corner`: `orientation` is the sign of the original cell's corner Jacobian and
+ * `originalAlpha` its absolute value. Not usable if that is not positive or the others'
+ * coordinates are not finite.
+ */
+TetraForm MakeTetraForm(
+  const double* corners, int corner, double orientation, double originalAlpha);
+
+} // namespace repair
+} // namespace dgmf
+
+#endif
