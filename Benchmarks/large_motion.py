@@ -114,8 +114,8 @@ def main():
         for angle, label, options, result, seconds, ratio in rows:
             page.write("| %d | %s | `%s` | %.3f | %.3f | %s | %s | %s | %s | %.3f | %.1f |\n" % (
                 angle, label, options, float(result["mean"]), float(result["minimum"]),
-                result["inverted"], result["steps"] or "1", result["repaired"] or "0",
-                result["left"] or "0", seconds, ratio))
+                result["inverted"], result["steps"] or "1", result["repaired"] or "-",
+                result["left"] or "-", seconds, ratio))
         page.write("\nTargets of issue 10: at 90 degrees no inverted cell and a minimum of at "
                    "least 0.2; at 60 degrees a minimum of at least 0.3; at most 10 times the "
                    "single step's time.\n")

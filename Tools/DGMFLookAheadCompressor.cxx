@@ -6,6 +6,7 @@
 #include "vtkZLibDataCompressor.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <map>
 #include <vector>
@@ -70,9 +71,12 @@ protected:
     }
     ++this->Misses;
     this->Cache.clear(); // VTK has moved on: what is left ahead will not be asked for
+    // Addresses compared as integers (pointers into different arrays do not compare in C++).
+    const auto at = reinterpret_cast<std::uintptr_t>(data);
     for (const Range& range : this->Ranges)
     {
-      if (size > 0 && data >= range.Begin && data + size <= range.End)
+      if (size > 0 && at >= reinterpret_cast<std::uintptr_t>(range.Begin) &&
+        at + size <= reinterpret_cast<std::uintptr_t>(range.End))
       {
         return this->CompressAhead(range, data, size, compressed, space);
       }
@@ -90,6 +94,7 @@ private:
   {
     std::size_t Size = 0; ///< uncompressed size
     std::vector<unsigned char> Bytes;
+    bool Ready = false; ///< compressed (a failure is left to the caller's thread, as VTK would)
   };
 
   /// Compresses the block at `data` and up to Blocks - 1 blocks after it in `range`, in parallel;
@@ -109,16 +114,28 @@ private:
           Block& block = blocks[static_cast<std::size_t>(k)];
           const unsigned char* start = data + static_cast<std::size_t>(k) * size;
           block.Size = std::min<std::size_t>(size, static_cast<std::size_t>(range.End - start));
-          block.Bytes.resize(this->GetMaximumCompressionSpace(block.Size));
-          block.Bytes.resize(
-            this->Base::CompressBuffer(start, block.Size, block.Bytes.data(), block.Bytes.size()));
+          try
+          {
+            block.Bytes.resize(this->GetMaximumCompressionSpace(block.Size));
+            const size_t length =
+              this->Base::CompressBuffer(start, block.Size, block.Bytes.data(), block.Bytes.size());
+            block.Bytes.resize(length);
+            block.Ready = length > 0;
+          }
+          catch (...)
+          {
+            block.Ready = false; // compressed again on the caller's thread when asked for
+          }
         }
       });
     for (std::size_t k = 1; k < count; ++k)
     {
-      this->Cache[data + k * size] = std::move(blocks[k]);
+      if (blocks[k].Ready)
+      {
+        this->Cache[data + k * size] = std::move(blocks[k]);
+      }
     }
-    if (blocks[0].Bytes.size() > space)
+    if (!blocks[0].Ready || blocks[0].Bytes.size() > space)
     {
       return this->Base::CompressBuffer(data, size, compressed, space);
     }

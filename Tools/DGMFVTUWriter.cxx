@@ -230,7 +230,7 @@ int DGMFVTUWriter::StartFile()
   if (auto* ahead = dynamic_cast<LookAheadCompressor*>(this->GetCompressor()))
   {
     ahead->ClearRanges();
-    if (grid)
+    if (grid && this->GetNumberOfPieces() == 1) // pieces would need their own ranges
     {
       if (grid->GetPoints())
       {

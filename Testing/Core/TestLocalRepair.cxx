@@ -825,7 +825,6 @@ TEST(LocalRepair, GivesUpOnlyWhenThePassesLeftCannotRemoveTheBadCells)
     parameters.GiveUpWhenHopeless = giveUp;
     return Repair(grid, parameters);
   };
-  std::size_t successes = 0;
   for (double threshold : { 0.5, 0.6, 0.7 })
   {
     for (double amplitude : { 0.3, 0.4 })
@@ -839,10 +838,8 @@ TEST(LocalRepair, GivesUpOnlyWhenThePassesLeftCannotRemoveTheBadCells)
       EXPECT_EQ(
         std::memcmp(with.Points.data(), without.Points.data(), with.Points.size() * sizeof(double)),
         0);
-      ++successes;
     }
   }
-  EXPECT_EQ(successes, 6u);
 
   TestMesh hopeless, hopelessAllPasses;
   const RepairReport givenUp = run(0.4, 0.75, true, hopeless);

@@ -188,7 +188,7 @@ TEST(VTUWriter, WritesTheBytesOfVtksWriterForLinearCells)
 }
 
 // Blocks compressed ahead in parallel: VTK's bytes with each of its compressors, appended and
-// inline, windows of 1 to 5 blocks (the arrays' last blocks are shorter).
+// inline, windows of 2 and 5 blocks (the arrays' last blocks are shorter).
 TEST(VTUWriter, CompressingAheadWritesTheBytesOfVtksWriter)
 {
   for (const bool appended : { true, false })

@@ -32,10 +32,12 @@ struct RepairParameters
   /// Most Gauss-Seidel passes over the free nodes (0: only count the bad cells).
   int MaximumPasses = 20;
   /**
-   * Stop early when the passes left cannot remove the bad cells: from the third pass on, when
-   * the bad cells' count, shrinking by the factor of the last pass, would not reach 0 within
-   * MaximumPasses (or did not shrink at all). For callers that have something better to do with
-   * such a step (sub-steps: halve it); off by default (every pass is run). See GaveUp.
+   * Stop early when the passes left cannot remove the bad cells: before each pass from the
+   * fourth on, when the bad cells' count, falling by as many cells a pass as in the last pass,
+   * would not reach 0 within the passes left (or did not fall at all), while it is still at
+   * least a tenth of the count before the first pass. For callers that have something better
+   * to do with such a step (sub-steps: halve it); off by default (every pass is run). See
+   * GaveUp.
    */
   bool GiveUpWhenHopeless = false;
   /// Told after each pass (the fraction of MaximumPasses); may stop the repair (Aborted).

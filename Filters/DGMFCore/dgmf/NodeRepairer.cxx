@@ -164,43 +164,28 @@ std::size_t NodeRepairer::CountRepairableBadCells(double threshold) const
   return count;
 }
 
-double NodeRepairer::IncidentMinimum(const FreeNode& node, const Vec3& position, bool& inverted,
-  double* qualities, double cutoff, std::size_t first) const
+void NodeRepairer::IncidentQualities(
+  const FreeNode& node, const Vec3& position, double* qualities) const
 {
   double corners[3 * kMaximumCorners];
-  double minimum = kInfinity;
-  inverted = false;
   const std::size_t count = node.CellEnd - node.CellBegin;
-  for (std::size_t j = 0; j < count; ++j)
+  for (std::size_t offset = 0; offset < count; ++offset)
   {
-    const std::size_t offset = (first + j) % count;
     const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
     if (cell.Degenerate)
     {
       continue;
     }
-    CellQuality quality;
     if (this->FormsNode == node.Id && this->Forms[offset].Usable)
     {
-      quality = this->Forms[offset].Evaluate(position);
+      qualities[offset] = this->Forms[offset].Evaluate(position).SizeSkew;
     }
     else
     {
       this->GatherWith(cell, node.Id, position, corners);
-      quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
-    }
-    inverted = inverted || quality.Inverted;
-    minimum = std::min(minimum, quality.SizeSkew);
-    if (qualities != nullptr)
-    {
-      qualities[offset] = quality.SizeSkew;
-    }
-    else if (minimum <= cutoff)
-    {
-      break;
+      qualities[offset] = ComputeCellSizeSkew(cell.Shape, cell.Original, corners).SizeSkew;
     }
   }
-  return minimum;
 }
 
 double NodeRepairer::TrialMinimumCube(const FreeNode& node, const Vec3& position, bool& inverted,
@@ -444,8 +429,8 @@ void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
 {
   Store(position, this->Points, node.Id);
-  // The node's own forms (SmoothNode) give its tetrahedra's values at the new position, the
-  // values its trials were judged by; after the move its neighbours' forms would need it anew.
+  // The node's own forms (SmoothNode) give its tetrahedra's values at the new position (the
+  // trials were judged by their cubes); after the move its neighbours' forms would need it anew.
   const bool forms = this->FormsNode == node.Id;
   this->FormsNode = -1;
   double corners[3 * kMaximumCorners];

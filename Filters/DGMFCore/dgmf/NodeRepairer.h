@@ -163,14 +163,10 @@ private:
   /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables, and
   /// TetraCorner.
   void CollectEdgeEnds();
-  /**
-   * Minimum SizeSkew over the node's cells (0 if one is inverted) with the node at `position`;
-   * per-cell values to `qualities` if not null; `inverted` tells if one is inverted. Without
-   * `qualities`, stops at the first cell at or below `cutoff` (the caller rejects such a point
-   * anyway), starting with the cell at offset `first` (the worst one, most likely to stop it).
-   */
-  double IncidentMinimum(const FreeNode& node, const Vec3& position, bool& inverted,
-    double* qualities, double cutoff = -kInfinity, std::size_t first = 0) const;
+  /// SizeSkew of each of the node's cells with the node at `position`, to `qualities` (by
+  /// offset in its cells; degenerate cells are not written): the forward differences of the
+  /// gradients of cells without a TetraForm.
+  void IncidentQualities(const FreeNode& node, const Vec3& position, double* qualities) const;
   /**
    * The cube of the minimum SizeSkew over the node's cells with the node at `position` (its
    * tetrahedra through Forms, prepared for this node), stopping at the first cell whose cube is

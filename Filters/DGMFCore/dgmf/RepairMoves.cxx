@@ -118,7 +118,6 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
     return false;
   }
   this->PrepareForms(node);
-  this->PrepareForms(node);
   std::size_t worst = 0;
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {
@@ -171,8 +170,7 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
   const double delta = kGradientStep * h;
   for (int d = 0; differences && d < node.Dimension; ++d)
   {
-    bool inverted;
-    this->IncidentMinimum(node, x + delta * node.Basis[d], inverted, this->Margins.data());
+    this->IncidentQualities(node, x + delta * node.Basis[d], this->Margins.data());
     for (std::size_t i = 0; i < count; ++i)
     {
       const double slope = (this->Margins[i] - this->Qualities0[i]) / delta;

@@ -194,7 +194,10 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
     repair.MaximumPasses = parameters.Repair ? parameters.RepairPasses : 0;
     repair.Progress = parameters.Progress.Part(s, next);
     // A step the guard cannot clean is halved anyway: the guard gives it up as soon as its passes
-    // show that, instead of running them all (unless the step cannot be halved any more).
+    // show that, instead of running them all (unless the step cannot be halved any more). A step
+    // given up is halved, or, when it is itself a halving and has at least as many bad cells left
+    // after its few passes as the longer step after all of its own, shows that halving does not
+    // help: the longer step is then taken, as before. It is never taken itself.
     repair.GiveUpWhenHopeless = automatic && step > minimumStep;
     RepairReport repaired;
     if (parameters.Repair || automatic)
