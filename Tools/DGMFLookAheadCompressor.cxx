@@ -161,17 +161,18 @@ vtkSmartPointer<vtkDataCompressor> Make(int lookAhead)
 
 } // namespace
 
-vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(const std::string& type, int lookAhead)
+vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(
+  const std::string& className, int lookAhead)
 {
-  if (type == "lz4")
+  if (className == "vtkLZ4DataCompressor")
   {
     return Make<vtkLZ4DataCompressor>(lookAhead);
   }
-  if (type == "zlib")
+  if (className == "vtkZLibDataCompressor")
   {
     return Make<vtkZLibDataCompressor>(lookAhead);
   }
-  if (type == "lzma")
+  if (className == "vtkLZMADataCompressor")
   {
     return Make<vtkLZMADataCompressor>(lookAhead);
   }

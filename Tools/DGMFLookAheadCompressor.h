@@ -24,11 +24,13 @@ namespace dgmf_cli
 {
 
 /**
- * The compressor of vtkXMLWriter's compressor type `type` ("lz4", "zlib" or "lzma"), compressing
- * up to `lookAhead` blocks at once of the memory ranges given to RegisterRange (cast the result:
- * LookAheadCompressor). Its class name is VTK's (the file records it). Null for another type.
+ * A compressor of VTK's class `className` (vtkLZ4DataCompressor, vtkZLibDataCompressor or
+ * vtkLZMADataCompressor), compressing up to `lookAhead` blocks at once of the memory ranges given
+ * to RegisterRange (cast the result: LookAheadCompressor). Its class name is VTK's (the file
+ * records it). Null for another class.
  */
-vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(const std::string& type, int lookAhead);
+vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(
+  const std::string& className, int lookAhead);
 
 /// The look-ahead part of the compressors of NewLookAheadCompressor.
 class LookAheadCompressor

@@ -174,12 +174,8 @@ void DGMFVTUWriter::CompressAhead(int blocks)
   {
     return;
   }
-  const std::string name = current->GetClassName();
-  const std::string type = name == "vtkLZ4DataCompressor" ? "lz4"
-    : name == "vtkZLibDataCompressor"                     ? "zlib"
-    : name == "vtkLZMADataCompressor"                     ? "lzma"
-                                                          : "";
-  vtkSmartPointer<vtkDataCompressor> ahead = NewLookAheadCompressor(type, blocks);
+  vtkSmartPointer<vtkDataCompressor> ahead =
+    NewLookAheadCompressor(current->GetClassName(), blocks);
   if (ahead)
   {
     ahead->SetCompressionLevel(current->GetCompressionLevel());
@@ -197,6 +193,24 @@ void RegisterArray(LookAheadCompressor* compressor, vtkAbstractArray* array)
     compressor->RegisterRange(array->GetVoidPointer(0),
       static_cast<std::size_t>(array->GetNumberOfValues()) *
         static_cast<std::size_t>(array->GetDataTypeSize()));
+  }
+}
+
+/// Calls `visit` with the grid's point coordinates (if any) and each point and cell array.
+template <typename Visit>
+void ForEachPointAndCellArray(vtkUnstructuredGrid* grid, Visit visit)
+{
+  if (grid->GetPoints())
+  {
+    visit(grid->GetPoints()->GetData());
+  }
+  for (vtkDataSetAttributes* arrays : { static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(grid->GetCellData()) })
+  {
+    for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+    {
+      visit(arrays->GetAbstractArray(k));
+    }
   }
 }
 } // namespace
@@ -232,25 +246,14 @@ int DGMFVTUWriter::StartFile()
     ahead->ClearRanges();
     if (grid && this->GetNumberOfPieces() == 1) // pieces would need their own ranges
     {
-      if (grid->GetPoints())
-      {
-        RegisterArray(ahead, grid->GetPoints()->GetData());
-      }
+      ForEachPointAndCellArray(
+        grid, [ahead](vtkAbstractArray* array) { RegisterArray(ahead, array); });
       if (vtkCellArray* cells = grid->GetCells())
       {
         RegisterArray(ahead, cells->GetConnectivityArray());
         RegisterArray(ahead, cells->GetOffsetsArray());
       }
       RegisterArray(ahead, grid->GetCellTypesArray());
-      for (vtkDataSetAttributes* arrays :
-        { static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
-          static_cast<vtkDataSetAttributes*>(grid->GetCellData()) })
-      {
-        for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
-        {
-          RegisterArray(ahead, arrays->GetAbstractArray(k));
-        }
-      }
     }
   }
   return this->Superclass::StartFile();
@@ -263,18 +266,8 @@ void DGMFVTUWriter::WriteAppendedPieceData(int index)
   // InformationKey elements into the header.
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput()))
   {
-    if (grid->GetPoints())
-    {
-      CacheRange(grid->GetPoints()->GetData());
-    }
-    for (vtkDataSetAttributes* arrays : { static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
-           static_cast<vtkDataSetAttributes*>(grid->GetCellData()) })
-    {
-      for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
-      {
-        CacheRange(arrays->GetArray(k));
-      }
-    }
+    ForEachPointAndCellArray(
+      grid, [](vtkAbstractArray* array) { CacheRange(vtkDataArray::SafeDownCast(array)); });
   }
   this->Superclass::WriteAppendedPieceData(index);
 }
