@@ -83,6 +83,7 @@ std::size_t NodeRepairer::Run(
   this->Threshold = threshold;
   this->FormsNode = -1;
   this->CollectEdgeEnds();
+  this->CollectTetraCorners();
   std::size_t passes = 0;
   this->Dirty.assign(this->Nodes.size(), 1);
   std::size_t previous = 0, first = 0;
@@ -164,26 +165,28 @@ std::size_t NodeRepairer::CountRepairableBadCells(double threshold) const
   return count;
 }
 
+CellQuality NodeRepairer::QualityAt(
+  const FreeNode& node, std::size_t offset, const Vec3& position) const
+{
+  if (this->FormsNode == node.Id && this->Forms[offset].Usable)
+  {
+    return this->Forms[offset].Evaluate(position);
+  }
+  const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
+  double corners[3 * kMaximumCorners];
+  this->GatherWith(cell, node.Id, position, corners);
+  return ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
+}
+
 void NodeRepairer::IncidentQualities(
   const FreeNode& node, const Vec3& position, double* qualities) const
 {
-  double corners[3 * kMaximumCorners];
   const std::size_t count = node.CellEnd - node.CellBegin;
   for (std::size_t offset = 0; offset < count; ++offset)
   {
-    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
-    if (cell.Degenerate)
+    if (!this->Cells[this->Incident[node.CellBegin + offset]].Degenerate)
     {
-      continue;
-    }
-    if (this->FormsNode == node.Id && this->Forms[offset].Usable)
-    {
-      qualities[offset] = this->Forms[offset].Evaluate(position).SizeSkew;
-    }
-    else
-    {
-      this->GatherWith(cell, node.Id, position, corners);
-      qualities[offset] = ComputeCellSizeSkew(cell.Shape, cell.Original, corners).SizeSkew;
+      qualities[offset] = this->QualityAt(node, offset, position).SizeSkew;
     }
   }
 }
@@ -332,6 +335,10 @@ void NodeRepairer::CollectEdgeEnds()
     }
     node.EdgeEnd = this->EdgeEnds.size();
   }
+}
+
+void NodeRepairer::CollectTetraCorners()
+{
   this->TetraCorner.assign(this->Incident.size(), -1);
   for (const FreeNode& node : this->Nodes)
   {
@@ -431,22 +438,10 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
   Store(position, this->Points, node.Id);
   // The node's own forms (SmoothNode) give its tetrahedra's values at the new position (the
   // trials were judged by their cubes); after the move its neighbours' forms would need it anew.
-  const bool forms = this->FormsNode == node.Id;
-  this->FormsNode = -1;
-  double corners[3 * kMaximumCorners];
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {
     ActiveCell& cell = this->Cells[this->Incident[i]];
-    CellQuality quality;
-    if (forms && this->Forms[i - node.CellBegin].Usable)
-    {
-      quality = this->Forms[i - node.CellBegin].Evaluate(position);
-    }
-    else
-    {
-      this->GatherWith(cell, node.Id, position, corners);
-      quality = ComputeCellSizeSkew(cell.Shape, cell.Original, corners);
-    }
+    const CellQuality quality = this->QualityAt(node, i - node.CellBegin, position);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; k < cell.NumberOfNodes; ++k)
@@ -458,6 +453,7 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
       }
     }
   }
+  this->FormsNode = -1;
 }
 
 bool NodeRepairer::StepNode(FreeNode& node)

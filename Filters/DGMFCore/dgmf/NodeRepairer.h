@@ -160,9 +160,13 @@ private:
   void GatherWith(
     const ActiveCell& cell, std::int64_t node, const Vec3& position, double* out) const;
   std::size_t CountRepairableBadCells(double threshold) const;
-  /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables, and
-  /// TetraCorner.
+  /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables.
   void CollectEdgeEnds();
+  /// Fills TetraCorner.
+  void CollectTetraCorners();
+  /// SizeSkew of the node's cell at `offset` (in its cells) with the node at `position`: from
+  /// its TetraForm when the forms are this node's and it has one, else in full.
+  CellQuality QualityAt(const FreeNode& node, std::size_t offset, const Vec3& position) const;
   /// SizeSkew of each of the node's cells with the node at `position`, to `qualities` (by
   /// offset in its cells; degenerate cells are not written): the forward differences of the
   /// gradients of cells without a TetraForm.
