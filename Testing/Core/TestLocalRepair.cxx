@@ -3,7 +3,6 @@
 // meshes without bad cells are left bit for bit; results do not depend on the ParallelFor.
 #include "TwoThreadFor.h"
 #include "dgmf/LocalRepair.h"
-#include "dgmf/RepairTetraForm.h"
 
 #include <gtest/gtest.h>
 
@@ -729,85 +728,6 @@ TEST(LocalRepair, RejectsInvalidInput)
   TestMesh empty;
   const RepairReport report = Repair(empty, RepairParameters());
   EXPECT_EQ(report.BadCellsBefore, 0u);
-}
-
-TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
-{
-  // The guard judges a moving node's tetrahedra through forms affine (the Jacobian) and quadratic
-  // (the squared edges) in the node's position. For every corner of random tetrahedra of both
-  // orientations, the form at random positions equals ComputeSizeSkew of the cell with that
-  // corner moved, its cube (no cube root) is the value's cube, and its gradient is the full
-  // metric's by central differences.
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::size_t checked = 0, inverted = 0, gradients = 0;
-  const auto alphaOf = [](const double* p) // the corner Jacobian det(p1 - p0, p2 - p0, p3 - p0)
-  {
-    const dgmf::Vec3 o = dgmf::Load(p, 0);
-    return dgmf::Dot(dgmf::Cross(dgmf::Load(p, 1) - o, dgmf::Load(p, 2) - o), dgmf::Load(p, 3) - o);
-  };
-  for (int t = 0; t < 500; ++t)
-  {
-    double original[12];
-    for (int k = 0; k < 12; ++k)
-      original[k] = unit(random);
-    for (int corner = 0; corner < 4; ++corner)
-    {
-      double deformed[12];
-      for (int k = 0; k < 12; ++k)
-        deformed[k] = original[k] + 0.2 * unit(random);
-      const double alpha0 = alphaOf(original);
-      const dgmf::repair::TetraForm form =
-        dgmf::repair::MakeTetraForm(deformed, corner, alpha0 < 0.0 ? -1.0 : 1.0, std::abs(alpha0));
-      if (!form.Usable)
-        continue; // a degenerate original
-      for (int trial = 0; trial < 4; ++trial)
-      {
-        const dgmf::Vec3 y{ 1.5 * unit(random), 1.5 * unit(random), 1.5 * unit(random) };
-        double moved[12];
-        std::copy(deformed, deformed + 12, moved);
-        dgmf::Store(y, moved, corner);
-        const CellQuality full = dgmf::ComputeSizeSkew(CellShape::Tetra, original, moved);
-        const CellQuality viaForm = form.Evaluate(y);
-        ASSERT_EQ(full.Inverted, viaForm.Inverted) << "case " << t << " corner " << corner;
-        ASSERT_NEAR(viaForm.SizeSkew, full.SizeSkew, 1e-12) << "case " << t;
-        bool cubeInverted = false;
-        const double cube = form.CubedSizeSkew(y, cubeInverted);
-        ASSERT_EQ(cubeInverted, full.Inverted) << "case " << t;
-        ASSERT_NEAR(cube, std::pow(full.SizeSkew, 3.0), 1e-12) << "case " << t;
-        if (!full.Inverted && full.SizeSkew > 1e-3 && full.SizeSkew < 1.0)
-        {
-          // The gradient against central differences of the full metric.
-          const double step = 1e-6;
-          const dgmf::Vec3 gradient = form.Gradient(y, full.SizeSkew);
-          for (int d = 0; d < 3; ++d)
-          {
-            double ahead[12], behind[12];
-            std::copy(moved, moved + 12, ahead);
-            std::copy(moved, moved + 12, behind);
-            ahead[3 * corner + d] += step;
-            behind[3 * corner + d] -= step;
-            const double slope =
-              (dgmf::ComputeSizeSkew(CellShape::Tetra, original, ahead).SizeSkew -
-                dgmf::ComputeSizeSkew(CellShape::Tetra, original, behind).SizeSkew) /
-              (2.0 * step);
-            const double component = d == 0 ? gradient.X : d == 1 ? gradient.Y : gradient.Z;
-            // The size term has a kink where the volume equals the original's (tau = 1).
-            if (std::abs(alphaOf(moved) / alpha0 - 1.0) > 1e-3)
-            {
-              ASSERT_NEAR(component, slope, 1e-5 * (1.0 + std::abs(slope))) << "case " << t;
-              ++gradients;
-            }
-          }
-        }
-        ++checked;
-        inverted += full.Inverted ? 1 : 0;
-      }
-    }
-  }
-  EXPECT_GT(checked, 7000u);
-  EXPECT_GT(inverted, 1000u);
-  EXPECT_GT(gradients, 5000u);
 }
 
 TEST(LocalRepair, GivesUpOnlyWhenThePassesLeftCannotRemoveTheBadCells)

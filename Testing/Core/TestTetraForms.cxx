@@ -1,0 +1,149 @@
+// A tetrahedron's SizeSkew from three numbers (core TetraSizeSkew) and the quality guard's view of
+// a tetrahedron while one corner moves (repair::TetraForm): both against the full metric.
+#include "dgmf/RepairTetraForm.h"
+#include "dgmf/SizeSkewQuality.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+
+using dgmf::CellQuality;
+using dgmf::CellShape;
+using dgmf::ComputeSizeSkew;
+
+TEST(SizeSkewQuality, TetraFromThreeNumbersIsTheTetrahedronsSizeSkew)
+{
+  // Random tetrahedra of both orientations and of sizes 1e-3 to 1e3, moved by up to twice their
+  // size (some inverted): TetraSizeSkew from (alpha, squared edges, original alpha) is
+  // ComputeSizeSkew up to round-off, and inverted exactly when ComputeSizeSkew says so.
+  std::mt19937 random(23);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t inverted = 0, valid = 0;
+  for (int t = 0; t < 4000; ++t)
+  {
+    const double scale = std::pow(10.0, 3.0 * unit(random));
+    const double amplitude = t % 3 == 0 ? 2.0 : 0.3;
+    double original[12], deformed[12];
+    for (int k = 0; k < 12; ++k)
+    {
+      original[k] = scale * unit(random);
+      deformed[k] = original[k] + amplitude * scale * unit(random);
+    }
+    const auto alphaOf = [](const double* p)
+    {
+      double e[3][3];
+      for (int c = 0; c < 3; ++c)
+        for (int d = 0; d < 3; ++d)
+          e[c][d] = p[3 * (c + 1) + d] - p[d];
+      return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    };
+    const double alpha0 = alphaOf(original);
+    if (std::abs(alpha0) < 1e-3 * scale * scale * scale)
+      continue; // nearly flat originals: their inversion is decided at round-off
+    const double orientation = alpha0 > 0.0 ? 1.0 : -1.0;
+    const double alpha = orientation * alphaOf(deformed);
+    double edgeSquares = 0.0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        for (int d = 0; d < 3; ++d)
+          edgeSquares += std::pow(deformed[3 * b + d] - deformed[3 * a + d], 2);
+    const CellQuality full = ComputeSizeSkew(CellShape::Tetra, original, deformed);
+    const CellQuality fromNumbers = dgmf::TetraSizeSkew(alpha, edgeSquares, orientation * alpha0);
+    if (std::abs(alpha) < 1e-9 * scale * scale * scale)
+      continue; // flat after the motion: either verdict is round-off
+    ASSERT_EQ(full.Inverted, fromNumbers.Inverted) << "case " << t;
+    EXPECT_NEAR(fromNumbers.SizeSkew, full.SizeSkew, 1e-13) << "case " << t;
+    (full.Inverted ? inverted : valid) += 1;
+  }
+  EXPECT_GT(inverted, 100u);
+  EXPECT_GT(valid, 1000u);
+  // Not numbers score 0 (inverted), never NaN.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(dgmf::TetraSizeSkew(nan, 1.0, 1.0).Inverted);
+  EXPECT_EQ(dgmf::TetraSizeSkew(1.0, nan, 1.0).SizeSkew, 0.0);
+}
+
+TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
+{
+  // The guard judges a moving node's tetrahedra through forms affine (the Jacobian) and quadratic
+  // (the squared edges) in the node's position. For every corner of random tetrahedra of both
+  // orientations, the form at random positions equals ComputeSizeSkew of the cell with that
+  // corner moved, its cube (no cube root) is the value's cube, and its gradient is the full
+  // metric's by central differences.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t checked = 0, inverted = 0, gradients = 0;
+  const auto alphaOf = [](const double* p) // the corner Jacobian det(p1 - p0, p2 - p0, p3 - p0)
+  {
+    const dgmf::Vec3 o = dgmf::Load(p, 0);
+    return dgmf::Dot(dgmf::Cross(dgmf::Load(p, 1) - o, dgmf::Load(p, 2) - o), dgmf::Load(p, 3) - o);
+  };
+  for (int t = 0; t < 500; ++t)
+  {
+    double original[12];
+    for (int k = 0; k < 12; ++k)
+      original[k] = unit(random);
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      double deformed[12];
+      for (int k = 0; k < 12; ++k)
+        deformed[k] = original[k] + 0.2 * unit(random);
+      const double alpha0 = alphaOf(original);
+      const dgmf::repair::TetraForm form =
+        dgmf::repair::MakeTetraForm(deformed, corner, alpha0 < 0.0 ? -1.0 : 1.0, std::abs(alpha0));
+      if (!form.Usable)
+        continue; // a degenerate original
+      for (int trial = 0; trial < 4; ++trial)
+      {
+        const dgmf::Vec3 y{ 1.5 * unit(random), 1.5 * unit(random), 1.5 * unit(random) };
+        double moved[12];
+        std::copy(deformed, deformed + 12, moved);
+        dgmf::Store(y, moved, corner);
+        const CellQuality full = dgmf::ComputeSizeSkew(CellShape::Tetra, original, moved);
+        const CellQuality viaForm = form.Evaluate(y);
+        ASSERT_EQ(full.Inverted, viaForm.Inverted) << "case " << t << " corner " << corner;
+        ASSERT_NEAR(viaForm.SizeSkew, full.SizeSkew, 1e-12) << "case " << t;
+        bool cubeInverted = false;
+        const double cube = form.CubedSizeSkew(y, cubeInverted);
+        ASSERT_EQ(cubeInverted, full.Inverted) << "case " << t;
+        ASSERT_NEAR(cube, std::pow(full.SizeSkew, 3.0), 1e-12) << "case " << t;
+        if (!full.Inverted && full.SizeSkew > 1e-3 && full.SizeSkew < 1.0)
+        {
+          // The gradient against central differences of the full metric.
+          const double step = 1e-6;
+          const dgmf::Vec3 gradient = form.Gradient(y, full.SizeSkew);
+          for (int d = 0; d < 3; ++d)
+          {
+            double ahead[12], behind[12];
+            std::copy(moved, moved + 12, ahead);
+            std::copy(moved, moved + 12, behind);
+            ahead[3 * corner + d] += step;
+            behind[3 * corner + d] -= step;
+            const double slope =
+              (dgmf::ComputeSizeSkew(CellShape::Tetra, original, ahead).SizeSkew -
+                dgmf::ComputeSizeSkew(CellShape::Tetra, original, behind).SizeSkew) /
+              (2.0 * step);
+            const double component = d == 0 ? gradient.X : d == 1 ? gradient.Y : gradient.Z;
+            // The size term has a kink where the volume equals the original's (tau = 1).
+            if (std::abs(alphaOf(moved) / alpha0 - 1.0) > 1e-3)
+            {
+              ASSERT_NEAR(component, slope, 1e-5 * (1.0 + std::abs(slope))) << "case " << t;
+              ++gradients;
+            }
+          }
+        }
+        ++checked;
+        inverted += full.Inverted ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(checked, 7000u);
+  EXPECT_GT(inverted, 1000u);
+  EXPECT_GT(gradients, 5000u);
+}
