@@ -8,6 +8,7 @@
 #include "dgmf/CellFaces.h"
 #include "dgmf/ExactPointTable.h"
 #include "dgmf/FaceMatching.h"
+#include "dgmf/FaceParity.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -184,6 +185,42 @@ void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vt
     AddFacet(facets, ids.data(), npts);
   }
 }
+
+/// The faces of a grid's 3D cells (VTKFaceCells), and each of its polygons as one face.
+class FacesAndPolygons : public dgmf::FaceCells
+{
+public:
+  explicit FacesAndPolygons(vtkUnstructuredGrid* mesh)
+    : Mesh(mesh)
+    , Faces(mesh)
+  {
+  }
+  std::size_t GetNumberOfCells() const override { return this->Faces.GetNumberOfCells(); }
+  const std::int64_t* GetCornerFaces(
+    std::size_t cell, std::vector<std::int64_t>& corners) const override
+  {
+    return this->Faces.GetCornerFaces(cell, corners); // polygons: none (not a 3D shape)
+  }
+  void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
+  {
+    const auto id = static_cast<vtkIdType>(cell);
+    if (!IsPolygonType(this->Mesh->GetCellType(id)))
+    {
+      this->Faces.GetFaces(cell, stream);
+      return;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    thread_local vtkNew<vtkIdList> scratch; // called for every cell, on every thread
+    this->Mesh->GetCells()->GetCellAtId(id, npts, pts, scratch);
+    stream.assign({ 1, static_cast<std::int64_t>(npts) }); // the order of the points is no matter
+    stream.insert(stream.end(), pts, pts + npts);
+  }
+
+private:
+  vtkUnstructuredGrid* Mesh;
+  VTKFaceCells Faces;
+};
 
 /**
  * The edges of a grid's polygons (triangles, quads, pixels, polygons) as the core's face matching
@@ -449,6 +486,21 @@ BoundaryFacets FindBoundaryFacetsByGeometryFilter(
   }
   return dimension == 2 ? EdgesByCounting(mesh, std::move(facets))
                         : FacetsByGeometryFilter(mesh, std::move(facets));
+}
+
+bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh)
+{
+  const std::array<bool, 256> types = CellTypesPresent(mesh);
+  bool has2DCells = false;
+  bool polygonsOnly = true;
+  Find2DTypes(types, has2DCells, polygonsOnly);
+  if (!has2DCells || !polygonsOnly || !VTKFaceCells::CoversAll3DCells(types) ||
+    mesh->GetCellGhostArray())
+  {
+    return false;
+  }
+  return dgmf::FacesPairUp(FacesAndPolygons(mesh),
+    static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
 }
 
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints)

@@ -16,6 +16,9 @@ namespace dgmf_vtk
 
 VTKFaceCells::VTKFaceCells(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>* canonical)
   : Mesh(mesh)
+  , Types(mesh->GetCellTypesArray() && mesh->GetNumberOfCells() > 0
+        ? mesh->GetCellTypesArray()->GetPointer(0)
+        : nullptr)
   , Canonical(canonical && !canonical->empty() ? canonical : nullptr)
 {
 }
@@ -28,7 +31,7 @@ std::size_t VTKFaceCells::GetNumberOfCells() const
 void VTKFaceCells::GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const
 {
   const auto id = static_cast<vtkIdType>(cell);
-  const int type = this->Mesh->GetCellType(id);
+  const int type = this->Types[cell];
   stream.assign(1, 0);
   if (type == VTK_POLYHEDRON)
   {
@@ -86,6 +89,39 @@ void VTKFaceCells::GetFaces(std::size_t cell, std::vector<std::int64_t>& stream)
       }
     }
   }
+}
+
+const std::int64_t* VTKFaceCells::GetCornerFaces(
+  std::size_t cell, std::vector<std::int64_t>& corners) const
+{
+  const int type = this->Types[cell];
+  dgmf::CellShape shape;
+  const int* order = nullptr;
+  if (type == VTK_POLYHEDRON || type == VTK_EMPTY_CELL ||
+    vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3 ||
+    !CellShapeOf(type, shape, order))
+  {
+    return nullptr;
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  thread_local vtkNew<vtkIdList> scratch;
+  this->Mesh->GetCells()->GetCellAtId(static_cast<vtkIdType>(cell), npts, pts, scratch);
+  const int n = dgmf::GetNumberOfCorners(shape);
+  if (npts < n)
+  {
+    return nullptr; // GetFaces gives such a cell no faces
+  }
+  corners.resize(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k)
+  {
+    const vtkIdType point = pts[order[k]];
+    corners[static_cast<std::size_t>(k)] =
+      this->Canonical && point >= 0 && static_cast<std::size_t>(point) < this->Canonical->size()
+      ? (*this->Canonical)[static_cast<std::size_t>(point)]
+      : point;
+  }
+  return dgmf::GetShapeFaceStream(shape);
 }
 
 bool VTKFaceCells::CoversAll3DCells(const std::array<bool, 256>& types)

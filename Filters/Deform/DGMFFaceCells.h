@@ -32,6 +32,8 @@ public:
 
   std::size_t GetNumberOfCells() const override;
   void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override;
+  const std::int64_t* GetCornerFaces(
+    std::size_t cell, std::vector<std::int64_t>& corners) const override;
 
   /**
    * Whether every 3D cell type of `types` (CellTypesPresent) has its faces here, i.e. no 3D cell
@@ -42,6 +44,7 @@ public:
 
 private:
   vtkUnstructuredGrid* Mesh;
+  const unsigned char* Types; ///< the cells' types (no virtual call per cell)
   const std::vector<vtkIdType>* Canonical;
 };
 

@@ -5,16 +5,20 @@
 #include "vtkAlgorithm.h"
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
+#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -61,6 +65,15 @@ struct MarkerToKinds
     dgmf::MarkerToNodeKinds(vtk::DataArrayValueRange<1>(array), kinds);
   }
 };
+
+/// The content hash of a grid's cells (connectivity, offsets, types).
+std::uint64_t HashCells(vtkUnstructuredGrid* mesh)
+{
+  vtkCellArray* cells = mesh->GetCells();
+  std::uint64_t h = HashArray(cells->GetConnectivityArray());
+  h = HashArray(cells->GetOffsetsArray(), h);
+  return HashArray(mesh->GetCellTypesArray(), h);
+}
 } // namespace
 
 SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm)
@@ -258,6 +271,67 @@ std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
   return flags;
 }
 
+bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes)
+{
+  if (nodes.Dimension != 3)
+  {
+    return false;
+  }
+  vtkCellArray* cells = mesh->GetCells();
+  if (!this->ClosingCells.Matches(cells, [&]() { return HashCells(mesh); }))
+  {
+    this->ClosingPolygons.clear();
+    if (PolygonsCloseTheMesh(mesh))
+    {
+      std::array<bool, 256> is2D = CellTypesPresent(mesh);
+      for (int type = 0; type < 256; ++type)
+      {
+        is2D[type] =
+          is2D[type] && vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 2;
+      }
+      const unsigned char* types = mesh->GetCellTypesArray()->GetPointer(0);
+      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+      {
+        if (is2D[types[c]])
+        {
+          this->ClosingPolygons.push_back(c);
+        }
+      }
+    }
+    this->ClosingCells.Set(cells, [&]() { return HashCells(mesh); });
+  }
+  if (this->ClosingPolygons.empty())
+  {
+    return false;
+  }
+  // The polygons' nodes are the boundary's: FlagMeshBoundary would flag those that are off the
+  // planes of a one-cell-thick mesh.
+  const dgmf::ExtrudedLayers& layers = nodes.Layers;
+  vtkNew<vtkIdList> scratch;
+  for (vtkIdType c : this->ClosingPolygons)
+  {
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    cells->GetCellAtId(c, npts, pts, scratch);
+    const auto onPlane = [&](double plane)
+    {
+      return std::all_of(
+        pts, pts + npts, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
+    };
+    if (layers.Found() && (onPlane(layers.Low) || onPlane(layers.High)))
+    {
+      continue;
+    }
+    if (std::any_of(pts, pts + npts,
+          [&](vtkIdType id)
+          { return nodes.Kinds[static_cast<std::size_t>(id)] == dgmf::NodeKind::Interior; }))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 void InputGatherer::GatherKinds(
   vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker, InputNodes& nodes)
 {
@@ -267,7 +341,8 @@ void InputGatherer::GatherKinds(
     nodes.Kinds = options.Roles->Kinds;
     // The mesh's own boundary where no block was read (a reader asked for the moving patch only)
     // is static: it must not follow the body. Pieces of a distributed mesh need ghost cells.
-    if (!options.Distributed || mesh->GetCellGhostArray())
+    if ((!options.Distributed || mesh->GetCellGhostArray()) &&
+      !this->RolesCoverTheBoundary(mesh, nodes))
     {
       const std::vector<std::uint8_t> flags = this->FlagMeshBoundary(mesh, nodes);
       for (std::size_t i = 0; i < n; ++i)
@@ -338,12 +413,7 @@ void InputGatherer::GatherKinds(
 const BoundaryFacets& InputGatherer::GetBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension)
 {
   vtkCellArray* cells = mesh->GetCells();
-  auto hashCells = [&]()
-  {
-    std::uint64_t h = HashArray(cells->GetConnectivityArray());
-    h = HashArray(cells->GetOffsetsArray(), h);
-    return HashArray(mesh->GetCellTypesArray(), h);
-  };
+  const auto hashCells = [&]() { return HashCells(mesh); };
   if (!this->Facets || !this->Cells.Matches(cells, hashCells))
   {
     this->Facets =
@@ -360,6 +430,7 @@ std::size_t InputGatherer::GetMemorySize() const
   {
     bytes += (this->Facets->Offsets.capacity() + this->Facets->Ids.capacity()) * sizeof(vtkIdType);
   }
+  bytes += this->ClosingPolygons.capacity() * sizeof(vtkIdType);
   bytes += (this->Layers.Front.capacity() + this->Layers.Layer.capacity()) * sizeof(std::int32_t);
   return bytes;
 }

@@ -124,6 +124,10 @@ private:
   // 1 for the nodes on the mesh's boundary faces (for a one-cell-thick mesh, the faces across
   // its two planes).
   std::vector<std::uint8_t> FlagMeshBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes);
+  // Whether the mesh's boundary nodes all have a role in `nodes.Kinds` already, known without
+  // the boundary: the mesh's polygons (boundary patches) close it and their nodes have roles
+  // (but for the two planes of a one-cell-thick mesh, whose nodes need none).
+  bool RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes);
   // The kinds of the last marker array (checked once).
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;
@@ -132,6 +136,10 @@ private:
   bool DistinctPoints = false;
   ContentKey Cells;
   std::unique_ptr<BoundaryFacets> Facets;
+  // Whether the polygons close the mesh (PolygonsCloseTheMesh) depends on the cells only: then
+  // the polygons' cell ids, else none.
+  ContentKey ClosingCells;
+  std::vector<vtkIdType> ClosingPolygons;
   // The layers of a one-cell-thick mesh depend on the points only (looking for them takes one
   // pass over the points; a repeated deformation need not pay it).
   ContentKey LayerPoints;

@@ -1,12 +1,15 @@
 // The core's face matching: internal faces (two cells) and boundary faces (one cell), the same
 // with one and two threads, faces of more than 4 points compared point by point, bad ids refused.
+// The faces' parity: a mesh closed by its boundary patches, told from one that is not.
 #include "dgmf/CellFaces.h"
 #include "dgmf/FaceMatching.h"
+#include "dgmf/FaceParity.h"
 
 #include "TwoThreadFor.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -174,4 +177,80 @@ TEST(FaceMatching, PointIdsOutsideTheMeshAreRefusedWithTheCellNamed)
   {
     EXPECT_NE(std::string(e.what()).find("Cell 1 uses point id 7"), std::string::npos) << e.what();
   }
+}
+
+namespace
+{
+/// `cells` and their boundary faces as one-face cells (boundary patches), the faces' points as the
+/// cells give them or `reversed` (the other way round, from another point).
+StreamCells WithPatches(const StreamCells& cells, std::size_t points, bool reversed)
+{
+  StreamCells closed = cells;
+  const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, points, dgmf::SerialFor);
+  for (std::size_t f = 0; f < outer.Size(); ++f)
+  {
+    std::int64_t count = 0;
+    const std::vector<std::int64_t>& stream =
+      cells.Streams[static_cast<std::size_t>(outer.Cell[f])];
+    const std::int64_t* ids = dgmf::FaceOfStream(stream.data(), outer.Face[f], count);
+    std::vector<std::int64_t> patch{ 1, count };
+    patch.insert(patch.end(), ids, ids + count);
+    if (reversed) // another starting point and the other way round: the same face
+    {
+      std::reverse(patch.begin() + 2, patch.end());
+      std::rotate(patch.begin() + 2, patch.begin() + 3, patch.end());
+    }
+    closed.Streams.push_back(patch);
+  }
+  return closed;
+}
+} // namespace
+
+TEST(FaceParity, ABlockPairsUpOnlyWhenItsBoundaryPatchesCoverItsBoundaryExactly)
+{
+  const int n = 5;
+  const std::size_t points = static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1));
+  const StreamCells block = Block(n);
+  EXPECT_FALSE(dgmf::FacesPairUp(block, points, dgmf::SerialFor)) << "the open block";
+  for (bool reversed : { false, true })
+  {
+    StreamCells closed = WithPatches(block, points, reversed);
+    ASSERT_EQ(closed.Streams.size(), block.Streams.size() + 6 * n * n);
+    EXPECT_TRUE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor)) << "reversed " << reversed;
+    EXPECT_TRUE(dgmf::FacesPairUp(closed, points, dgmf_test::TwoThreadFor))
+      << "reversed " << reversed;
+    const std::vector<std::int64_t> last = closed.Streams.back();
+    closed.Streams.pop_back(); // a boundary face without its patch
+    EXPECT_FALSE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor));
+    closed.Streams.push_back(last);
+    closed.Streams.push_back(last); // a patch given twice: three faces there
+    EXPECT_FALSE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor));
+    closed.Streams.pop_back();
+    closed.Streams.back()[2] += 1; // a patch on other points
+    EXPECT_FALSE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor));
+  }
+}
+
+TEST(FaceParity, FacesPairOnlyWithTheSameSetOfPoints)
+{
+  StreamCells cells;
+  cells.Streams.push_back({ 1, 6, 0, 1, 2, 3, 4, 5 });
+  cells.Streams.push_back({ 1, 6, 3, 2, 1, 0, 5, 4 });
+  EXPECT_TRUE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor)) << "one hexagon, two ways round";
+  cells.Streams.back() = { 1, 6, 0, 1, 2, 6, 7, 8 };
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor)) << "hexagons on other points";
+  cells.Streams = { { 1, 4, 0, 1, 2, 3 }, { 1, 3, 0, 1, 2 } };
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor)) << "a quad and a triangle";
+  cells.Streams = { { 0 }, { 1, 3, 0, 1, 2 }, { 0 }, { 1, 3, 2, 0, 1 } };
+  EXPECT_TRUE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor)) << "cells without faces take no part";
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 2, dgmf::SerialFor)) << "point id 2 outside the points";
+}
+
+TEST(FaceParity, ACellWithTwoFacesOfTheSamePointsIsNotClosed)
+{
+  // The face matching counts both faces of such a (collapsed) cell as boundary faces.
+  StreamCells cells;
+  cells.Streams.push_back({ 2, 3, 0, 1, 2, 3, 2, 1, 0 });
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor));
+  EXPECT_EQ(dgmf::FindBoundaryFaces(cells, 3, dgmf::SerialFor).Size(), 2u);
 }

@@ -1,6 +1,7 @@
 // The adapter's boundary detection (DGMFBoundaryDetection): the faces of one 3D cell by the core's
 // face matching against vtkGeometryFilter's, 2D edges against the hash-map count, the order and
-// the areas the same with any number of threads. Part of DGMFAdapterTests.
+// the areas the same with any number of threads, and whether its polygons close a mesh. Part of
+// DGMFAdapterTests.
 #include "DGMFBoundaryDetection.h"
 #include "DGMFSMPTools.h"
 
@@ -409,4 +410,54 @@ TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
   EXPECT_FALSE(matched.Canonical.empty());   // the copies of x = 3 were found
   EXPECT_EQ(matched.Ids, counted.Ids);       // the same edges, in the same order
   EXPECT_EQ(matched.Offsets, counted.Offsets);
+}
+
+TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFaces)
+{
+  auto volume = JitteredTetrahedra(6);
+  const dgmf_vtk::BoundaryFacets facets = dgmf_vtk::FindBoundaryFacets(volume, 3);
+  ASSERT_EQ(facets.Size(), static_cast<std::size_t>(6 * 2 * 6 * 6));
+  // The volume and its boundary triangles (a reader's boundary patches) in one grid, the
+  // triangles' points in reverse order; `skip` leaves out one, `twice` repeats one.
+  const auto withPatches = [&](std::size_t skip, std::size_t twice)
+  {
+    auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    mesh->DeepCopy(volume);
+    for (std::size_t f = 0; f < facets.Size(); ++f)
+    {
+      std::vector<vtkIdType> ids(
+        facets.Ids.begin() + facets.Offsets[f], facets.Ids.begin() + facets.Offsets[f + 1]);
+      std::reverse(ids.begin(), ids.end());
+      for (int copy = 0; copy < (f == skip ? 0 : f == twice ? 2 : 1); ++copy)
+      {
+        mesh->InsertNextCell(VTK_TRIANGLE, static_cast<vtkIdType>(ids.size()), ids.data());
+      }
+    }
+    return mesh;
+  };
+  const std::size_t none = facets.Size();
+  for (int threads : { 1, 2 })
+  {
+    dgmf_vtk::RunWithThreads(threads,
+      [&]()
+      {
+        EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(volume)) << "no polygons";
+        EXPECT_TRUE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(none, none))) << "closed";
+        EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(17, none))) << "one missing";
+        EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(none, 17))) << "one twice";
+      });
+  }
+  // Ghost cells (a piece of a distributed mesh): their outer faces are not the boundary.
+  auto ghosted = withPatches(none, none);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfValues(ghosted->GetNumberOfCells());
+  ghosts->FillValue(0);
+  ghosted->GetCellData()->AddArray(ghosts);
+  EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(ghosted));
+  // A quadratic cell's faces have mid-edge nodes: not read here.
+  auto quadratic = withPatches(none, none);
+  const vtkIdType ten[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ten);
+  EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(quadratic));
 }

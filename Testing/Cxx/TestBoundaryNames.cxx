@@ -463,3 +463,117 @@ TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
       << "node " << i;
   }
 }
+
+namespace
+{
+/**
+ * A box of n^3 hexahedra as a CFD reader gives it: block "internalMesh" and one polydata block
+ * of quads per side ("xmin", "xmax", "ymin", "ymax", "zmin", "zmax"), points their own, but for
+ * the side `omit` (a patch the reader was not asked for).
+ */
+vtkSmartPointer<vtkMultiBlockDataSet> HexBoxBlocks(int n, const std::string& omit)
+{
+  const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+  auto volume = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        points->InsertNextPoint(i, j, k);
+  volume->SetPoints(points);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        volume->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      }
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  blocks->SetBlock(0, volume);
+  Name(blocks, 0, "internalMesh");
+  vtkNew<vtkMultiBlockDataSet> boundary;
+  unsigned int index = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      const std::string name = std::string(1, "xyz"[axis]) + (side ? "max" : "min");
+      if (name == omit)
+      {
+        continue;
+      }
+      // The side's (n+1)^2 points in a grid of their own, and its n^2 quads.
+      const auto point = [&](int a, int b)
+      {
+        int ijk[3];
+        ijk[axis] = side * n;
+        ijk[(axis + 1) % 3] = a;
+        ijk[(axis + 2) % 3] = b;
+        return id(ijk[0], ijk[1], ijk[2]);
+      };
+      vtkNew<vtkPoints> own;
+      own->SetDataTypeToDouble();
+      for (int b = 0; b <= n; ++b)
+        for (int a = 0; a <= n; ++a)
+          own->InsertNextPoint(points->GetPoint(point(a, b)));
+      vtkNew<vtkCellArray> quads;
+      for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a)
+        {
+          const vtkIdType quad[4] = { a + (n + 1) * b, a + 1 + (n + 1) * b,
+            a + 1 + (n + 1) * (b + 1), a + (n + 1) * (b + 1) };
+          quads->InsertNextCell(4, quad);
+        }
+      vtkNew<vtkPolyData> faces;
+      faces->SetPoints(own);
+      faces->SetPolys(quads);
+      boundary->SetBlock(index, faces);
+      Name(boundary, index++, name);
+    }
+  }
+  blocks->SetBlock(1, boundary);
+  Name(blocks, 1, "boundary");
+  return blocks;
+}
+} // namespace
+
+TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
+{
+  // With every side read, the patches are the volume's boundary and it is not searched for (the
+  // faces' parity says so); with "xmax" not read, it is, and "xmax" stays as an unnamed
+  // boundary. Both must give the same mesh, bit for bit, and "xmax" must not move.
+  const int n = 6;
+  std::vector<std::vector<double>> results;
+  for (const std::string omit : { "", "xmax" })
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(HexBoxBlocks(n, omit));
+    filter->AddMovingBoundary("xmin");
+    filter->SetTranslation(-0.3, 0.2, 0.1);
+    filter->SetRotationAngles(0, 5, 0);
+    filter->Update();
+    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+    ASSERT_NE(volume, nullptr) << "omitted: '" << omit << "'";
+    ASSERT_EQ(volume->GetNumberOfPoints(), (n + 1) * (n + 1) * (n + 1));
+    std::vector<double> xyz(static_cast<std::size_t>(3 * volume->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+    {
+      volume->GetPoint(i, xyz.data() + 3 * i);
+      const vtkIdType side = n + 1;
+      if (i % side == n) // on "xmax": where it was
+      {
+        const double at[3] = { double(n), double(i / side % side), double(i / side / side) };
+        ASSERT_EQ(std::memcmp(xyz.data() + 3 * i, at, sizeof at), 0)
+          << "node " << i << " omitted: '" << omit << "'";
+      }
+    }
+    results.push_back(xyz);
+  }
+  // An interior node moved (the test would not tell otherwise).
+  const vtkIdType inside = 2 + (n + 1) * (3 + (n + 1) * 3);
+  EXPECT_NE(results[0][3 * inside], 2.0);
+  EXPECT_EQ(results[0], results[1]);
+}

@@ -28,6 +28,17 @@ public:
    * faces for cells that take no part (2D cells, cells without faces). Called concurrently.
    */
   virtual void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const = 0;
+  /**
+   * The faces of `cell` as its corners' point ids (into `corners`) and a face stream over the
+   * corners' positions (the cell's shape's, GetShapeFaceStream), when the cell has a standard
+   * shape: the same faces as GetFaces, for readers that need each corner once. nullptr (the
+   * default) when the faces come as GetFaces gives them only. Called concurrently.
+   */
+  virtual const std::int64_t* GetCornerFaces(
+    std::size_t /*cell*/, std::vector<std::int64_t>& /*corners*/) const
+  {
+    return nullptr;
+  }
 };
 
 /// The faces shared by two cells, each once, in increasing order of owner, then of face.
