@@ -6,7 +6,7 @@
 #include "DGMFSMPTools.h"
 
 #include "dgmf/CellFaces.h"
-#include "dgmf/ExactPointTable.h"
+#include "dgmf/CoincidentPoints.h"
 #include "dgmf/FaceMatching.h"
 #include "dgmf/FaceParity.h"
 
@@ -372,20 +372,16 @@ std::vector<vtkIdType> CanonicalPointIds(vtkUnstructuredGrid* mesh)
   const vtkIdType n = mesh->GetNumberOfPoints();
   std::vector<double> copy;
   const double* xyz = PointsAsDouble(mesh->GetPoints(), copy);
-  dgmf::ExactPointTable table(static_cast<std::size_t>(n));
-  std::vector<vtkIdType> canonical(static_cast<std::size_t>(n));
-  bool duplicates = false;
-  for (vtkIdType i = 0; i < n; ++i)
+  const std::vector<std::int64_t> first =
+    dgmf::FirstCoincidentPoints(xyz, static_cast<std::size_t>(n), MakeSMPParallelFor());
+  for (std::size_t i = 0; i < first.size(); ++i)
   {
-    if (i + 8 < n) // the table's slots are cache misses: ask 8 points ahead
+    if (first[i] != static_cast<std::int64_t>(i))
     {
-      table.Prefetch(xyz + 3 * (i + 8));
+      return std::vector<vtkIdType>(first.begin(), first.end());
     }
-    canonical[static_cast<std::size_t>(i)] =
-      static_cast<vtkIdType>(table.FindOrInsert(xyz, xyz + 3 * i, i));
-    duplicates = duplicates || canonical[static_cast<std::size_t>(i)] != i;
   }
-  return duplicates ? canonical : std::vector<vtkIdType>();
+  return std::vector<vtkIdType>();
 }
 
 /// The mesh's cells on the canonical points (same points, same cell ghost array).

@@ -2,8 +2,9 @@
 
 #include "DGMFArrayAllocation.h"
 #include "DGMFMeshConversion.h"
+#include "DGMFSMPTools.h"
 
-#include "dgmf/ExactPointTable.h"
+#include "dgmf/CoincidentPoints.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkArrayDispatch.h"
@@ -35,6 +36,7 @@
 #include <array>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace dgmf_vtk
@@ -153,9 +155,6 @@ struct MergeNodeValues
   }
 };
 
-/// How many points ahead the merge asks for the table's slot.
-constexpr vtkIdType kPrefetchDistance = 8;
-
 /// The number of cells of `block` and of point ids in their connectivity.
 void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids)
 {
@@ -181,15 +180,20 @@ void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids)
   }
 }
 
-/// `count` values of `from` (of an integer type), each mapped by `map`, into `to`.
+/// `count` values of `from` (of an integer type), each mapped by `map`, into `to`, on the
+/// vtkSMPTools threads.
 template <typename Array, typename Map>
 void CopyMapped(Array* from, vtkIdType first, vtkIdType count, vtkIdType* to, const Map& map)
 {
   const auto* values = from->GetPointer(first);
-  for (vtkIdType k = 0; k < count; ++k)
-  {
-    to[k] = map(static_cast<vtkIdType>(values[k]));
-  }
+  MakeSMPParallelFor()(0, static_cast<std::size_t>(count), 1 << 16,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        to[k] = map(static_cast<vtkIdType>(values[k]));
+      }
+    });
 }
 
 /**
@@ -355,11 +359,11 @@ CompositeMesh::CompositeMesh(
   : Input(input)
   , Merged(vtkSmartPointer<vtkUnstructuredGrid>::New())
 {
-  // Make sure first that twice what the merge may need is there (points, their table, the
-  // arrays, the cells, and their copies into VTK arrays).
+  // Make sure first that twice what the merge may need is there (all the points and what finds
+  // the coincident ones, the merged points, ids and arrays, the cells).
   const auto blockPoints = static_cast<std::size_t>(input->GetNumberOfPoints());
   const auto blockCells = static_cast<std::size_t>(input->GetNumberOfCells());
-  EnsureAvailableMemory(2 * (blockPoints * (24 + 32 + 24 * 2) + blockCells * 8 * 20));
+  EnsureAvailableMemory(2 * (blockPoints * (24 + 42 + 16 + 24 * 2) + blockCells * 8 * 20));
   std::vector<std::string> arrays;
   for (const std::string& name : { displacementName, markerName })
   {
@@ -368,30 +372,15 @@ CompositeMesh::CompositeMesh(
       arrays.push_back(name);
     }
   }
-  // The merged points (x, y, z per node) and arrays (0 components: not met yet), as plain arrays.
-  dgmf::ExactPointTable table(blockPoints);
-  std::vector<double> xyz;
-  xyz.reserve(3 * blockPoints);
-  std::vector<std::vector<double>> values(arrays.size());
-  std::vector<int> components(arrays.size(), 0);
 
+  // 1. The leaves with points, and their points one after the other.
   const std::map<unsigned int, std::string> partitionNames = PartitionNames(input);
-  auto iterator = vtk::TakeSmartPointer(input->NewIterator());
-  iterator->SkipEmptyNodesOn();
+  std::vector<vtkPointSet*> blocks;
+  std::vector<std::size_t> firstPoint{ 0 };
   vtkIdType totalCells = 0;
   vtkIdType totalIds = 0;
-  for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
-  {
-    if (auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject()))
-    {
-      vtkIdType cells = 0;
-      vtkIdType ids = 0;
-      CountCells(block, cells, ids);
-      totalCells += cells;
-      totalIds += ids;
-    }
-  }
-  MergedCells cells(totalCells, totalIds);
+  auto iterator = vtk::TakeSmartPointer(input->NewIterator());
+  iterator->SkipEmptyNodesOn();
   for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
   {
     auto* block = vtkPointSet::SafeDownCast(iterator->GetCurrentDataObject());
@@ -412,88 +401,125 @@ CompositeMesh::CompositeMesh(
     {
       leaf.Name = partition->second; // a partition of a named partitioned data set (IOSS reader)
     }
-    const vtkIdType n = block->GetNumberOfPoints();
-    leaf.NodeOf.resize(static_cast<std::size_t>(n));
-    std::vector<vtkDataArray*> sources(arrays.size());
-    for (std::size_t a = 0; a < arrays.size(); ++a)
+    vtkIdType cells = 0;
+    vtkIdType ids = 0;
+    CountCells(block, cells, ids);
+    totalCells += cells;
+    totalIds += ids;
+    blocks.push_back(block);
+    firstPoint.push_back(firstPoint.back() + static_cast<std::size_t>(block->GetNumberOfPoints()));
+    this->Leaves.push_back(std::move(leaf));
+  }
+  const std::size_t total = firstPoint.back();
+  const dgmf::ParallelFor parallelFor = MakeSMPParallelFor();
+  dgmf::PointPieces pieces;
+  std::vector<std::vector<double>> copies(blocks.size()); // points that are not doubles
+  for (std::size_t l = 0; l < blocks.size(); ++l)
+  {
+    pieces.Points.push_back(PointsAsDouble(blocks[l]->GetPoints(), copies[l]));
+    pieces.Counts.push_back(firstPoint[l + 1] - firstPoint[l]);
+  }
+
+  // 2. Points at the same place are one node, numbered in the order they are first met.
+  const std::vector<std::int64_t> first = dgmf::FirstCoincidentPoints(pieces, parallelFor);
+  std::vector<vtkIdType> nodeOfPoint(total);
+  vtkIdType nodes = 0;
+  for (std::size_t i = 0; i < total; ++i)
+  {
+    const auto f = static_cast<std::size_t>(first[i]);
+    nodeOfPoint[i] = f == i ? nodes++ : nodeOfPoint[f];
+  }
+  for (std::size_t l = 0; l < blocks.size(); ++l)
+  {
+    Leaf& leaf = this->Leaves[l];
+    leaf.NodeOf.assign(nodeOfPoint.begin() + static_cast<std::ptrdiff_t>(firstPoint[l]),
+      nodeOfPoint.begin() + static_cast<std::ptrdiff_t>(firstPoint[l + 1]));
+    leaf.SameNumbering = true;
+    for (std::size_t i = 0; i < leaf.NodeOf.size() && leaf.SameNumbering; ++i)
     {
-      sources[a] = block->GetPointData()->GetArray(arrays[a].c_str());
-      if (components[a] == 0 && sources[a]) // the first block with the array sets its shape
-      {
-        components[a] = sources[a]->GetNumberOfComponents();
-        values[a].assign(xyz.size() / 3 * static_cast<std::size_t>(components[a]), 0.0);
-      }
+      leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
     }
-    auto* doubles = vtkDoubleArray::SafeDownCast(block->GetPoints()->GetData());
-    for (vtkIdType i = 0; i < n; ++i)
+  }
+  nodeOfPoint = std::vector<vtkIdType>();
+
+  // 3. The merged points: those of a leaf that has them all in their order (a CFD reader's
+  //    volume, as a rule), shared; else the points where their nodes are first met.
+  vtkSmartPointer<vtkPoints> mergedPoints;
+  for (std::size_t l = 0; l < blocks.size() && !mergedPoints; ++l)
+  {
+    if (this->Leaves[l].SameNumbering && blocks[l]->GetNumberOfPoints() == nodes &&
+      blocks[l]->GetPoints()->GetDataType() == VTK_DOUBLE)
     {
-      double p[3];
-      if (doubles)
+      mergedPoints = blocks[l]->GetPoints();
+      this->SharedPoints = true;
+    }
+  }
+  if (!mergedPoints)
+  {
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    AllocateTuples(coordinates, nodes);
+    double* to = coordinates->GetPointer(0);
+    for (std::size_t l = 0, i = 0, node = 0; l < blocks.size(); ++l)
+    {
+      for (std::size_t k = 0; k < pieces.Counts[l]; ++k, ++i)
       {
-        std::memcpy(p, doubles->GetPointer(3 * i), sizeof p);
-        if (i + kPrefetchDistance < n) // the table's slots are cache misses: ask ahead
+        if (static_cast<std::size_t>(first[i]) == i)
         {
-          table.Prefetch(doubles->GetPointer(3 * (i + kPrefetchDistance)));
+          std::memcpy(to + 3 * node++, pieces.Points[l] + 3 * k, 3 * sizeof(double));
         }
       }
-      else
-      {
-        block->GetPoint(i, p);
-      }
-      const auto kept = static_cast<std::int64_t>(xyz.size() / 3);
-      const std::int64_t node = table.FindOrInsert(xyz.data(), p, kept);
-      leaf.NodeOf[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(node);
-      if (node == kept)
-      {
-        xyz.insert(xyz.end(), p, p + 3);
-      }
     }
-    for (std::size_t a = 0; a < arrays.size(); ++a)
+    mergedPoints = vtkSmartPointer<vtkPoints>::New();
+    mergedPoints->SetData(coordinates);
+  }
+  this->Merged->SetPoints(mergedPoints);
+
+  // 4. The selected arrays: the first leaf that has one sets its number of components; leaves
+  //    without it (or with another shape) contribute zeros.
+  for (const std::string& name : arrays)
+  {
+    vtkSmartPointer<vtkDoubleArray> merged;
+    for (std::size_t l = 0; l < blocks.size(); ++l)
     {
-      const int m = components[a];
-      values[a].resize(xyz.size() / 3 * static_cast<std::size_t>(m), 0.0); // the new nodes: 0
-      vtkDataArray* source = sources[a];
-      if (source && source->GetNumberOfComponents() == m) // else the block contributes zeros
+      vtkDataArray* source = blocks[l]->GetPointData()->GetArray(name.c_str());
+      if (!source)
       {
-        MergeNodeValues worker{ leaf.NodeOf, values[a].data(), arrays[a] == markerName };
+        continue;
+      }
+      if (!merged)
+      {
+        merged = vtkSmartPointer<vtkDoubleArray>::New();
+        merged->SetName(name.c_str());
+        merged->SetNumberOfComponents(source->GetNumberOfComponents());
+        AllocateTuples(merged, nodes);
+        merged->FillValue(0.0);
+      }
+      if (source->GetNumberOfComponents() == merged->GetNumberOfComponents())
+      {
+        MergeNodeValues worker{ this->Leaves[l].NodeOf, merged->GetPointer(0), name == markerName };
         if (!vtkArrayDispatch::Dispatch::Execute(source, worker))
         {
           worker(source); // an array type outside the dispatch list
         }
       }
     }
-    leaf.SameNumbering = true;
-    for (std::size_t i = 0; i < leaf.NodeOf.size() && leaf.SameNumbering; ++i)
+    if (merged)
     {
-      leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
+      this->Merged->GetPointData()->AddArray(merged);
     }
-    leaf.FirstCell = cells.NumberOfCells;
-    leaf.CellDimension = cells.Append(block, leaf.NodeOf);
-    leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
-    this->Leaves.push_back(std::move(leaf));
   }
 
-  const auto nodes = static_cast<vtkIdType>(xyz.size() / 3);
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  AllocateTuples(coordinates, nodes);
-  std::copy(xyz.begin(), xyz.end(), coordinates->GetPointer(0));
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  this->Merged->SetPoints(points);
-  cells.SetOn(this->Merged);
-  for (std::size_t a = 0; a < arrays.size(); ++a)
+  // 5. The cells, their points renumbered.
+  MergedCells cells(totalCells, totalIds);
+  for (std::size_t l = 0; l < blocks.size(); ++l)
   {
-    if (components[a] > 0)
-    {
-      vtkNew<vtkDoubleArray> array;
-      array->SetName(arrays[a].c_str());
-      array->SetNumberOfComponents(components[a]);
-      AllocateTuples(array, nodes);
-      std::copy(values[a].begin(), values[a].end(), array->GetPointer(0));
-      this->Merged->GetPointData()->AddArray(array);
-    }
+    Leaf& leaf = this->Leaves[l];
+    leaf.FirstCell = cells.NumberOfCells;
+    leaf.CellDimension = cells.Append(blocks[l], leaf.NodeOf);
+    leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
   }
+  cells.SetOn(this->Merged);
 }
 
 void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDataSet* output) const

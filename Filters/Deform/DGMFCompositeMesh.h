@@ -37,6 +37,9 @@ public:
   /// The merged grid (empty when no leaf has points).
   vtkUnstructuredGrid* GetMergedMesh() const { return this->Merged; }
 
+  /// Whether the merged grid's points are an input leaf's (a leaf with all of them, in order).
+  bool SharesInputPoints() const { return this->SharedPoints; }
+
   /// Number of leaves that were skipped (no explicit points, e.g. image data).
   int GetNumberOfSkippedBlocks() const { return this->Skipped; }
 
@@ -78,6 +81,7 @@ private:
   vtkSmartPointer<vtkUnstructuredGrid> Merged;
   std::vector<Leaf> Leaves;
   int Skipped = 0;
+  bool SharedPoints = false;
 };
 
 } // namespace dgmf_vtk

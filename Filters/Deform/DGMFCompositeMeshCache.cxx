@@ -3,6 +3,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkInformation.h"
+#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
 namespace dgmf_vtk
@@ -51,8 +52,12 @@ std::size_t CompositeMeshCache::GetMemorySize() const
   {
     return 0;
   }
-  std::size_t bytes =
-    1024 * static_cast<std::size_t>(this->Mesh->GetMergedMesh()->GetActualMemorySize());
+  vtkUnstructuredGrid* merged = this->Mesh->GetMergedMesh();
+  std::size_t bytes = 1024 * static_cast<std::size_t>(merged->GetActualMemorySize());
+  if (this->Mesh->SharesInputPoints() && merged->GetPoints()) // the input's, not the cache's
+  {
+    bytes -= 1024 * static_cast<std::size_t>(merged->GetPoints()->GetActualMemorySize());
+  }
   for (const CompositeMesh::Leaf& leaf : this->Mesh->GetLeaves())
   {
     bytes += leaf.NodeOf.capacity() * sizeof(vtkIdType);

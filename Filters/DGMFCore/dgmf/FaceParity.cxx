@@ -64,16 +64,14 @@ bool HasTwinFaces(std::vector<Hash128>& hashes)
 }
 } // namespace
 
-bool FacesPairUp(
-  const FaceCells& cells, std::size_t numberOfPoints, const ParallelFor& parallelFor)
+bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const ParallelFor& parallelFor)
 {
   // Each point's mix, once (16 bytes a point while this runs): a face's hash is the sum of its
   // points' (and of its number of points, mixed), so neither order nor start matters.
   // Not initialised: the threads that fill it touch its pages first.
   std::unique_ptr<PointHash[]> pointHash(new PointHash[numberOfPoints]);
   ForEachIndex(parallelFor, numberOfPoints, 1 << 16,
-    [&](std::size_t p)
-    {
+    [&](std::size_t p) {
       pointHash[p] = { Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
     });
   const std::size_t numberOfCells = cells.GetNumberOfCells();
