@@ -7,6 +7,7 @@
 #include "dgmf/openfoam/CaseDirectory.h"
 
 #include "DGMFCommandMessages.h"
+#include "DGMFVTUReader.h"
 #include "DGMFVTUWriter.h"
 #include "vtkSMPTools.h"
 
@@ -104,6 +105,12 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
     reader->ReadAllFieldsOn();
     reader->Update();
     return reader->GetOutput();
+  }
+  // dgmf-deform's own files (appended raw data) on all threads; other .vtu files by VTK.
+  std::string notTaken;
+  if (vtkSmartPointer<vtkUnstructuredGrid> grid = ReadAppendedVTU(path, notTaken))
+  {
+    return grid;
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());

@@ -1,0 +1,573 @@
+#include "DGMFVTUReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataCompressor.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkLZ4DataCompressor.h"
+#include "vtkLZMADataCompressor.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
+#include "vtkZLibDataCompressor.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+namespace dgmf_cli
+{
+namespace
+{
+/// The file, mapped read-only (the kernel's page cache, no copy).
+class MappedFile
+{
+public:
+  explicit MappedFile(const std::string& path)
+  {
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    struct stat status;
+    if (fd < 0 || ::fstat(fd, &status) != 0 || status.st_size <= 0)
+    {
+      if (fd >= 0)
+      {
+        ::close(fd);
+      }
+      return;
+    }
+    int flags = MAP_PRIVATE;
+#ifdef MAP_POPULATE
+    flags |= MAP_POPULATE; // the pages mapped at once, not one fault at a time
+#endif
+    void* data = ::mmap(nullptr, static_cast<std::size_t>(status.st_size), PROT_READ, flags, fd, 0);
+    ::close(fd);
+    if (data != MAP_FAILED)
+    {
+      this->Data = static_cast<const unsigned char*>(data);
+      this->Size = static_cast<std::size_t>(status.st_size);
+    }
+  }
+  ~MappedFile()
+  {
+    if (this->Data)
+    {
+      ::munmap(const_cast<unsigned char*>(this->Data), this->Size);
+    }
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+
+  const unsigned char* Data = nullptr;
+  std::size_t Size = 0;
+};
+
+/// VTK's compressor of the class the file names (null for none or another one).
+vtkSmartPointer<vtkDataCompressor> NewCompressor(const std::string& name)
+{
+  if (name == "vtkLZ4DataCompressor")
+  {
+    return vtkSmartPointer<vtkLZ4DataCompressor>::New();
+  }
+  if (name == "vtkZLibDataCompressor")
+  {
+    return vtkSmartPointer<vtkZLibDataCompressor>::New();
+  }
+  if (name == "vtkLZMADataCompressor")
+  {
+    return vtkSmartPointer<vtkLZMADataCompressor>::New();
+  }
+  return nullptr;
+}
+
+/// A piece of work: bytes of the file into an array (decompressed, or copied).
+struct Job
+{
+  const unsigned char* Source;
+  std::size_t SourceBytes;
+  unsigned char* Target;
+  std::size_t TargetBytes;
+};
+
+/// Why the fast path does not take the file.
+struct NotTaken
+{
+  std::string Why;
+};
+
+/// The arrays of the file, made from its header; their bytes are queued as jobs.
+class ArrayMaker
+{
+public:
+  ArrayMaker(const MappedFile& file, std::size_t appended, int headerBytes, bool compressed)
+    : File(file)
+    , Appended(appended)
+    , HeaderBytes(headerBytes)
+    , Compressed(compressed)
+  {
+  }
+
+  /**
+   * The array of the DataArray `element` with `tuples` tuples (-1: its NumberOfTuples), its
+   * values from the file queued into the array at value `skip` (0, or 1 for the leading 0 of
+   * VTK's cell offsets); `type`, when not 0, the type VTK's reader converts it to (the values
+   * then need the same type in the file).
+   */
+  vtkSmartPointer<vtkDataArray> Make(
+    vtkXMLDataElement* element, vtkIdType tuples, vtkIdType skip = 0, int type = 0)
+  {
+    const char* format = element->GetAttribute("format");
+    if (!format || std::string(format) != "appended")
+    {
+      throw NotTaken{ "an array not in the appended section" };
+    }
+    for (int k = 0; k < element->GetNumberOfNestedElements(); ++k)
+    {
+      if (std::string(element->GetNestedElement(k)->GetName()) != "InformationKey")
+      {
+        throw NotTaken{ "an array with an element inside other than information keys" };
+      }
+    } // information keys (cached ranges) are left out, as VTK 9.2's reader leaves them
+    int fileType = 0;
+    if (!element->GetWordTypeAttribute("type", fileType) || !IsNumeric(fileType))
+    {
+      throw NotTaken{ "an array that is not numeric" };
+    }
+    int idType = 0;
+    if (element->GetScalarAttribute("IdType", idType) && idType != 0 &&
+      vtkDataArray::GetDataTypeSize(fileType) == sizeof(vtkIdType))
+    {
+      fileType = VTK_ID_TYPE;
+    }
+    if (type != 0 && vtkDataArray::GetDataTypeSize(type) != vtkDataArray::GetDataTypeSize(fileType))
+    {
+      throw NotTaken{ "cells whose ids are not of vtkIdType's size" };
+    }
+    int components = 1;
+    element->GetScalarAttribute("NumberOfComponents", components);
+    if (tuples < 0 && !element->GetScalarAttribute("NumberOfTuples", tuples))
+    {
+      throw NotTaken{ "a field-data array without its number of tuples" };
+    }
+    vtkIdType offset = 0;
+    if (components < 1 || tuples < 0 || !element->GetScalarAttribute("offset", offset) ||
+      offset < 0)
+    {
+      throw NotTaken{ "an array without its size or offset" };
+    }
+    auto array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type ? type : fileType));
+    const char* name = element->GetAttribute("Name");
+    if (name && type == 0) // the cells' arrays (converted) have no name in VTK's reader
+    {
+      array->SetName(name);
+    }
+    array->SetNumberOfComponents(components);
+    for (int c = 0; c < components; ++c)
+    {
+      const std::string key = "ComponentName" + std::to_string(c);
+      if (const char* name = element->GetAttribute(key.c_str()))
+      {
+        array->SetComponentName(c, name);
+      }
+    }
+    array->SetNumberOfTuples(tuples + skip); // not initialised: the jobs touch the pages first
+    const std::size_t valueBytes = static_cast<std::size_t>(array->GetDataTypeSize());
+    const std::size_t bytes = static_cast<std::size_t>(tuples) * components * valueBytes;
+    auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
+      static_cast<std::size_t>(skip) * valueBytes;
+    this->Queue(this->Appended + static_cast<std::size_t>(offset), target, bytes);
+    return array;
+  }
+
+  std::vector<Job> Jobs;
+
+private:
+  static bool IsNumeric(int type)
+  {
+    switch (type)
+    {
+      case VTK_FLOAT:
+      case VTK_DOUBLE:
+      case VTK_CHAR:
+      case VTK_SIGNED_CHAR:
+      case VTK_UNSIGNED_CHAR:
+      case VTK_SHORT:
+      case VTK_UNSIGNED_SHORT:
+      case VTK_INT:
+      case VTK_UNSIGNED_INT:
+      case VTK_LONG:
+      case VTK_UNSIGNED_LONG:
+      case VTK_LONG_LONG:
+      case VTK_UNSIGNED_LONG_LONG:
+      case VTK_ID_TYPE:
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  /// A header word at `at` (checked to lie in the file).
+  std::uint64_t Word(std::size_t at) const
+  {
+    this->Check(at, static_cast<std::size_t>(this->HeaderBytes));
+    if (this->HeaderBytes == 4)
+    {
+      std::uint32_t value;
+      std::memcpy(&value, this->File.Data + at, sizeof value);
+      return value;
+    }
+    std::uint64_t value;
+    std::memcpy(&value, this->File.Data + at, sizeof value);
+    return value;
+  }
+
+  void Check(std::size_t at, std::size_t bytes) const
+  {
+    if (at > this->File.Size || bytes > this->File.Size - at)
+    {
+      throw NotTaken{ "an array that runs past the end of the file" };
+    }
+  }
+
+  /// The jobs that fill `bytes` at `target` from the data at `at`: its blocks, or one copy.
+  void Queue(std::size_t at, unsigned char* target, std::size_t bytes)
+  {
+    const auto header = static_cast<std::size_t>(this->HeaderBytes);
+    if (!this->Compressed)
+    {
+      if (this->Word(at) != bytes)
+      {
+        throw NotTaken{ "an array whose size is not the one the header gives" };
+      }
+      this->Check(at + header, bytes);
+      this->Jobs.push_back({ this->File.Data + at + header, bytes, target, bytes });
+      return;
+    }
+    const std::uint64_t blocks = this->Word(at);
+    const std::uint64_t blockSize = this->Word(at + header);
+    const std::uint64_t lastSize = this->Word(at + 2 * header);
+    const std::uint64_t total =
+      blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastSize != 0 ? lastSize : blockSize);
+    if (blocks > this->File.Size || total != bytes)
+    {
+      throw NotTaken{ "an array whose size is not the one the header gives" };
+    }
+    std::size_t source = at + (3 + static_cast<std::size_t>(blocks)) * header;
+    for (std::uint64_t b = 0; b < blocks; ++b)
+    {
+      const auto compressed = static_cast<std::size_t>(this->Word(at + (3 + b) * header));
+      const auto size = static_cast<std::size_t>(b + 1 < blocks || lastSize == 0 ? blockSize : lastSize);
+      this->Check(source, compressed);
+      this->Jobs.push_back({ this->File.Data + source, compressed, target, size });
+      source += compressed;
+      target += size;
+    }
+  }
+
+  const MappedFile& File;
+  std::size_t Appended;
+  int HeaderBytes;
+  bool Compressed;
+};
+
+/// The active attributes (Scalars="name", ...) of a PointData or CellData element.
+void SetAttributes(vtkXMLDataElement* element, vtkDataSetAttributes* data)
+{
+  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  {
+    const char* name = element->GetAttribute(vtkDataSetAttributes::GetAttributeTypeAsString(a));
+    if (!name)
+    {
+      continue;
+    }
+    for (int k = 0; k < data->GetNumberOfArrays(); ++k)
+    {
+      const char* arrayName = data->GetArrayName(k);
+      if (arrayName && std::string(arrayName) == name)
+      {
+        data->SetActiveAttribute(k, a);
+        break;
+      }
+    }
+  }
+}
+
+/// The nested element named `name` of `parent` (null when there is none).
+vtkXMLDataElement* Child(vtkXMLDataElement* parent, const char* name)
+{
+  return parent ? parent->FindNestedElementWithName(name) : nullptr;
+}
+
+/// The DataArray children of `parent` into `data`, with `tuples` tuples each.
+void AddArrays(ArrayMaker& maker, vtkXMLDataElement* parent, vtkIdType tuples, vtkFieldData* data)
+{
+  if (!parent)
+  {
+    return;
+  }
+  for (int k = 0; k < parent->GetNumberOfNestedElements(); ++k)
+  {
+    vtkXMLDataElement* element = parent->GetNestedElement(k);
+    if (std::string(element->GetName()) != "DataArray")
+    {
+      throw NotTaken{ std::string("an element ") + element->GetName() + " among the arrays" };
+    }
+    data->AddArray(maker.Make(element, tuples));
+  }
+}
+
+/// Runs the jobs on the vtkSMPTools threads, each thread with its own compressor.
+void RunJobs(const std::vector<Job>& jobs, const std::string& compressorName)
+{
+  std::atomic<bool> failed(false);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(jobs.size()), 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkSmartPointer<vtkDataCompressor> compressor =
+        compressorName.empty() ? nullptr : NewCompressor(compressorName);
+      for (vtkIdType j = begin; j < end && !failed.load(std::memory_order_relaxed); ++j)
+      {
+        const Job& job = jobs[static_cast<std::size_t>(j)];
+        if (!compressor)
+        {
+          std::memcpy(job.Target, job.Source, job.TargetBytes);
+        }
+        else if (compressor->Uncompress(job.Source, job.SourceBytes, job.Target,
+                   job.TargetBytes) != job.TargetBytes)
+        {
+          failed = true;
+        }
+      }
+    });
+  if (failed)
+  {
+    throw NotTaken{ "a block that does not decompress to its size" };
+  }
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
+{
+  // The header, by VTK's parser: it stops at the appended data and says where it starts.
+  std::ifstream stream(path, std::ios::in | std::ios::binary);
+  if (!stream)
+  {
+    throw NotTaken{ "the file cannot be opened" };
+  }
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetStream(&stream);
+  if (!parser->Parse() || !parser->GetRootElement())
+  {
+    throw NotTaken{ "its XML header does not parse" };
+  }
+  vtkXMLDataElement* root = parser->GetRootElement();
+  const auto attribute = [&](const char* name)
+  {
+    const char* value = root->GetAttribute(name);
+    return std::string(value ? value : "");
+  };
+  const std::string version = attribute("version");
+  if (std::string(root->GetName()) != "VTKFile" || attribute("type") != "UnstructuredGrid" ||
+    (version != "0.1" && version != "1.0"))
+  {
+    throw NotTaken{ "not an unstructured grid of XML format 0.1 or 1.0" };
+  }
+  if (attribute("byte_order") != "LittleEndian")
+  {
+    throw NotTaken{ "not little-endian" };
+  }
+  const std::string headerType = attribute("header_type");
+  const int headerBytes = headerType == "UInt64" ? 8 : 4;
+  if (!headerType.empty() && headerType != "UInt64" && headerType != "UInt32")
+  {
+    throw NotTaken{ "header type " + headerType };
+  }
+  const std::string compressorName = attribute("compressor");
+  if (!compressorName.empty() && !NewCompressor(compressorName))
+  {
+    throw NotTaken{ "compressor " + compressorName };
+  }
+  vtkXMLDataElement* grid = Child(root, "UnstructuredGrid");
+  vtkXMLDataElement* appended = Child(root, "AppendedData");
+  const char* encoding = appended ? appended->GetAttribute("encoding") : nullptr;
+  if (!grid || !appended || !encoding || std::string(encoding) != "raw" ||
+    parser->GetAppendedDataPosition() <= 0)
+  {
+    throw NotTaken{ "no raw appended data" };
+  }
+  vtkXMLDataElement* piece = nullptr;
+  vtkXMLDataElement* fieldData = nullptr;
+  for (int k = 0; k < grid->GetNumberOfNestedElements(); ++k)
+  {
+    vtkXMLDataElement* element = grid->GetNestedElement(k);
+    const std::string name = element->GetName();
+    if (name == "Piece" && !piece)
+    {
+      piece = element;
+    }
+    else if (name == "FieldData" && !fieldData)
+    {
+      fieldData = element;
+    }
+    else
+    {
+      throw NotTaken{ "more than one piece, or an element " + name };
+    }
+  }
+  vtkIdType points = 0;
+  vtkIdType cells = 0;
+  if (!piece || !piece->GetScalarAttribute("NumberOfPoints", points) ||
+    !piece->GetScalarAttribute("NumberOfCells", cells) || points < 0 || cells < 0)
+  {
+    throw NotTaken{ "no piece with its numbers of points and cells" };
+  }
+
+  MappedFile file(path);
+  if (!file.Data)
+  {
+    throw NotTaken{ "the file cannot be mapped" };
+  }
+  ArrayMaker maker(file, static_cast<std::size_t>(parser->GetAppendedDataPosition()), headerBytes,
+    !compressorName.empty());
+  auto output = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  // Points: their DataArray as it is (Float32 or Float64).
+  vtkXMLDataElement* pointsElement = Child(piece, "Points");
+  if (points > 0)
+  {
+    vtkXMLDataElement* coordinates = Child(pointsElement, "DataArray");
+    if (!coordinates)
+    {
+      throw NotTaken{ "no points array" };
+    }
+    vtkNew<vtkPoints> outputPoints;
+    outputPoints->SetData(maker.Make(coordinates, points));
+    output->SetPoints(outputPoints);
+  }
+  // Cells: connectivity and offsets as vtkIdType (the offsets after a leading 0), types as bytes.
+  vtkSmartPointer<vtkDataArray> offsets, types;
+  vtkXMLDataElement* connectivityElement = nullptr; // read once the offsets give its length
+  if (vtkXMLDataElement* cellsElement = Child(piece, "Cells"))
+  {
+    for (int k = 0; k < cellsElement->GetNumberOfNestedElements(); ++k)
+    {
+      vtkXMLDataElement* element = cellsElement->GetNestedElement(k);
+      const char* name = element->GetAttribute("Name");
+      const std::string which = name ? name : "";
+      if (which == "offsets")
+      {
+        offsets = maker.Make(element, cells, 1, VTK_ID_TYPE);
+        offsets->SetComponent(0, 0, 0.0);
+      }
+      else if (which == "types")
+      {
+        types = maker.Make(element, cells, 0, VTK_UNSIGNED_CHAR);
+      }
+      else if (which == "connectivity")
+      {
+        connectivityElement = element;
+      }
+      else
+      {
+        throw NotTaken{ "cells with " + which + " (polyhedra)" };
+      }
+    }
+  }
+  if (cells > 0 && (!offsets || !types))
+  {
+    throw NotTaken{ "cells without their offsets or types" };
+  }
+  // Point, cell and field data.
+  AddArrays(maker, Child(piece, "PointData"), points, output->GetPointData());
+  AddArrays(maker, Child(piece, "CellData"), cells, output->GetCellData());
+  if (fieldData)
+  {
+    vtkNew<vtkFieldData> field;
+    AddArrays(maker, fieldData, -1, field);
+    output->SetFieldData(field);
+  }
+  RunJobs(maker.Jobs, compressorName);
+  maker.Jobs.clear();
+  // The connectivity, now that its length (the last offset) is known.
+  if (cells > 0)
+  {
+    const auto* offsetValues = static_cast<const vtkIdType*>(offsets->GetVoidPointer(0));
+    const vtkIdType ids = offsetValues[cells];
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      if (offsetValues[c + 1] < offsetValues[c])
+      {
+        throw NotTaken{ "cell offsets that decrease" };
+      }
+    }
+    if (!connectivityElement || ids < 0)
+    {
+      throw NotTaken{ "cells without their connectivity" };
+    }
+    vtkSmartPointer<vtkDataArray> connectivity =
+      maker.Make(connectivityElement, ids, 0, VTK_ID_TYPE);
+    RunJobs(maker.Jobs, compressorName);
+    const auto* idValues = static_cast<const vtkIdType*>(connectivity->GetVoidPointer(0));
+    std::atomic<bool> outside(false);
+    vtkSMPTools::For(0, ids,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          if (idValues[k] < 0 || idValues[k] >= points)
+          {
+            outside = true;
+          }
+        }
+      });
+    if (outside)
+    {
+      throw NotTaken{ "a cell with a point id outside the points" };
+    }
+    vtkNew<vtkCellArray> cellArray;
+    cellArray->SetData(offsets, connectivity);
+    output->SetCells(vtkUnsignedCharArray::SafeDownCast(types), cellArray);
+  }
+  if (vtkXMLDataElement* pointData = Child(piece, "PointData"))
+  {
+    SetAttributes(pointData, output->GetPointData());
+  }
+  if (vtkXMLDataElement* cellData = Child(piece, "CellData"))
+  {
+    SetAttributes(cellData, output->GetCellData());
+  }
+  return output;
+}
+} // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> ReadAppendedVTU(const std::string& path, std::string& whyNot)
+{
+  try
+  {
+    whyNot.clear();
+    return Read(path);
+  }
+  catch (const NotTaken& reason)
+  {
+    whyNot = reason.Why;
+  }
+  catch (const std::bad_alloc&)
+  {
+    whyNot = "out of memory";
+  }
+  return nullptr;
+}
+
+} // namespace dgmf_cli
