@@ -62,8 +62,8 @@ std::vector<std::int64_t> FirstCoincidentPoints(
   {
     const auto i = static_cast<std::size_t>(index);
     const std::size_t k =
-      static_cast<std::size_t>(std::upper_bound(pieceFirst.begin(), pieceFirst.end(), i) -
-        pieceFirst.begin()) -
+      static_cast<std::size_t>(
+        std::upper_bound(pieceFirst.begin(), pieceFirst.end(), i) - pieceFirst.begin()) -
       1;
     return pieces.Points[k] + 3 * (i - pieceFirst[k]);
   };
@@ -114,7 +114,8 @@ std::vector<std::int64_t> FirstCoincidentPoints(
       for (std::size_t i = block.Begin; i < block.End; ++i)
       {
         const std::uint64_t h = Hash(xyz + 3 * i);
-        records[next[partOf(h)]++] = { h, static_cast<std::int64_t>(block.First + i - block.Begin) };
+        records[next[partOf(h)]++] = { h,
+          static_cast<std::int64_t>(block.First + i - block.Begin) };
       }
     });
   // 4. Each part through its own table (slots: -1, or a record's position in the part and 23
