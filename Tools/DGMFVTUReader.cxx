@@ -270,7 +270,8 @@ private:
     for (std::uint64_t b = 0; b < blocks; ++b)
     {
       const auto compressed = static_cast<std::size_t>(this->Word(at + (3 + b) * header));
-      const auto size = static_cast<std::size_t>(b + 1 < blocks || lastSize == 0 ? blockSize : lastSize);
+      const auto size =
+        static_cast<std::size_t>(b + 1 < blocks || lastSize == 0 ? blockSize : lastSize);
       this->Check(source, compressed);
       this->Jobs.push_back({ this->File.Data + source, compressed, target, size });
       source += compressed;
@@ -346,8 +347,8 @@ void RunJobs(const std::vector<Job>& jobs, const std::string& compressorName)
         {
           std::memcpy(job.Target, job.Source, job.TargetBytes);
         }
-        else if (compressor->Uncompress(job.Source, job.SourceBytes, job.Target,
-                   job.TargetBytes) != job.TargetBytes)
+        else if (compressor->Uncompress(job.Source, job.SourceBytes, job.Target, job.TargetBytes) !=
+          job.TargetBytes)
         {
           failed = true;
         }

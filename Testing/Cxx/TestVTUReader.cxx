@@ -47,7 +47,8 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid()
       for (int i = 0; i < Side; ++i)
         points->InsertNextPoint(i + 0.01 * j, j - 0.02 * k, k + 0.003 * i * i);
   grid->SetPoints(points);
-  const auto id = [](int i, int j, int k) { return static_cast<vtkIdType>(i + Side * (j + Side * k)); };
+  const auto id = [](int i, int j, int k)
+  { return static_cast<vtkIdType>(i + Side * (j + Side * k)); };
   for (int k = 0; k + 1 < Side; ++k)
     for (int j = 0; j + 1 < Side; ++j)
       for (int i = 0; i + 1 < Side; ++i)
@@ -210,8 +211,8 @@ void ExpectSameGrid(vtkUnstructuredGrid* vtk, vtkUnstructuredGrid* ours, const s
 TEST(VTUReader, ReadsWhatVtksReaderReadsWithEveryCompressorAndHeader)
 {
   const vtkSmartPointer<vtkUnstructuredGrid> grid = Grid();
-  for (int compressor : { vtkXMLWriter::NONE, vtkXMLWriter::LZ4, vtkXMLWriter::ZLIB,
-         vtkXMLWriter::LZMA })
+  for (int compressor :
+    { vtkXMLWriter::NONE, vtkXMLWriter::LZ4, vtkXMLWriter::ZLIB, vtkXMLWriter::LZMA })
   {
     for (int header : { vtkXMLWriter::UInt32, vtkXMLWriter::UInt64 })
     {
@@ -235,8 +236,8 @@ TEST(VTUReader, ReadsWhatVtksReaderReadsWithEveryCompressorAndHeader)
 TEST(VTUReader, LeavesOtherFilesToVtksReader)
 {
   const vtkSmartPointer<vtkUnstructuredGrid> grid = Grid();
-  const auto notTaken = [&](const std::string& what,
-                          const std::function<void(vtkXMLUnstructuredGridWriter*)>& settings)
+  const auto notTaken =
+    [&](const std::string& what, const std::function<void(vtkXMLUnstructuredGridWriter*)>& settings)
   {
     const std::string path = Write(grid, "dgmf_reader_other.vtu", settings);
     std::string whyNot;
