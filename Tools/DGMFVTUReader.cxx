@@ -28,6 +28,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace dgmf_cli
@@ -187,6 +188,10 @@ public:
     array->SetNumberOfTuples(tuples + skip); // not initialised: the jobs touch the pages first
     const std::size_t valueBytes = static_cast<std::size_t>(array->GetDataTypeSize());
     const std::size_t bytes = static_cast<std::size_t>(tuples) * components * valueBytes;
+    if (array->GetNumberOfTuples() != tuples + skip || (bytes > 0 && !array->GetVoidPointer(0)))
+    {
+      throw std::bad_alloc(); // VTK could not allocate it (and said so)
+    }
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
     this->Queue(this->Appended + static_cast<std::size_t>(offset), target, bytes);
