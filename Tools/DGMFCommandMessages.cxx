@@ -9,10 +9,12 @@
 #include "vtkOutputWindow.h"
 #include "vtkTimerLog.h"
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <mutex>
 #include <set>
 #include <unistd.h>
 
@@ -20,7 +22,7 @@ namespace dgmf_cli
 {
 namespace
 {
-int ErrorCount = 0;
+std::atomic<int> ErrorCount(0); // VTK reports from worker threads too (a compressor's error)
 // Read by the signal handlers: fixed buffers, not std::string.
 char Stage[1024] = "";
 char TemporaryFile[4096] = "";
@@ -77,6 +79,8 @@ public:
 private:
   void Print(const char* kind, const char* vtkText)
   {
+    // VTK's messages may come from several threads at once (a decompressor on each).
+    const std::lock_guard<std::mutex> lock(this->Lock);
     const std::string text = MessageText(vtkText);
     // The executive's report that an algorithm failed repeats what the algorithm said, followed
     // by a dump of the pipeline request.
@@ -89,6 +93,7 @@ private:
   }
 
   std::set<std::string> Printed;
+  std::mutex Lock;
 };
 vtkStandardNewMacro(CommandOutputWindow);
 

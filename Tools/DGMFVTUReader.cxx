@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -136,13 +137,20 @@ public:
     {
       throw NotTaken{ "an array not in the appended section" };
     }
+    // The arrays' cached ranges, which VTK's writer stores as information keys, are left out:
+    // VTK 9.2's reader gives arrays without them too. Other keys: VTK's reader.
     for (int k = 0; k < element->GetNumberOfNestedElements(); ++k)
     {
-      if (std::string(element->GetNestedElement(k)->GetName()) != "InformationKey")
+      vtkXMLDataElement* key = element->GetNestedElement(k);
+      const char* keyName = key->GetAttribute("name");
+      const std::string name = keyName ? keyName : "";
+      if (std::string(key->GetName()) != "InformationKey" ||
+        (name != "L2_NORM_RANGE" && name != "COMPONENT_RANGE" && name != "L2_NORM_FINITE_RANGE" &&
+          name != "COMPONENT_FINITE_RANGE"))
       {
-        throw NotTaken{ "an array with an element inside other than information keys" };
+        throw NotTaken{ "an array with information other than its cached ranges" };
       }
-    } // information keys (cached ranges) are left out, as VTK 9.2's reader leaves them
+    }
     int fileType = 0;
     if (!element->GetWordTypeAttribute("type", fileType) || !IsNumeric(fileType))
     {
@@ -170,6 +178,14 @@ public:
     {
       throw NotTaken{ "an array without its size or offset" };
     }
+    const auto valueBytes =
+      static_cast<std::size_t>(vtkDataArray::GetDataTypeSize(type ? type : fileType));
+    const std::size_t most =
+      static_cast<std::size_t>(PTRDIFF_MAX) / valueBytes / static_cast<std::size_t>(components);
+    if (static_cast<std::size_t>(tuples) > most - static_cast<std::size_t>(skip))
+    {
+      throw NotTaken{ "an array too large to be held" };
+    }
     auto array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type ? type : fileType));
     const char* name = element->GetAttribute("Name");
     if (name && type == 0) // the cells' arrays (converted) have no name in VTK's reader
@@ -177,7 +193,7 @@ public:
       array->SetName(name);
     }
     array->SetNumberOfComponents(components);
-    for (int c = 0; c < components; ++c)
+    for (int c = 0; c < components && c < 10; ++c) // VTK's reader reads names 0 to 9
     {
       const std::string key = "ComponentName" + std::to_string(c);
       if (const char* name = element->GetAttribute(key.c_str()))
@@ -186,7 +202,6 @@ public:
       }
     }
     array->SetNumberOfTuples(tuples + skip); // not initialised: the jobs touch the pages first
-    const std::size_t valueBytes = static_cast<std::size_t>(array->GetDataTypeSize());
     const std::size_t bytes = static_cast<std::size_t>(tuples) * components * valueBytes;
     if (array->GetNumberOfTuples() != tuples + skip || (bytes > 0 && !array->GetVoidPointer(0)))
     {
@@ -195,10 +210,15 @@ public:
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
     this->Queue(this->Appended + static_cast<std::size_t>(offset), target, bytes);
+    this->Made.push_back(array); // alive until its jobs have run, whatever the caller keeps
     return array;
   }
 
+  /// Runs the jobs queued so far (RunJobs) and forgets them and their arrays.
+  void Run(const std::string& compressorName);
+
   std::vector<Job> Jobs;
+  std::vector<vtkSmartPointer<vtkDataArray>> Made;
 
 private:
   static bool IsNumeric(int type)
@@ -265,22 +285,31 @@ private:
     const std::uint64_t blocks = this->Word(at);
     const std::uint64_t blockSize = this->Word(at + header);
     const std::uint64_t lastSize = this->Word(at + 2 * header);
-    const std::uint64_t total =
-      blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastSize != 0 ? lastSize : blockSize);
-    if (blocks > this->File.Size || total != bytes)
+    if (blocks > this->File.Size / header || (blocks > 0 && blockSize == 0) || lastSize > blockSize)
     {
-      throw NotTaken{ "an array whose size is not the one the header gives" };
+      throw NotTaken{ "an array whose blocks are not what the header says" };
     }
+    // Each block's size taken from what is left of the array: the sizes must add up to it.
+    std::size_t left = bytes;
     std::size_t source = at + (3 + static_cast<std::size_t>(blocks)) * header;
     for (std::uint64_t b = 0; b < blocks; ++b)
     {
-      const auto compressed = static_cast<std::size_t>(this->Word(at + (3 + b) * header));
-      const auto size =
-        static_cast<std::size_t>(b + 1 < blocks || lastSize == 0 ? blockSize : lastSize);
-      this->Check(source, compressed);
-      this->Jobs.push_back({ this->File.Data + source, compressed, target, size });
-      source += compressed;
+      const std::uint64_t compressed = this->Word(at + (3 + b) * header);
+      const std::uint64_t size = b + 1 < blocks || lastSize == 0 ? blockSize : lastSize;
+      if (size > left || compressed > this->File.Size)
+      {
+        throw NotTaken{ "an array whose size is not the one the header gives" };
+      }
+      this->Check(source, static_cast<std::size_t>(compressed));
+      this->Jobs.push_back({ this->File.Data + source, static_cast<std::size_t>(compressed), target,
+        static_cast<std::size_t>(size) });
+      source += static_cast<std::size_t>(compressed);
       target += size;
+      left -= static_cast<std::size_t>(size);
+    }
+    if (left != 0)
+    {
+      throw NotTaken{ "an array whose size is not the one the header gives" };
     }
   }
 
@@ -332,6 +361,11 @@ void AddArrays(ArrayMaker& maker, vtkXMLDataElement* parent, vtkIdType tuples, v
     {
       throw NotTaken{ std::string("an element ") + element->GetName() + " among the arrays" };
     }
+    const char* name = element->GetAttribute("Name");
+    if (!name || data->HasArray(name))
+    {
+      throw NotTaken{ "an array without a name, or two of the same name" };
+    }
     data->AddArray(maker.Make(element, tuples));
   }
 }
@@ -363,6 +397,13 @@ void RunJobs(const std::vector<Job>& jobs, const std::string& compressorName)
   {
     throw NotTaken{ "a block that does not decompress to its size" };
   }
+}
+
+void ArrayMaker::Run(const std::string& compressorName)
+{
+  RunJobs(this->Jobs, compressorName);
+  this->Jobs.clear();
+  this->Made.clear();
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
@@ -436,9 +477,9 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
   vtkIdType points = 0;
   vtkIdType cells = 0;
   if (!piece || !piece->GetScalarAttribute("NumberOfPoints", points) ||
-    !piece->GetScalarAttribute("NumberOfCells", cells) || points < 0 || cells < 0)
+    !piece->GetScalarAttribute("NumberOfCells", cells) || points <= 0 || cells <= 0)
   {
-    throw NotTaken{ "no piece with its numbers of points and cells" };
+    throw NotTaken{ "no piece with points and cells" };
   }
 
   MappedFile file(path);
@@ -450,18 +491,16 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     !compressorName.empty());
   auto output = vtkSmartPointer<vtkUnstructuredGrid>::New();
   // Points: their DataArray as it is (Float32 or Float64).
-  vtkXMLDataElement* pointsElement = Child(piece, "Points");
-  if (points > 0)
+  vtkXMLDataElement* coordinates = Child(Child(piece, "Points"), "DataArray");
+  int pointComponents = 1;
+  if (!coordinates || !coordinates->GetScalarAttribute("NumberOfComponents", pointComponents) ||
+    pointComponents != 3)
   {
-    vtkXMLDataElement* coordinates = Child(pointsElement, "DataArray");
-    if (!coordinates)
-    {
-      throw NotTaken{ "no points array" };
-    }
-    vtkNew<vtkPoints> outputPoints;
-    outputPoints->SetData(maker.Make(coordinates, points));
-    output->SetPoints(outputPoints);
+    throw NotTaken{ "no points array of 3 components" };
   }
+  vtkNew<vtkPoints> outputPoints;
+  outputPoints->SetData(maker.Make(coordinates, points));
+  output->SetPoints(outputPoints);
   // Cells: connectivity and offsets as vtkIdType (the offsets after a leading 0), types as bytes.
   vtkSmartPointer<vtkDataArray> offsets, types;
   vtkXMLDataElement* connectivityElement = nullptr; // read once the offsets give its length
@@ -472,6 +511,13 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
       vtkXMLDataElement* element = cellsElement->GetNestedElement(k);
       const char* name = element->GetAttribute("Name");
       const std::string which = name ? name : "";
+      int components = 1;
+      element->GetScalarAttribute("NumberOfComponents", components);
+      if (components != 1 || (which == "offsets" && offsets) || (which == "types" && types) ||
+        (which == "connectivity" && connectivityElement))
+      {
+        throw NotTaken{ "cells given twice, or with several components" };
+      }
       if (which == "offsets")
       {
         offsets = maker.Make(element, cells, 1, VTK_ID_TYPE);
@@ -491,7 +537,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
       }
     }
   }
-  if (cells > 0 && (!offsets || !types))
+  if (!offsets || !types)
   {
     throw NotTaken{ "cells without their offsets or types" };
   }
@@ -504,10 +550,8 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     AddArrays(maker, fieldData, -1, field);
     output->SetFieldData(field);
   }
-  RunJobs(maker.Jobs, compressorName);
-  maker.Jobs.clear();
+  maker.Run(compressorName);
   // The connectivity, now that its length (the last offset) is known.
-  if (cells > 0)
   {
     const auto* offsetValues = static_cast<const vtkIdType*>(offsets->GetVoidPointer(0));
     const vtkIdType ids = offsetValues[cells];
@@ -524,7 +568,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     }
     vtkSmartPointer<vtkDataArray> connectivity =
       maker.Make(connectivityElement, ids, 0, VTK_ID_TYPE);
-    RunJobs(maker.Jobs, compressorName);
+    maker.Run(compressorName);
     const auto* idValues = static_cast<const vtkIdType*>(connectivity->GetVoidPointer(0));
     std::atomic<bool> outside(false);
     vtkSMPTools::For(0, ids,

@@ -26,9 +26,11 @@ namespace dgmf_cli
  * Reads the .vtu file `path` as vtkXMLUnstructuredGridReader would (the same points, cells,
  * point, cell and field data arrays with their types, names, component names and active
  * attributes), when the file is of the kind this reader takes: VTK's XML format version 0.1 or
- * 1.0, little-endian, one piece, every array numeric, in the appended section, raw (not base64),
- * compressed with LZ4, zlib, LZMA or not at all, and no polyhedra (the arrays' information keys,
- * such as cached ranges, are left out, as VTK 9.2's reader leaves them). Otherwise,
+ * 1.0, little-endian, one piece with points and cells, every array numeric and named once, in
+ * the appended section, raw (not base64), compressed with LZ4, zlib, LZMA or not at all, and no
+ * polyhedra (the arrays' cached ranges, which VTK's writer stores as information keys, are left
+ * out, as VTK 9.2's reader leaves them; other information keys go to VTK's reader). Every size
+ * and offset of the header is checked against the file before it is used. Otherwise,
  * or when the file does not hold what its header says, returns null and `whyNot` says why: the
  * caller then reads the file with VTK's reader (which reports errors as VTK does).
  */

@@ -447,8 +447,9 @@ CompositeMesh::CompositeMesh(
   vtkSmartPointer<vtkPoints> mergedPoints;
   for (std::size_t l = 0; l < blocks.size() && !mergedPoints; ++l)
   {
-    if (this->Leaves[l].SameNumbering && blocks[l]->GetNumberOfPoints() == nodes &&
-      blocks[l]->GetPoints()->GetDataType() == VTK_DOUBLE)
+    auto* doubles = vtkDoubleArray::SafeDownCast(blocks[l]->GetPoints()->GetData());
+    if (this->Leaves[l].SameNumbering && blocks[l]->GetNumberOfPoints() == nodes && doubles &&
+      doubles->GetNumberOfComponents() == 3) // plain doubles, as the merged points are
     {
       mergedPoints = blocks[l]->GetPoints();
       this->SharedPoints = true;

@@ -231,6 +231,20 @@ TEST(FaceParity, ABlockPairsUpOnlyWhenItsBoundaryPatchesCoverItsBoundaryExactly)
   }
 }
 
+TEST(FaceParity, TheSameAnswerWhenTheCellsSpanSeveralBlocksOnTwoThreads)
+{
+  // 27^3 = 19,683 hexahedra and their patches: more cells than one block of the pass.
+  const int n = 27;
+  const std::size_t points = static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1));
+  StreamCells closed = WithPatches(Block(n), points, true);
+  EXPECT_TRUE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor));
+  EXPECT_TRUE(dgmf::FacesPairUp(closed, points, dgmf_test::TwoThreadFor));
+  std::swap(closed.Streams.front(), closed.Streams.back()); // a patch in the first block
+  closed.Streams.pop_back(); // and a hexahedron fewer in the last: its 6 faces unpaired
+  EXPECT_FALSE(dgmf::FacesPairUp(closed, points, dgmf::SerialFor));
+  EXPECT_FALSE(dgmf::FacesPairUp(closed, points, dgmf_test::TwoThreadFor));
+}
+
 TEST(FaceParity, FacesPairOnlyWithTheSameSetOfPoints)
 {
   StreamCells cells;

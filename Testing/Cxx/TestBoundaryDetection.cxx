@@ -414,9 +414,9 @@ TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
 
 TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFaces)
 {
-  auto volume = JitteredTetrahedra(6);
+  auto volume = JitteredTetrahedra(16); // 24,576 cells: several blocks of the parity's pass
   const dgmf_vtk::BoundaryFacets facets = dgmf_vtk::FindBoundaryFacets(volume, 3);
-  ASSERT_EQ(facets.Size(), static_cast<std::size_t>(6 * 2 * 6 * 6));
+  ASSERT_EQ(facets.Size(), static_cast<std::size_t>(6 * 2 * 16 * 16));
   // The volume and its boundary triangles (a reader's boundary patches) in one grid, the
   // triangles' points in reverse order; `skip` leaves out one, `twice` repeats one.
   const auto withPatches = [&](std::size_t skip, std::size_t twice)

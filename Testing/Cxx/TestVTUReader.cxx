@@ -315,3 +315,68 @@ TEST(VTUReader, ATruncatedOrDamagedFileIsRefusedNotRead)
   }
   std::remove(path.c_str());
 }
+
+TEST(VTUReader, HeadersThatDoNotHoldTogetherAreRefused)
+{
+  const std::string path = Write(Grid(), "dgmf_reader_lies.vtu",
+    [](vtkXMLUnstructuredGridWriter* w)
+    {
+      w->SetCompressorTypeToLZ4();
+      w->SetHeaderTypeToUInt64();
+    });
+  std::string original;
+  {
+    std::ifstream in(path, std::ios::binary);
+    original.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto refused = [&](const std::string& what, const std::function<void(std::string&)>& edit)
+  {
+    std::string bytes = original;
+    edit(bytes);
+    {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    }
+    std::string whyNot;
+    EXPECT_EQ(dgmf_cli::ReadAppendedVTU(path, whyNot), nullptr) << what;
+    EXPECT_FALSE(whyNot.empty()) << what;
+  };
+  const auto replace = [](std::string& bytes, const std::string& from, const std::string& to)
+  {
+    const std::size_t at = bytes.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bytes.replace(at, from.size(), to);
+  };
+  // 2^61 points: their bytes do not fit in 64 bits.
+  refused("2^61 points",
+    [&](std::string& b)
+    {
+      replace(b, "NumberOfPoints=\"" + std::to_string(Side * Side * Side) + "\"",
+        "NumberOfPoints=\"2305843009213693952\"");
+    });
+  // Blocks whose sizes wrap around to the array's size: 2 blocks of 2^64 - 8 and B + 8 bytes.
+  refused("wrapping block sizes",
+    [&](std::string& b)
+    {
+      const std::size_t appended = b.find('_', b.find("<AppendedData")) + 1;
+      const std::size_t name = b.find("Name=\"Points\"");
+      const std::size_t offsetAt = b.find("offset=\"", name) + 8;
+      const std::size_t offset = std::stoull(b.substr(offsetAt, 20));
+      const std::uint64_t words[3] = { 2, ~std::uint64_t(0) - 7,
+        static_cast<std::uint64_t>(Side * Side * Side) * 3 * 8 + 8 };
+      std::memcpy(&b[appended + offset], words, sizeof words);
+    });
+  // Two point arrays of one name (VTK keeps the first: left to it), points of 2 components.
+  refused("two arrays named Velocity",
+    [&](std::string& b) { replace(b, "Name=\"Small\"", "Name=\"Velocity\""); });
+  refused("points of 2 components",
+    [&](std::string& b)
+    {
+      const std::size_t name = b.find("Name=\"Points\"");
+      const std::size_t components = b.find("NumberOfComponents=\"3\"", name);
+      b.replace(components, 22, "NumberOfComponents=\"2\"");
+    });
+  refused(
+    "offsets twice", [&](std::string& b) { replace(b, "Name=\"types\"", "Name=\"offsets\""); });
+  std::remove(path.c_str());
+}
