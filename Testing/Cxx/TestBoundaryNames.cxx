@@ -5,6 +5,7 @@
 
 #include "ErrorMessages.h"
 #include "FieldValue.h"
+#include "HexahedraOfGrid.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -482,15 +483,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> HexBoxBlocks(int n, const std::string& omi
       for (int i = 0; i <= n; ++i)
         points->InsertNextPoint(i, j, k);
   volume->SetPoints(points);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-      {
-        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        volume->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-      }
+  dgmf_test::AddHexahedraOfGrid(volume, n);
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   blocks->SetBlock(0, volume);
   Name(blocks, 0, "internalMesh");

@@ -5,6 +5,7 @@
 #include "vtkSizeSkewQualityFilter.h"
 
 #include "FieldValue.h"
+#include "HexahedraOfGrid.h"
 #include "ShippedMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -185,16 +186,7 @@ vtkSmartPointer<vtkUnstructuredGrid> MarkedBox(int n)
   mesh->SetPoints(points);
   mesh->GetPointData()->AddArray(marker);
   mesh->Allocate(n * n * n);
-  auto id = [m](int i, int j, int k) { return static_cast<vtkIdType>(i + m * (j + m * k)); };
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-      {
-        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        mesh->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-      }
+  dgmf_test::AddHexahedraOfGrid(mesh, n);
   return mesh;
 }
 } // namespace
