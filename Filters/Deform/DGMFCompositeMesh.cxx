@@ -220,7 +220,7 @@ struct MergedCells
 
   /// Appends the cells of `block`, their points renumbered by `nodeOf`; returns the largest
   /// dimension of its cells.
-  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
+  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering)
   {
     auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
     if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
@@ -228,7 +228,7 @@ struct MergedCells
       const std::array<bool, 256> present = CellTypesPresent(grid);
       if (!present[VTK_POLYHEDRON])
       {
-        return this->AppendGrid(grid, nodeOf, present);
+        return this->AppendGrid(grid, nodeOf, sameNumbering, present);
       }
     }
     return this->AppendCellByCell(block, nodeOf);
@@ -258,7 +258,7 @@ struct MergedCells
 private:
   /// A grid without polyhedra: its types, offsets and connectivity array by array.
   int AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
-    const std::array<bool, 256>& present)
+    bool sameNumbering, const std::array<bool, 256>& present)
   {
     const vtkIdType cells = grid->GetNumberOfCells();
     vtkCellArray* source = grid->GetCells();
@@ -270,10 +270,18 @@ private:
     const vtkIdType base = this->NumberOfIds;
     const auto shift = [base](vtkIdType offset) { return base + offset; };
     const auto renumber = [&nodeOf](vtkIdType id) { return nodeOf[static_cast<std::size_t>(id)]; };
+    const auto same = [](vtkIdType id) { return id; }; // a plain copy (the volume, as a rule)
     if (source->IsStorage64Bit())
     {
       CopyMapped(source->GetOffsetsArray64(), 0, cells + 1, offsets, shift);
-      CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, renumber);
+      if (sameNumbering)
+      {
+        CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, same);
+      }
+      else
+      {
+        CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, renumber);
+      }
     }
     else
     {
@@ -517,7 +525,7 @@ CompositeMesh::CompositeMesh(
   {
     Leaf& leaf = this->Leaves[l];
     leaf.FirstCell = cells.NumberOfCells;
-    leaf.CellDimension = cells.Append(blocks[l], leaf.NodeOf);
+    leaf.CellDimension = cells.Append(blocks[l], leaf.NodeOf, leaf.SameNumbering);
     leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
   }
   cells.SetOn(this->Merged);

@@ -21,6 +21,25 @@ VTKFaceCells::VTKFaceCells(vtkUnstructuredGrid* mesh, const std::vector<vtkIdTyp
         : nullptr)
   , Canonical(canonical && !canonical->empty() ? canonical : nullptr)
 {
+  vtkCellArray* cells = mesh->GetCells();
+  if (cells && cells->IsStorage64Bit() && mesh->GetNumberOfCells() > 0)
+  {
+    this->Offsets64 = cells->GetOffsetsArray64()->GetPointer(0);
+    this->Connectivity64 = cells->GetConnectivityArray64()->GetPointer(0);
+  }
+  const std::array<bool, 256> present = CellTypesPresent(mesh);
+  for (int type = 0; type < 256; ++type)
+  {
+    dgmf::CellShape shape;
+    const int* order = nullptr;
+    if (present[type] && type != VTK_EMPTY_CELL && type != VTK_POLYHEDRON &&
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 3 &&
+      CellShapeOf(type, shape, order))
+    {
+      this->Shapes[type] = { order, dgmf::GetShapeFaceStream(shape),
+        dgmf::GetNumberOfCorners(shape) };
+    }
+  }
 }
 
 std::size_t VTKFaceCells::GetNumberOfCells() const
@@ -94,34 +113,38 @@ void VTKFaceCells::GetFaces(std::size_t cell, std::vector<std::int64_t>& stream)
 const std::int64_t* VTKFaceCells::GetCornerFaces(
   std::size_t cell, std::vector<std::int64_t>& corners) const
 {
-  const int type = this->Types[cell];
-  dgmf::CellShape shape;
-  const int* order = nullptr;
-  if (type == VTK_POLYHEDRON || type == VTK_EMPTY_CELL ||
-    vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3 ||
-    !CellShapeOf(type, shape, order))
+  const ShapeOfType& shape = this->Shapes[this->Types[cell]];
+  if (!shape.Faces)
   {
     return nullptr;
   }
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
-  thread_local vtkNew<vtkIdList> scratch;
-  this->Mesh->GetCells()->GetCellAtId(static_cast<vtkIdType>(cell), npts, pts, scratch);
-  const int n = dgmf::GetNumberOfCorners(shape);
-  if (npts < n)
+  const vtkTypeInt64* pts64 = nullptr;
+  if (this->Offsets64)
+  {
+    npts = static_cast<vtkIdType>(this->Offsets64[cell + 1] - this->Offsets64[cell]);
+    pts64 = this->Connectivity64 + this->Offsets64[cell];
+  }
+  else
+  {
+    thread_local vtkNew<vtkIdList> scratch;
+    this->Mesh->GetCells()->GetCellAtId(static_cast<vtkIdType>(cell), npts, pts, scratch);
+  }
+  if (npts < shape.Corners)
   {
     return nullptr; // GetFaces gives such a cell no faces
   }
-  corners.resize(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k)
+  corners.resize(static_cast<std::size_t>(shape.Corners));
+  for (int k = 0; k < shape.Corners; ++k)
   {
-    const vtkIdType point = pts[order[k]];
+    const auto point = static_cast<vtkIdType>(pts64 ? pts64[shape.Order[k]] : pts[shape.Order[k]]);
     corners[static_cast<std::size_t>(k)] =
       this->Canonical && point >= 0 && static_cast<std::size_t>(point) < this->Canonical->size()
       ? (*this->Canonical)[static_cast<std::size_t>(point)]
       : point;
   }
-  return dgmf::GetShapeFaceStream(shape);
+  return shape.Faces;
 }
 
 bool VTKFaceCells::CoversAll3DCells(const std::array<bool, 256>& types)

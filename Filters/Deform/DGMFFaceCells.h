@@ -11,6 +11,7 @@
 #include "vtkType.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 class vtkUnstructuredGrid;
@@ -46,6 +47,17 @@ private:
   vtkUnstructuredGrid* Mesh;
   const unsigned char* Types; ///< the cells' types (no virtual call per cell)
   const std::vector<vtkIdType>* Canonical;
+  /// The cells' offsets and connectivity when VTK stores them in 64 bits (no dispatch per cell).
+  const vtkTypeInt64* Offsets64 = nullptr;
+  const vtkTypeInt64* Connectivity64 = nullptr;
+  /// Per cell type: a standard 3D shape (its corner order and face stream), or none.
+  struct ShapeOfType
+  {
+    const int* Order = nullptr;
+    const std::int64_t* Faces = nullptr; ///< null: not a standard 3D shape
+    int Corners = 0;
+  };
+  std::array<ShapeOfType, 256> Shapes;
 };
 
 } // namespace dgmf_vtk

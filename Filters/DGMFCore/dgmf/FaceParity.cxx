@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace dgmf
@@ -35,13 +34,6 @@ struct Hash128
   }
 };
 
-/// A point's hash, in an array left uninitialised until it is filled.
-struct PointHash
-{
-  std::uint64_t Low;
-  std::uint64_t High;
-};
-
 /// Whether two of `hashes` are equal (a cell with two faces of the same points).
 bool HasTwinFaces(std::vector<Hash128>& hashes)
 {
@@ -66,14 +58,13 @@ bool HasTwinFaces(std::vector<Hash128>& hashes)
 
 bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const ParallelFor& parallelFor)
 {
-  // Each point's mix, once (16 bytes a point while this runs): a face's hash is the sum of its
-  // points' (and of its number of points, mixed), so neither order nor start matters.
-  // Not initialised: the threads that fill it touch its pages first.
-  std::unique_ptr<PointHash[]> pointHash(new PointHash[numberOfPoints]);
-  ForEachIndex(parallelFor, numberOfPoints, 1 << 16,
-    [&](std::size_t p) {
-      pointHash[p] = { Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
-    });
+  // A face's hash is the sum of its points' mixes (and of its number of points, mixed), so
+  // neither order nor start matters; a standard shape's corners are mixed once per cell.
+  std::array<Hash128, 16> countHash; // the mix of a face's number of points, for the usual ones
+  for (std::size_t n = 0; n < countHash.size(); ++n)
+  {
+    countHash[n] = { Mix64(n), 0 };
+  }
   const std::size_t numberOfCells = cells.GetNumberOfCells();
   const std::size_t blocks = (numberOfCells + CellsPerBlock - 1) / CellsPerBlock;
   std::vector<Hash128> sums(blocks);
@@ -94,8 +85,8 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           refuse = true;
           return Hash128();
         }
-        const PointHash& h = pointHash[static_cast<std::size_t>(id)];
-        return Hash128{ h.Low, h.High };
+        const auto p = static_cast<std::uint64_t>(id);
+        return Hash128{ Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
       };
       // Each face of a stream whose ids `hashAt(id)` turns into hashes.
       const auto addFaces = [&](const std::int64_t* faceStream, const auto& hashAt)
@@ -108,7 +99,9 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           {
             continue;
           }
-          Hash128 face{ Mix64(static_cast<std::uint64_t>(count)), 0 };
+          Hash128 face = static_cast<std::size_t>(count) < countHash.size()
+            ? countHash[static_cast<std::size_t>(count)]
+            : Hash128{ Mix64(static_cast<std::uint64_t>(count)), 0 };
           for (std::int64_t k = 0; k < count; ++k)
           {
             const Hash128 point = hashAt(faceStream[at + 1 + k]);

@@ -25,7 +25,8 @@ namespace dgmf
  * mixes) and of its number of points; a face in odd count leaves the total non-zero but with a
  * probability of about 2^-128. A cell with two faces of the same points (a collapsed cell), or
  * a point id outside [0, numberOfPoints), makes the answer false (the face matching counts such
- * faces as boundary faces, and refuses such ids). O(faces), 16 bytes per point while it runs, on
+ * faces as boundary faces, and refuses such ids). O(faces), no memory but a few small vectors per
+ * thread (each corner of a standard shape mixed once per cell, FaceCells::GetCornerFaces), on
  * `parallelFor`'s threads, in fixed blocks of cells (the answer does not depend on the
  * threads).
  */
