@@ -15,7 +15,8 @@ namespace dgmf_test
 /// i + (n+1) (j + (n+1) k), the cells along x, then y, then z.
 inline void AddHexahedraOfGrid(vtkUnstructuredGrid* grid, int n)
 {
-  const auto id = [n](int i, int j, int k) { return static_cast<vtkIdType>(i + (n + 1) * (j + (n + 1) * k)); };
+  const auto id = [n](int i, int j, int k)
+  { return static_cast<vtkIdType>(i + (n + 1) * (j + (n + 1) * k)); };
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
