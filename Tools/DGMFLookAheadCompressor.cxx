@@ -1,14 +1,14 @@
 #include "DGMFLookAheadCompressor.h"
 
-#include "vtkLZ4DataCompressor.h"
-#include "vtkLZMADataCompressor.h"
+#include "DGMFCompressorClasses.h"
+
 #include "vtkSMPTools.h"
-#include "vtkZLibDataCompressor.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <type_traits>
 #include <vector>
 
 namespace dgmf_cli
@@ -164,19 +164,9 @@ vtkSmartPointer<vtkDataCompressor> Make(int lookAhead)
 vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(
   const std::string& className, int lookAhead)
 {
-  if (className == "vtkLZ4DataCompressor")
-  {
-    return Make<vtkLZ4DataCompressor>(lookAhead);
-  }
-  if (className == "vtkZLibDataCompressor")
-  {
-    return Make<vtkZLibDataCompressor>(lookAhead);
-  }
-  if (className == "vtkLZMADataCompressor")
-  {
-    return Make<vtkLZMADataCompressor>(lookAhead);
-  }
-  return nullptr;
+  return WithCompressorClass(className,
+    [lookAhead](auto* vtkClass)
+    { return Make<std::remove_pointer_t<decltype(vtkClass)>>(lookAhead); });
 }
 
 } // namespace dgmf_cli

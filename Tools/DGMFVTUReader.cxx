@@ -1,14 +1,13 @@
 #include "DGMFVTUReader.h"
 
+#include "DGMFAppendedData.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDataCompressor.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
-#include "vtkLZ4DataCompressor.h"
-#include "vtkLZMADataCompressor.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -16,19 +15,11 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLDataParser.h"
-#include "vtkZLibDataCompressor.h"
-
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
-#include <memory>
 #include <new>
 #include <vector>
 
@@ -36,90 +27,12 @@ namespace dgmf_cli
 {
 namespace
 {
-/// The file, mapped read-only (the kernel's page cache, no copy).
-class MappedFile
-{
-public:
-  explicit MappedFile(const std::string& path)
-  {
-    const int fd = ::open(path.c_str(), O_RDONLY);
-    struct stat status;
-    if (fd < 0 || ::fstat(fd, &status) != 0 || status.st_size <= 0)
-    {
-      if (fd >= 0)
-      {
-        ::close(fd);
-      }
-      return;
-    }
-    int flags = MAP_PRIVATE;
-#ifdef MAP_POPULATE
-    flags |= MAP_POPULATE; // the pages mapped at once, not one fault at a time
-#endif
-    void* data = ::mmap(nullptr, static_cast<std::size_t>(status.st_size), PROT_READ, flags, fd, 0);
-    ::close(fd);
-    if (data != MAP_FAILED)
-    {
-      this->Data = static_cast<const unsigned char*>(data);
-      this->Size = static_cast<std::size_t>(status.st_size);
-    }
-  }
-  ~MappedFile()
-  {
-    if (this->Data)
-    {
-      ::munmap(const_cast<unsigned char*>(this->Data), this->Size);
-    }
-  }
-  MappedFile(const MappedFile&) = delete;
-  MappedFile& operator=(const MappedFile&) = delete;
-
-  const unsigned char* Data = nullptr;
-  std::size_t Size = 0;
-};
-
-/// VTK's compressor of the class the file names (null for none or another one).
-vtkSmartPointer<vtkDataCompressor> NewCompressor(const std::string& name)
-{
-  if (name == "vtkLZ4DataCompressor")
-  {
-    return vtkSmartPointer<vtkLZ4DataCompressor>::New();
-  }
-  if (name == "vtkZLibDataCompressor")
-  {
-    return vtkSmartPointer<vtkZLibDataCompressor>::New();
-  }
-  if (name == "vtkLZMADataCompressor")
-  {
-    return vtkSmartPointer<vtkLZMADataCompressor>::New();
-  }
-  return nullptr;
-}
-
-/// A piece of work: bytes of the file into an array (decompressed, or copied).
-struct Job
-{
-  const unsigned char* Source;
-  std::size_t SourceBytes;
-  unsigned char* Target;
-  std::size_t TargetBytes;
-};
-
-/// Why the fast path does not take the file.
-struct NotTaken
-{
-  std::string Why;
-};
-
-/// The arrays of the file, made from its header; their bytes are queued as jobs.
+/// The arrays of the file, made from its header; their bytes queued in the appended data.
 class ArrayMaker
 {
 public:
-  ArrayMaker(const MappedFile& file, std::size_t appended, int headerBytes, bool compressed)
-    : File(file)
-    , Appended(appended)
-    , HeaderBytes(headerBytes)
-    , Compressed(compressed)
+  explicit ArrayMaker(AppendedData& appended)
+    : Appended(appended)
   {
   }
 
@@ -209,16 +122,17 @@ public:
     }
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
-    this->Queue(this->Appended + static_cast<std::size_t>(offset), target, bytes);
-    this->Made.push_back(array); // alive until its jobs have run, whatever the caller keeps
+    this->Appended.Queue(static_cast<std::size_t>(offset), target, bytes);
+    this->Made.push_back(array); // alive until its bytes are written, whatever the caller keeps
     return array;
   }
 
-  /// Runs the jobs queued so far (RunJobs) and forgets them and their arrays.
-  void Run(const std::string& compressorName);
-
-  std::vector<Job> Jobs;
-  std::vector<vtkSmartPointer<vtkDataArray>> Made;
+  /// Writes the bytes of the arrays made so far.
+  void Run()
+  {
+    this->Appended.Run();
+    this->Made.clear();
+  }
 
 private:
   static bool IsNumeric(int type)
@@ -245,78 +159,8 @@ private:
     }
   }
 
-  /// A header word at `at` (checked to lie in the file).
-  std::uint64_t Word(std::size_t at) const
-  {
-    this->Check(at, static_cast<std::size_t>(this->HeaderBytes));
-    if (this->HeaderBytes == 4)
-    {
-      std::uint32_t value;
-      std::memcpy(&value, this->File.Data + at, sizeof value);
-      return value;
-    }
-    std::uint64_t value;
-    std::memcpy(&value, this->File.Data + at, sizeof value);
-    return value;
-  }
-
-  void Check(std::size_t at, std::size_t bytes) const
-  {
-    if (at > this->File.Size || bytes > this->File.Size - at)
-    {
-      throw NotTaken{ "an array that runs past the end of the file" };
-    }
-  }
-
-  /// The jobs that fill `bytes` at `target` from the data at `at`: its blocks, or one copy.
-  void Queue(std::size_t at, unsigned char* target, std::size_t bytes)
-  {
-    const auto header = static_cast<std::size_t>(this->HeaderBytes);
-    if (!this->Compressed)
-    {
-      if (this->Word(at) != bytes)
-      {
-        throw NotTaken{ "an array whose size is not the one the header gives" };
-      }
-      this->Check(at + header, bytes);
-      this->Jobs.push_back({ this->File.Data + at + header, bytes, target, bytes });
-      return;
-    }
-    const std::uint64_t blocks = this->Word(at);
-    const std::uint64_t blockSize = this->Word(at + header);
-    const std::uint64_t lastSize = this->Word(at + 2 * header);
-    if (blocks > this->File.Size / header || (blocks > 0 && blockSize == 0) || lastSize > blockSize)
-    {
-      throw NotTaken{ "an array whose blocks are not what the header says" };
-    }
-    // Each block's size taken from what is left of the array: the sizes must add up to it.
-    std::size_t left = bytes;
-    std::size_t source = at + (3 + static_cast<std::size_t>(blocks)) * header;
-    for (std::uint64_t b = 0; b < blocks; ++b)
-    {
-      const std::uint64_t compressed = this->Word(at + (3 + b) * header);
-      const std::uint64_t size = b + 1 < blocks || lastSize == 0 ? blockSize : lastSize;
-      if (size > left || compressed > this->File.Size)
-      {
-        throw NotTaken{ "an array whose size is not the one the header gives" };
-      }
-      this->Check(source, static_cast<std::size_t>(compressed));
-      this->Jobs.push_back({ this->File.Data + source, static_cast<std::size_t>(compressed), target,
-        static_cast<std::size_t>(size) });
-      source += static_cast<std::size_t>(compressed);
-      target += size;
-      left -= static_cast<std::size_t>(size);
-    }
-    if (left != 0)
-    {
-      throw NotTaken{ "an array whose size is not the one the header gives" };
-    }
-  }
-
-  const MappedFile& File;
-  std::size_t Appended;
-  int HeaderBytes;
-  bool Compressed;
+  AppendedData& Appended;
+  std::vector<vtkSmartPointer<vtkDataArray>> Made;
 };
 
 /// The active attributes (Scalars="name", ...) of a PointData or CellData element.
@@ -370,42 +214,6 @@ void AddArrays(ArrayMaker& maker, vtkXMLDataElement* parent, vtkIdType tuples, v
   }
 }
 
-/// Runs the jobs on the vtkSMPTools threads, each thread with its own compressor.
-void RunJobs(const std::vector<Job>& jobs, const std::string& compressorName)
-{
-  std::atomic<bool> failed(false);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(jobs.size()), 1,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      vtkSmartPointer<vtkDataCompressor> compressor =
-        compressorName.empty() ? nullptr : NewCompressor(compressorName);
-      for (vtkIdType j = begin; j < end && !failed.load(std::memory_order_relaxed); ++j)
-      {
-        const Job& job = jobs[static_cast<std::size_t>(j)];
-        if (!compressor)
-        {
-          std::memcpy(job.Target, job.Source, job.TargetBytes);
-        }
-        else if (compressor->Uncompress(job.Source, job.SourceBytes, job.Target, job.TargetBytes) !=
-          job.TargetBytes)
-        {
-          failed = true;
-        }
-      }
-    });
-  if (failed)
-  {
-    throw NotTaken{ "a block that does not decompress to its size" };
-  }
-}
-
-void ArrayMaker::Run(const std::string& compressorName)
-{
-  RunJobs(this->Jobs, compressorName);
-  this->Jobs.clear();
-  this->Made.clear();
-}
-
 vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
 {
   // The header, by VTK's parser: it stops at the appended data and says where it starts.
@@ -443,7 +251,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     throw NotTaken{ "header type " + headerType };
   }
   const std::string compressorName = attribute("compressor");
-  if (!compressorName.empty() && !NewCompressor(compressorName))
+  if (!AppendedData::CanDecompress(compressorName))
   {
     throw NotTaken{ "compressor " + compressorName };
   }
@@ -482,13 +290,9 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     throw NotTaken{ "no piece with points and cells" };
   }
 
-  MappedFile file(path);
-  if (!file.Data)
-  {
-    throw NotTaken{ "the file cannot be mapped" };
-  }
-  ArrayMaker maker(file, static_cast<std::size_t>(parser->GetAppendedDataPosition()), headerBytes,
-    !compressorName.empty());
+  AppendedData appendedData(
+    path, static_cast<std::size_t>(parser->GetAppendedDataPosition()), headerBytes, compressorName);
+  ArrayMaker maker(appendedData);
   auto output = vtkSmartPointer<vtkUnstructuredGrid>::New();
   // Points: their DataArray as it is (Float32 or Float64).
   vtkXMLDataElement* coordinates = Child(Child(piece, "Points"), "DataArray");
@@ -550,7 +354,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     AddArrays(maker, fieldData, -1, field);
     output->SetFieldData(field);
   }
-  maker.Run(compressorName);
+  maker.Run();
   // The connectivity, now that its length (the last offset) is known.
   {
     const auto* offsetValues = static_cast<const vtkIdType*>(offsets->GetVoidPointer(0));
@@ -568,7 +372,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
     }
     vtkSmartPointer<vtkDataArray> connectivity =
       maker.Make(connectivityElement, ids, 0, VTK_ID_TYPE);
-    maker.Run(compressorName);
+    maker.Run();
     const auto* idValues = static_cast<const vtkIdType*>(connectivity->GetVoidPointer(0));
     std::atomic<bool> outside(false);
     vtkSMPTools::For(0, ids,

@@ -9,7 +9,7 @@
  * a third of the whole command. Here the XML header is parsed by VTK's own parser
  * (vtkXMLDataParser, which stops at the appended data), the file is mapped, and every block of
  * every array is decompressed by VTK's compressor class into the arrays where they belong, in
- * parallel (vtkSMPTools). See Documentation/speed.md.
+ * parallel (vtkSMPTools; DGMFAppendedData.h). See Documentation/speed.md.
  */
 #ifndef DGMFVTUReader_h
 #define DGMFVTUReader_h
