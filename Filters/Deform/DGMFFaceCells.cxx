@@ -49,51 +49,35 @@ std::size_t VTKFaceCells::GetNumberOfCells() const
 
 void VTKFaceCells::GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const
 {
-  const auto id = static_cast<vtkIdType>(cell);
-  const int type = this->Types[cell];
-  stream.assign(1, 0);
-  if (type == VTK_POLYHEDRON)
+  thread_local std::vector<std::int64_t> corners; // GetFaces is called for every cell
+  if (const std::int64_t* local = this->GetCornerFaces(cell, corners))
   {
-    vtkIdType faces = 0;
-    const vtkIdType* ids = nullptr;
-    this->Mesh->GetFaceStream(id, faces, ids);
-    stream[0] = faces;
-    vtkIdType length = 0;
-    for (vtkIdType f = 0; f < faces; ++f)
-    {
-      length += 1 + ids[length];
-    }
-    stream.insert(stream.end(), ids, ids + length);
-  }
-  else
-  {
-    dgmf::CellShape shape;
-    const int* order = nullptr;
-    if (type == VTK_EMPTY_CELL ||
-      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) != 3 ||
-      !CellShapeOf(type, shape, order))
-    {
-      return;
-    }
-    vtkIdType npts = 0;
-    const vtkIdType* pts = nullptr;
-    thread_local vtkNew<vtkIdList> scratch; // GetFaces is called for every cell, on every thread
-    this->Mesh->GetCells()->GetCellAtId(id, npts, pts, scratch);
-    if (npts < dgmf::GetNumberOfCorners(shape))
-    {
-      return;
-    }
-    const std::int64_t* local = dgmf::GetShapeFaceStream(shape);
-    const std::int64_t length = dgmf::FaceStreamLength(local);
-    stream.assign(local, local + length);
+    // A standard shape: its face stream with its corners' (canonical) point ids.
+    stream.assign(local, local + dgmf::FaceStreamLength(local));
     for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
     {
       for (std::int64_t k = 0; k < local[at]; ++k)
       {
-        stream[at + 1 + k] = pts[order[local[at + 1 + k]]];
+        stream[at + 1 + k] = corners[static_cast<std::size_t>(local[at + 1 + k])];
       }
     }
+    return;
   }
+  stream.assign(1, 0); // no faces, but for a polyhedron's
+  if (this->Types[cell] != VTK_POLYHEDRON)
+  {
+    return;
+  }
+  vtkIdType faces = 0;
+  const vtkIdType* ids = nullptr;
+  this->Mesh->GetFaceStream(static_cast<vtkIdType>(cell), faces, ids);
+  stream[0] = faces;
+  vtkIdType length = 0;
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    length += 1 + ids[length];
+  }
+  stream.insert(stream.end(), ids, ids + length);
   if (this->Canonical)
   {
     for (std::int64_t f = 0, at = 1; f < stream[0]; ++f, at += 1 + stream[at])
