@@ -1,6 +1,7 @@
 #include "DGMFCompositeMesh.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFMergedCells.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 
@@ -8,10 +9,7 @@
 #include "dgmf/ResultNames.h"
 
 #include "vtkArrayDispatch.h"
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellType.h"
-#include "vtkCellTypes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -19,8 +17,6 @@
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -28,12 +24,9 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
-#include "vtkPolyData.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -155,211 +148,6 @@ struct MergeNodeValues
   }
 };
 
-/// The number of cells of `block` and of point ids in their connectivity.
-void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids)
-{
-  cells = block->GetNumberOfCells();
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
-  {
-    ids = grid->GetCells() ? grid->GetCells()->GetNumberOfConnectivityIds() : 0;
-    return;
-  }
-  ids = 0;
-  if (auto* polyData = vtkPolyData::SafeDownCast(block))
-  {
-    for (vtkCellArray* part :
-      { polyData->GetVerts(), polyData->GetLines(), polyData->GetPolys(), polyData->GetStrips() })
-    {
-      ids += part ? part->GetNumberOfConnectivityIds() : 0;
-    }
-    return;
-  }
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    ids += block->GetCellSize(c);
-  }
-}
-
-/// `count` values of `from` (of an integer type), each mapped by `map`, into `to`, on the
-/// vtkSMPTools threads.
-template <typename Array, typename Map>
-void CopyMapped(Array* from, vtkIdType first, vtkIdType count, vtkIdType* to, const Map& map)
-{
-  const auto* values = from->GetPointer(first);
-  MakeSMPParallelFor()(0, static_cast<std::size_t>(count), 1 << 16,
-    [&](std::size_t begin, std::size_t end)
-    {
-      for (std::size_t k = begin; k < end; ++k)
-      {
-        to[k] = map(static_cast<vtkIdType>(values[k]));
-      }
-    });
-}
-
-/**
- * The merged grid's cells, written into VTK arrays sized once for all the blocks (no copy when
- * they are handed to the grid); a grid without polyhedra is copied array by array.
- */
-struct MergedCells
-{
-  vtkNew<vtkUnsignedCharArray> Types;
-  vtkNew<vtkIdTypeArray> Offsets;
-  vtkNew<vtkIdTypeArray> Connectivity;
-  vtkIdType NumberOfCells = 0;
-  vtkIdType NumberOfIds = 0;
-  std::vector<vtkIdType> FaceLocations; // polyhedra: -1, or where the cell's faces start
-  std::vector<vtkIdType> Faces;         // polyhedra: nfaces, then (count, ids...) per face
-
-  MergedCells(vtkIdType cells, vtkIdType ids)
-  {
-    AllocateTuples(this->Types, cells);
-    AllocateTuples(this->Offsets, cells + 1);
-    AllocateTuples(this->Connectivity, ids);
-    this->Offsets->SetValue(0, 0);
-  }
-
-  /// Appends the cells of `block`, their points renumbered by `nodeOf`; returns the largest
-  /// dimension of its cells.
-  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering)
-  {
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
-    if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
-    {
-      const std::array<bool, 256> present = CellTypesPresent(grid);
-      if (!present[VTK_POLYHEDRON])
-      {
-        return this->AppendGrid(grid, nodeOf, sameNumbering, present);
-      }
-    }
-    return this->AppendCellByCell(block, nodeOf);
-  }
-
-  /// Gives `grid` the cells.
-  void SetOn(vtkUnstructuredGrid* grid)
-  {
-    vtkNew<vtkCellArray> cells;
-    cells->SetData(this->Offsets, this->Connectivity);
-    if (this->FaceLocations.empty())
-    {
-      grid->SetCells(this->Types, cells);
-      return;
-    }
-    const auto idArray = [](const std::vector<vtkIdType>& values)
-    {
-      vtkNew<vtkIdTypeArray> array;
-      AllocateTuples(array, static_cast<vtkIdType>(values.size()));
-      std::copy(values.begin(), values.end(), array->GetPointer(0));
-      return vtkSmartPointer<vtkIdTypeArray>(array.GetPointer());
-    };
-    this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells), -1);
-    grid->SetCells(this->Types, cells, idArray(this->FaceLocations), idArray(this->Faces));
-  }
-
-private:
-  /// A grid without polyhedra: its types, offsets and connectivity array by array.
-  int AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
-    bool sameNumbering, const std::array<bool, 256>& present)
-  {
-    const vtkIdType cells = grid->GetNumberOfCells();
-    vtkCellArray* source = grid->GetCells();
-    const vtkIdType ids = source->GetNumberOfConnectivityIds();
-    std::memcpy(this->Types->GetPointer(this->NumberOfCells),
-      grid->GetCellTypesArray()->GetPointer(0), static_cast<std::size_t>(cells));
-    vtkIdType* offsets = this->Offsets->GetPointer(this->NumberOfCells);
-    vtkIdType* connectivity = this->Connectivity->GetPointer(this->NumberOfIds);
-    const vtkIdType base = this->NumberOfIds;
-    const auto shift = [base](vtkIdType offset) { return base + offset; };
-    const auto renumber = [&nodeOf](vtkIdType id) { return nodeOf[static_cast<std::size_t>(id)]; };
-    const auto same = [](vtkIdType id) { return id; }; // a plain copy (the volume, as a rule)
-    if (source->IsStorage64Bit())
-    {
-      CopyMapped(source->GetOffsetsArray64(), 0, cells + 1, offsets, shift);
-      if (sameNumbering)
-      {
-        CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, same);
-      }
-      else
-      {
-        CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, renumber);
-      }
-    }
-    else
-    {
-      CopyMapped(source->GetOffsetsArray32(), 0, cells + 1, offsets, shift);
-      CopyMapped(source->GetConnectivityArray32(), 0, ids, connectivity, renumber);
-    }
-    this->NumberOfCells += cells;
-    this->NumberOfIds += ids;
-    int dimension = 0;
-    for (int type = 0; type < 256; ++type)
-    {
-      if (present[type])
-      {
-        dimension =
-          std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-      }
-    }
-    return dimension;
-  }
-
-  int AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
-  {
-    int dimension = 0;
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
-    auto* polyData = vtkPolyData::SafeDownCast(block);
-    vtkNew<vtkIdList> ids;
-    vtkIdType* connectivity = this->Connectivity->GetPointer(0);
-    vtkIdType* offsets = this->Offsets->GetPointer(0);
-    unsigned char* types = this->Types->GetPointer(0);
-    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
-    {
-      vtkIdType count = 0;
-      const vtkIdType* points = nullptr;
-      if (grid)
-      {
-        grid->GetCellPoints(c, count, points);
-      }
-      else if (polyData)
-      {
-        polyData->GetCellPoints(c, count, points);
-      }
-      else
-      {
-        block->GetCellPoints(c, ids);
-        count = ids->GetNumberOfIds();
-        points = ids->GetPointer(0);
-      }
-      for (vtkIdType k = 0; k < count; ++k)
-      {
-        connectivity[this->NumberOfIds++] = nodeOf[static_cast<std::size_t>(points[k])];
-      }
-      const int type = block->GetCellType(c);
-      types[this->NumberOfCells++] = static_cast<unsigned char>(type);
-      offsets[this->NumberOfCells] = this->NumberOfIds;
-      dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-      if (type == VTK_POLYHEDRON && grid)
-      {
-        // Polyhedra need their faces, renumbered like their points.
-        this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells - 1), -1);
-        this->FaceLocations.push_back(static_cast<vtkIdType>(this->Faces.size()));
-        grid->GetFaceStream(c, ids);
-        const vtkIdType* stream = ids->GetPointer(0);
-        const vtkIdType length = ids->GetNumberOfIds();
-        this->Faces.push_back(length > 0 ? stream[0] : 0);
-        for (vtkIdType k = 1; k < length;)
-        {
-          const vtkIdType faceCount = stream[k++];
-          this->Faces.push_back(faceCount);
-          for (vtkIdType m = 0; m < faceCount; ++m, ++k)
-          {
-            this->Faces.push_back(nodeOf[static_cast<std::size_t>(stream[k])]);
-          }
-        }
-      }
-    }
-    return dimension;
-  }
-};
 } // namespace
 
 CompositeMesh::CompositeMesh(

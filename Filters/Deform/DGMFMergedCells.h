@@ -1,0 +1,62 @@
+/**
+ * @file DGMFMergedCells.h
+ * @brief The merged grid's cells of a composite input: every block's cells, their points
+ * renumbered, in VTK arrays sized once (private to the DGMF::Filters module).
+ */
+#ifndef DGMFMergedCells_h
+#define DGMFMergedCells_h
+
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkType.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <vector>
+
+class vtkPointSet;
+class vtkUnstructuredGrid;
+
+namespace dgmf_vtk
+{
+
+/// The number of cells of `block` and of point ids in their connectivity.
+void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids);
+
+/**
+ * The merged grid's cells, written into VTK arrays sized once for all the blocks (no copy when
+ * they are handed to the grid); a grid without polyhedra is copied array by array, on the
+ * vtkSMPTools threads.
+ */
+class MergedCells
+{
+public:
+  /// Room for `cells` cells of `ids` point ids in all (CountCells over the blocks).
+  MergedCells(vtkIdType cells, vtkIdType ids);
+
+  /// Appends the cells of `block`, their points renumbered by `nodeOf` (`sameNumbering`: nodeOf
+  /// is the identity); returns the largest dimension of its cells.
+  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering);
+
+  /// Gives `grid` the cells.
+  void SetOn(vtkUnstructuredGrid* grid);
+
+  vtkIdType NumberOfCells = 0;
+  vtkIdType NumberOfIds = 0;
+
+private:
+  /// A grid without polyhedra: its types, offsets and connectivity array by array.
+  int AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
+    bool sameNumbering, const std::array<bool, 256>& present);
+  int AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf);
+
+  vtkNew<vtkUnsignedCharArray> Types;
+  vtkNew<vtkIdTypeArray> Offsets;
+  vtkNew<vtkIdTypeArray> Connectivity;
+  std::vector<vtkIdType> FaceLocations; // polyhedra: -1, or where the cell's faces start
+  std::vector<vtkIdType> Faces;         // polyhedra: nfaces, then (count, ids...) per face
+};
+
+} // namespace dgmf_vtk
+
+#endif
