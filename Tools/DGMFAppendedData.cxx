@@ -29,8 +29,8 @@ vtkSmartPointer<vtkDataCompressor> NewCompressor(const std::string& name)
 }
 } // namespace
 
-AppendedData::AppendedData(const std::string& path, std::size_t position, int headerBytes,
-  const std::string& compressorName)
+AppendedData::AppendedData(
+  const std::string& path, std::size_t position, int headerBytes, const std::string& compressorName)
   : Position(position)
   , HeaderBytes(static_cast<std::size_t>(headerBytes))
   , CompressorName(compressorName)

@@ -70,7 +70,8 @@ MergedCells::MergedCells(vtkIdType cells, vtkIdType ids)
   this->Offsets->SetValue(0, 0);
 }
 
-int MergedCells::Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering)
+int MergedCells::Append(
+  vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
   if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
@@ -142,8 +143,7 @@ int MergedCells::AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdTy
   {
     if (present[type])
     {
-      dimension =
-        std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+      dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
     }
   }
   return dimension;
