@@ -23,6 +23,8 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace dgmf_vtk
@@ -86,11 +88,63 @@ struct FacedCell
       this->Original.data(), this->Deformed.data(), this->Faces.data());
   }
 };
+/**
+ * Hexahedra gathered from a block of cells and evaluated together (dgmf::ComputeHexSizeSkew, four
+ * at a time): their deformed corners, and their original corners only when the reference sizes
+ * are to be computed.
+ */
+struct HexBatch
+{
+  static constexpr int Capacity = 64;
+  std::size_t Cells[Capacity];
+  double Original[Capacity][24];
+  double Deformed[Capacity][24];
+  const double* OriginalCorners[Capacity];
+  const double* DeformedCorners[Capacity];
+  double Reference[Capacity];
+  dgmf::CellQuality Quality[Capacity];
+  int Count = 0;
+
+  HexBatch()
+  {
+    for (int i = 0; i < Capacity; ++i)
+    {
+      this->OriginalCorners[i] = this->Original[i];
+      this->DeformedCorners[i] = this->Deformed[i];
+    }
+  }
+
+  /// Adds cell `c` (corner ids `pts` in VTK's order, read in the metric's `order`); true when full.
+  bool Add(std::size_t c, const vtkIdType* pts, const int* order, const double* originalPoints,
+    const double* deformedPoints, bool withOriginal)
+  {
+    GatherCorners(pts, order, deformedPoints, this->Deformed[this->Count]);
+    if (withOriginal)
+    {
+      GatherCorners(pts, order, originalPoints, this->Original[this->Count]);
+    }
+    this->Cells[this->Count++] = c;
+    return this->Count == Capacity;
+  }
+
+  static void GatherCorners(
+    const vtkIdType* pts, const int* order, const double* points, double* corners)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      const double* p = points + 3 * static_cast<std::size_t>(pts[order[k]]);
+      corners[3 * k] = p[0];
+      corners[3 * k + 1] = p[1];
+      corners[3 * k + 2] = p[2];
+    }
+  }
+};
 } // namespace
 
 dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
-  vtkUnsignedCharArray* inputInvalid, const dgmf::ParallelFor& parallelFor)
+  vtkUnsignedCharArray* inputInvalid, const HexReferences& references,
+  const dgmf::ParallelFor& parallelFor)
 {
   const vtkIdType numberOfCells = mesh->GetNumberOfCells();
   sizeSkew->SetNumberOfComponents(1);
@@ -104,17 +158,77 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   unsigned char* invalid = inputInvalid->GetPointer(0);
   vtkCellArray* cells = mesh->GetCells();
   const unsigned char* types = mesh->GetCellTypesArray()->GetPointer(0);
+  // 64-bit cell storage (VTK's default) is read in place, without a call per cell.
+  const bool direct =
+    sizeof(vtkIdType) == 8 && cells && cells->IsStorage64Bit() && numberOfCells > 0;
+  const vtkTypeInt64* directOffsets = direct ? cells->GetOffsetsArray64()->GetPointer(0) : nullptr;
+  const auto* directConnectivity = direct
+    ? reinterpret_cast<const vtkIdType*>(cells->GetConnectivityArray64()->GetPointer(0))
+    : nullptr;
+  const auto write = [&](std::size_t c, const dgmf::CellQuality& quality)
+  {
+    values[c] = quality.SizeSkew;
+    flags[c] = quality.Inverted ? 1 : 0;
+    invalid[c] = quality.InputInvalid ? 1 : 0;
+  };
+
+  // The cell types present, noted on the way (a serial pass over the types would cost a tenth of
+  // the metric on a large hexahedral mesh).
+  std::array<bool, 256> present{};
+  std::mutex presentMutex;
 
   parallelFor(0, static_cast<std::size_t>(numberOfCells), 4096,
     [&](std::size_t begin, std::size_t end)
     {
+      std::array<bool, 256> blockPresent{};
       vtkNew<vtkIdList> scratch;
       FacedCell faced;
-      // Hexahedra go by two (ComputeHexSizeSkewPair, the same bits): `pending` is one waiting
-      // for its partner, its corners in the second half of the buffers.
-      double original[2][8 * 3];
-      double deformed[2][8 * 3];
-      std::size_t pending = end;
+      double original[8 * 3];
+      double deformed[8 * 3];
+      // Hexahedra go by batches: the original corners are read only when their reference sizes
+      // are not known.
+      auto batch = std::make_unique<HexBatch>();
+      const bool knownReferences = references.Known && references.Sizes;
+      const auto evaluate = [&]()
+      {
+        HexBatch& b = *batch;
+        const auto count = static_cast<std::size_t>(b.Count);
+        if (knownReferences)
+        {
+          for (std::size_t i = 0; i < count; ++i)
+          {
+            b.Reference[i] = references.Sizes[b.Cells[i]];
+          }
+        }
+        else
+        {
+          dgmf::ComputeHexReferenceSizes(count, b.OriginalCorners, b.Reference);
+          if (references.Sizes)
+          {
+            for (std::size_t i = 0; i < count; ++i)
+            {
+              references.Sizes[b.Cells[i]] = b.Reference[i];
+            }
+          }
+        }
+        dgmf::ComputeHexSizeSkew(count, b.Reference, b.DeformedCorners, b.Quality);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+          if (b.Quality[i].InputInvalid) // non-convex before the deformation: through its faces
+          {
+            vtkIdType npts;
+            const vtkIdType* pts;
+            dgmf::CellShape shape;
+            const int* order;
+            CellShapeOf(types[b.Cells[i]], shape, order);
+            cells->GetCellAtId(static_cast<vtkIdType>(b.Cells[i]), npts, pts, scratch);
+            HexBatch::GatherCorners(pts, order, originalPoints, b.Original[i]);
+            b.Quality[i] = dgmf::JudgeInvalidInputCell(shape, b.Original[i], b.Deformed[i]);
+          }
+          write(b.Cells[i], b.Quality[i]);
+        }
+        b.Count = 0;
+      };
       for (std::size_t c = begin; c < end; ++c)
       {
         const auto cellId = static_cast<vtkIdType>(c);
@@ -122,9 +236,17 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         const int* order;
         vtkIdType npts;
         const vtkIdType* pts;
-        invalid[c] = 0;
+        blockPresent[types[c]] = true;
         const bool standard = CellShapeOf(types[c], shape, order);
-        cells->GetCellAtId(cellId, npts, pts, scratch);
+        if (direct)
+        {
+          npts = static_cast<vtkIdType>(directOffsets[c + 1] - directOffsets[c]);
+          pts = directConnectivity + directOffsets[c];
+        }
+        else
+        {
+          cells->GetCellAtId(cellId, npts, pts, scratch);
+        }
         if (!standard || npts < dgmf::GetNumberOfCorners(shape))
         {
           // Polyhedra and polygons through their faces; other cells (quadratic) are not covered.
@@ -145,67 +267,39 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           {
             faced.Gather(pts, npts, originalPoints, deformedPoints);
             const dgmf::CellQuality quality = faced.Quality();
-            values[c] = quality.SizeSkew;
-            flags[c] = quality.Inverted ? 1 : 0;
+            write(c, { quality.SizeSkew, quality.Inverted, false });
           }
           else
           {
-            values[c] = std::numeric_limits<double>::quiet_NaN();
-            flags[c] = 0;
+            write(c, { std::numeric_limits<double>::quiet_NaN(), false, false });
+          }
+          continue;
+        }
+        if (shape == dgmf::CellShape::Hexahedron)
+        {
+          if (batch->Add(c, pts, order, originalPoints, deformedPoints, !knownReferences))
+          {
+            evaluate();
           }
           continue;
         }
         const int corners = dgmf::GetNumberOfCorners(shape);
-        const bool hexahedron = shape == dgmf::CellShape::Hexahedron;
-        const int slot = hexahedron && pending == end ? 1 : 0;
         for (int k = 0; k < corners; ++k)
         {
           const auto p = static_cast<std::size_t>(pts[order[k]]);
           for (int d = 0; d < 3; ++d)
           {
-            original[slot][3 * k + d] = originalPoints[3 * p + d];
-            deformed[slot][3 * k + d] = deformedPoints[3 * p + d];
+            original[3 * k + d] = originalPoints[3 * p + d];
+            deformed[3 * k + d] = deformedPoints[3 * p + d];
           }
         }
-        dgmf::CellQuality quality;
-        if (!hexahedron)
-        {
-          quality = dgmf::ComputeCellSizeSkew(shape, original[0], deformed[0]);
-        }
-        else if (slot == 1)
-        {
-          pending = c;
-          continue;
-        }
-        else
-        {
-          dgmf::CellQuality first;
-          dgmf::ComputeHexSizeSkewPair(
-            original[1], deformed[1], original[0], deformed[0], first, quality);
-          if (first.InputInvalid) // non-convex before the deformation: through its faces
-          {
-            first = dgmf::JudgeInvalidInputCell(shape, original[1], deformed[1]);
-          }
-          if (quality.InputInvalid)
-          {
-            quality = dgmf::JudgeInvalidInputCell(shape, original[0], deformed[0]);
-          }
-          values[pending] = first.SizeSkew;
-          flags[pending] = first.Inverted ? 1 : 0;
-          invalid[pending] = first.InputInvalid ? 1 : 0;
-          pending = end;
-        }
-        values[c] = quality.SizeSkew;
-        flags[c] = quality.Inverted ? 1 : 0;
-        invalid[c] = quality.InputInvalid ? 1 : 0;
+        write(c, dgmf::ComputeCellSizeSkew(shape, original, deformed));
       }
-      if (pending < end)
+      evaluate();
+      const std::lock_guard<std::mutex> lock(presentMutex);
+      for (int type = 0; type < 256; ++type)
       {
-        const dgmf::CellQuality last =
-          dgmf::ComputeCellSizeSkew(dgmf::CellShape::Hexahedron, original[1], deformed[1]);
-        values[pending] = last.SizeSkew;
-        flags[pending] = last.Inverted ? 1 : 0;
-        invalid[pending] = last.InputInvalid ? 1 : 0;
+        present[type] = present[type] || blockPresent[type];
       }
     });
   // Left out of the summary, though evaluated: ghost cells (counted by their owner), and cells of
@@ -215,21 +309,24 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   // it does not know).
   std::array<std::int8_t, 256> dimensionOf;
   dimensionOf.fill(-1);
-  std::array<bool, 256> seen{};
   std::int8_t meshDimension = 0;
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  for (int type = 0; type < 256; ++type)
   {
-    if (!seen[types[c]])
+    if (present[type])
     {
-      seen[types[c]] = true;
-      dimensionOf[types[c]] = static_cast<std::int8_t>(vtkCellTypes::GetDimension(types[c]));
-      meshDimension = std::max(meshDimension, dimensionOf[types[c]]);
+      dimensionOf[type] = static_cast<std::int8_t>(vtkCellTypes::GetDimension(type));
+      meshDimension = std::max(meshDimension, dimensionOf[type]);
     }
+  }
+  bool lowerDimension = false;
+  for (int type = 0; type < 256; ++type)
+  {
+    lowerDimension = lowerDimension || (present[type] && dimensionOf[type] < meshDimension);
   }
   std::vector<std::uint8_t> skip;
   const unsigned char* ghosts =
     mesh->GetCellGhostArray() ? mesh->GetCellGhostArray()->GetPointer(0) : nullptr;
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  for (vtkIdType c = 0; (ghosts || lowerDimension) && c < numberOfCells; ++c)
   {
     if ((ghosts && (ghosts[c] & vtkDataSetAttributes::DUPLICATECELL) != 0) ||
       dimensionOf[types[c]] < meshDimension)

@@ -6,6 +6,8 @@
 #ifndef DGMFCellQuality_h
 #define DGMFCellQuality_h
 
+#include "DGMFHexReferenceCache.h"
+
 #include "dgmf/ParallelFor.h"
 #include "dgmf/SizeSkewQuality.h"
 
@@ -27,11 +29,15 @@ namespace dgmf_vtk
  * connectivity; `originalPoints` and `deformedPoints` hold 3 doubles per point. Triangles, quads,
  * pixels, tetrahedra, hexahedra, voxels, wedges and pyramids get the corner metric; polyhedra,
  * polygons and cells invalid in the input are judged through their faces
- * (dgmf::ComputeDecomposedSizeSkew).
+ * (dgmf::ComputeDecomposedSizeSkew). Hexahedra are evaluated four at a time, from the reference
+ * sizes in `references` when they are known there (the original points are then read only for a
+ * cell invalid in the input), and otherwise from the original points, leaving their reference
+ * sizes in `references.Sizes` when it is not null.
  */
 dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDoubleArray* sizeSkew, vtkUnsignedCharArray* inverted,
-  vtkUnsignedCharArray* inputInvalid, const dgmf::ParallelFor& parallelFor);
+  vtkUnsignedCharArray* inputInvalid, const HexReferences& references,
+  const dgmf::ParallelFor& parallelFor);
 
 } // namespace dgmf_vtk
 

@@ -1,6 +1,10 @@
 #include "DGMFContentKey.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <cstring>
 
@@ -41,6 +45,15 @@ std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed)
     static_cast<std::size_t>(array->GetNumberOfValues()) *
       static_cast<std::size_t>(array->GetDataTypeSize()),
     seed + static_cast<std::uint64_t>(array->GetDataType()));
+}
+
+std::uint64_t HashCells(vtkUnstructuredGrid* mesh)
+{
+  vtkCellArray* cells = mesh->GetCells();
+  std::uint64_t h = HashArray(cells->GetConnectivityArray());
+  h = HashArray(cells->GetOffsetsArray(), h);
+  h = HashArray(mesh->GetCellTypesArray(), h);
+  return mesh->GetFaces() ? HashArray(mesh->GetFaces(), h) : h;
 }
 
 bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>& hash)

@@ -14,6 +14,7 @@
 #include <functional>
 
 class vtkDataArray;
+class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
 {
@@ -25,6 +26,9 @@ std::uint64_t HashBytes(
 
 /// HashBytes of an array's values, seeded with its value type.
 std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0);
+
+/// HashArray of a grid's cells: connectivity, offsets, types and polyhedron faces.
+std::uint64_t HashCells(vtkUnstructuredGrid* mesh);
 
 /**
  * The content of an input object between executions: the object and its MTime, and, when either

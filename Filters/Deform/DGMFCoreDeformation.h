@@ -9,6 +9,7 @@
 
 #include "DGMFBoundaryNames.h"
 #include "DGMFCompositeMeshCache.h"
+#include "DGMFHexReferenceCache.h"
 #include "DGMFInputNodes.h"
 #include "DGMFMappingCache.h"
 #include "DGMFNonOrthogonality.h"
@@ -37,6 +38,7 @@ struct DeformationCaches
   FieldArrays Fields;                      ///< r and f, kept between motions
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
   InternalFacesCache Faces;                ///< for the non-orthogonality
+  HexReferenceCache HexReferences;         ///< the hexahedra's original half of the quality
   CompositeMeshCache Composite;            ///< a composite input's merged grid
   /// The node roles of the named boundaries, while the merge and the selection are unchanged.
   struct

@@ -65,15 +65,6 @@ struct MarkerToKinds
     dgmf::MarkerToNodeKinds(vtk::DataArrayValueRange<1>(array), kinds);
   }
 };
-
-/// The content hash of a grid's cells (connectivity, offsets, types).
-std::uint64_t HashCells(vtkUnstructuredGrid* mesh)
-{
-  vtkCellArray* cells = mesh->GetCells();
-  std::uint64_t h = HashArray(cells->GetConnectivityArray());
-  h = HashArray(cells->GetOffsetsArray(), h);
-  return HashArray(mesh->GetCellTypesArray(), h);
-}
 } // namespace
 
 SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm)

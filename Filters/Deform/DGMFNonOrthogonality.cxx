@@ -18,13 +18,7 @@ const dgmf::InternalFaces& InternalFacesCache::Get(
   vtkUnstructuredGrid* mesh, const dgmf::ParallelFor& parallelFor)
 {
   vtkCellArray* cells = mesh->GetCells();
-  auto hashCells = [&]()
-  {
-    std::uint64_t h = HashArray(cells->GetConnectivityArray());
-    h = HashArray(cells->GetOffsetsArray(), h);
-    h = HashArray(mesh->GetCellTypesArray(), h);
-    return mesh->GetFaces() ? HashArray(mesh->GetFaces(), h) : h;
-  };
+  auto hashCells = [mesh]() { return HashCells(mesh); };
   if (!this->Faces || !this->Cells.Matches(cells, hashCells))
   {
     this->Faces = std::make_unique<dgmf::InternalFaces>(dgmf::FindInternalFaces(

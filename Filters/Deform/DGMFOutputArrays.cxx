@@ -144,7 +144,7 @@ void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summ
 
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
-  const dgmf::ParallelFor& parallelFor)
+  const HexReferences& references, const dgmf::ParallelFor& parallelFor)
 {
   vtkNew<vtkDoubleArray> sizeSkew;
   sizeSkew->SetName(dgmf::names::SizeSkew);
@@ -152,8 +152,8 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
   inverted->SetName(dgmf::names::Inverted);
   vtkNew<vtkUnsignedCharArray> inputInvalid;
   inputInvalid->SetName(dgmf::names::InputInvalid);
-  const dgmf::QualitySummary summary = ComputeCellQuality(
-    mesh, originalPoints, deformedPoints, sizeSkew, inverted, inputInvalid, parallelFor);
+  const dgmf::QualitySummary summary = ComputeCellQuality(mesh, originalPoints, deformedPoints,
+    sizeSkew, inverted, inputInvalid, references, parallelFor);
   cellData->AddArray(sizeSkew);
   cellData->AddArray(inverted);
   cellData->AddArray(inputInvalid);
@@ -163,13 +163,13 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
 
 dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
-  InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor)
+  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor)
 {
   dgmf::QualitySummary summary;
   if (sizeSkew)
   {
     summary = AddCellQuality(mesh, originalPoints, deformedPoints, output->GetCellData(),
-      output->GetFieldData(), parallelFor);
+      output->GetFieldData(), references, parallelFor);
   }
   if (faces)
   {

@@ -22,6 +22,7 @@ class vtkUnstructuredGrid;
 namespace dgmf_vtk
 {
 class InternalFacesCache;
+struct HexReferences;
 
 /// Adds a one-tuple vtkIdTypeArray `name` with `value` to `fieldData` (replacing one of that name).
 void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value);
@@ -60,21 +61,23 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
  * The size-skew quality of `mesh`'s cells between `originalPoints` and `deformedPoints` (3 doubles
  * per point): the cell arrays SizeSkew and Inverted into `cellData`, and the summary
  * (SizeSkewMean, SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) into `fieldData`.
- * Returns the summary.
+ * Returns the summary. The hexahedra's reference sizes are read from, or left in, `references`
+ * (ComputeCellQuality).
  */
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
-  const dgmf::ParallelFor& parallelFor);
+  const HexReferences& references, const dgmf::ParallelFor& parallelFor);
 
 /**
  * The quality outputs a filter's options ask for, on `output` (the deformed `mesh`): SizeSkew,
  * Inverted, InputInvalid and their summary when `sizeSkew` (AddCellQuality), and the face
  * non-orthogonality when `faces` is not null (AddNonOrthogonality, with those cached faces).
+ * The hexahedra's reference sizes come from `references` (ComputeCellQuality).
  * Returns the summary (empty without `sizeSkew`).
  */
 dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
-  InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor);
+  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor);
 
 /// Writes `summary` into `fieldData` (SizeSkewMean, SizeSkewMinimum, InvertedCellCount,
 /// SizeSkewEvaluatedCells), replacing the arrays of those names.

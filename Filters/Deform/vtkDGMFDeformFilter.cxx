@@ -27,6 +27,7 @@
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <chrono>
 #include <exception>
 #include <new>
 #include <system_error>
@@ -177,7 +178,7 @@ std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
 {
   const dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   return cache.Inputs.GetMemorySize() + cache.Mapping.GetMemorySize() +
-    cache.Composite.GetMemorySize();
+    cache.Composite.GetMemorySize() + cache.HexReferences.GetMemorySize();
 }
 
 void vtkDGMFDeformFilter::ReleaseCache()
@@ -390,7 +391,8 @@ int vtkDGMFDeformFilter::Execute(
   vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, const dgmf_vtk::CompositeMesh* composite)
 {
   this->LastExecutionReusedGraph = false;
-  this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds = 0.0;
+  this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds =
+    this->LastQualitySeconds = 0.0;
   dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   const bool distributed = dgmf_vtk::IsDistributed(this->Controller);
 
@@ -479,9 +481,15 @@ int vtkDGMFDeformFilter::Execute(
     time->InsertNextValue(internal.Time);
     output->GetFieldData()->AddArray(time);
   }
+  const auto qualityStart = std::chrono::steady_clock::now();
+  const dgmf_vtk::HexReferences hexReferences = this->ComputeQuality && input->GetPoints()
+    ? cache.HexReferences.For(input, input->GetPoints()->GetData())
+    : dgmf_vtk::HexReferences();
   const dgmf::QualitySummary summary = dgmf_vtk::AddOutputQuality(input, nodes.Points,
-    newCoordinates->GetPointer(0), output, this->ComputeQuality,
+    newCoordinates->GetPointer(0), output, this->ComputeQuality, hexReferences,
     this->ComputeNonOrthogonality ? &cache.Faces : nullptr, dgmf_vtk::MakeSMPParallelFor());
+  this->LastQualitySeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - qualityStart).count();
   if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)
   {
     vtkErrorMacro(

@@ -535,12 +535,14 @@ public:
   ///@{
   /**
    * Wall-clock seconds of the phases of the last execution: building the Delaunay graph, locating
-   * the nodes (both 0 when the cache was reused), and the deformation itself (r, f and the new
-   * positions, or the method's fit and evaluation).
+   * the nodes (both 0 when the cache was reused), the deformation itself (r, f and the new
+   * positions, or the method's fit and evaluation), and the quality metrics (SizeSkew and, when on,
+   * the non-orthogonality; 0 when both are off).
    */
   double GetLastGraphSeconds() const { return this->LastGraphSeconds; }
   double GetLastLocationSeconds() const { return this->LastLocationSeconds; }
   double GetLastDeformationSeconds() const { return this->LastDeformationSeconds; }
+  double GetLastQualitySeconds() const { return this->LastQualitySeconds; }
   ///@}
 
   /// Memory kept between executions (graph, node locations, r), in bytes.
@@ -605,6 +607,7 @@ private:
   double LastGraphSeconds = 0.0;
   double LastLocationSeconds = 0.0;
   double LastDeformationSeconds = 0.0;
+  double LastQualitySeconds = 0.0;
 };
 
 #endif

@@ -1,5 +1,6 @@
 #include "vtkSizeSkewQualityFilter.h"
 
+#include "DGMFHexReferenceCache.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFNonOrthogonality.h"
 #include "DGMFOutputArrays.h"
@@ -70,8 +71,8 @@ bool SameCells(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
  * have the same points and cells.
  */
 bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
-  dgmf::QualitySummary& summary, dgmf_vtk::InternalFacesCache* faces, double angles[2],
-  std::string& error)
+  dgmf::QualitySummary& summary, dgmf_vtk::HexReferenceCache* hexReferences,
+  dgmf_vtk::InternalFacesCache* faces, double angles[2], std::string& error)
 {
   const vtkSmartPointer<vtkUnstructuredGrid> grid = dgmf_vtk::AsUnstructuredGrid(mesh);
   const vtkSmartPointer<vtkUnstructuredGrid> original = dgmf_vtk::AsUnstructuredGrid(reference);
@@ -91,8 +92,11 @@ bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
   std::vector<double> deformedCopy, originalCopy; // only for points that are not doubles
   const double* deformed = dgmf_vtk::PointsAsDouble(mesh->GetPoints(), deformedCopy);
   const double* undeformed = dgmf_vtk::PointsAsDouble(reference->GetPoints(), originalCopy);
+  const dgmf_vtk::HexReferences references = hexReferences
+    ? hexReferences->For(original, reference->GetPoints()->GetData())
+    : dgmf_vtk::HexReferences();
   summary = dgmf_vtk::AddCellQuality(original, undeformed, deformed, result->GetCellData(),
-    result->GetFieldData(), dgmf_vtk::MakeSMPParallelFor());
+    result->GetFieldData(), references, dgmf_vtk::MakeSMPParallelFor());
   if (faces)
   {
     dgmf_vtk::AddNonOrthogonality(original, undeformed, deformed, result->GetCellData(),
@@ -106,10 +110,12 @@ bool Measure(vtkPointSet* mesh, vtkPointSet* reference, vtkPointSet* result,
 }
 } // namespace
 
-/// The internal faces of the last mesh measured, kept while its cells are unchanged.
+/// The internal faces and the hexahedra's reference sizes of the last mesh measured, kept while
+/// its cells (and, for the sizes, its reference points) are unchanged.
 struct vtkSizeSkewQualityFilter::Internals
 {
   dgmf_vtk::InternalFacesCache Faces;
+  dgmf_vtk::HexReferenceCache HexReferences;
 };
 
 vtkSizeSkewQualityFilter::vtkSizeSkewQualityFilter()
@@ -162,7 +168,8 @@ int vtkSizeSkewQualityFilter::RequestData(
         fieldData->PassData(mesh->GetFieldData());
         output->SetFieldData(fieldData);
         dgmf::QualitySummary summary;
-        ok = Measure(mesh, reference, output, summary, faces, angles, error);
+        ok = Measure(
+          mesh, reference, output, summary, &this->Internal->HexReferences, faces, angles, error);
         return;
       }
       auto* meshes = vtkCompositeDataSet::SafeDownCast(meshObject);
@@ -203,7 +210,7 @@ int vtkSizeSkewQualityFilter::RequestData(
         blockFieldData->PassData(block->GetFieldData());
         result->SetFieldData(blockFieldData);
         dgmf::QualitySummary summary;
-        ok = Measure(block, original, result, summary, faces, angles, error);
+        ok = Measure(block, original, result, summary, nullptr, faces, angles, error);
         total = dgmf::MergeQualitySummaries(total, summary);
         outputs->SetDataSet(iterator, result);
       }

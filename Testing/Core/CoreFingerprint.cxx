@@ -166,8 +166,15 @@ void Quality(Fingerprint& fingerprint)
         }
       }
     }
-    dgmf::CellQuality a, b;
-    dgmf::ComputeHexSizeSkewPair(original[0], deformed[0], original[1], deformed[1], a, b);
+    // Two hexahedra through the four-lane batch (its last lanes repeat the second cell).
+    const double* originals[2] = { original[0], original[1] };
+    const double* deformeds[2] = { deformed[0], deformed[1] };
+    double references[2];
+    dgmf::ComputeHexReferenceSizes(2, originals, references);
+    dgmf::CellQuality hexahedra[2];
+    dgmf::ComputeHexSizeSkew(2, references, deformeds, hexahedra);
+    const dgmf::CellQuality& a = hexahedra[0];
+    const dgmf::CellQuality& b = hexahedra[1];
     values.insert(values.end(), { a.SizeSkew, b.SizeSkew, a.Inverted ? 1.0 : 0.0 });
     for (dgmf::CellShape shape : { dgmf::CellShape::Tetra, dgmf::CellShape::Wedge,
            dgmf::CellShape::Pyramid, dgmf::CellShape::Quad, dgmf::CellShape::Triangle })

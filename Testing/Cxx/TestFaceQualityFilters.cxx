@@ -4,18 +4,24 @@
 #include "vtkSizeSkewQualityFilter.h"
 
 #include "FieldValue.h"
+#include "HexahedraOfGrid.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 using dgmf_test::Field;
 
@@ -137,4 +143,109 @@ TEST(FaceQualityFilters, CellsInvalidInTheInputAreCountedApartFromCellsTheMotion
   vtkUnstructuredGrid* inverted = Measure(quality, through, dented);
   EXPECT_EQ(Field(inverted, "InvertedCellCount"), 1.0);
   EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
+}
+
+namespace
+{
+/// A box of n^3 hexahedra, its points jittered (every cell different), with a BoundaryMarker:
+/// 2 (moving) on the face x = 0, 1 (static) on the rest of the boundary.
+vtkSmartPointer<vtkUnstructuredGrid> JitteredBox(int n)
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("BoundaryMarker");
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+      {
+        const bool boundary = i == 0 || j == 0 || k == 0 || i == n || j == n || k == n;
+        points->InsertNextPoint(i + (boundary ? 0.0 : jitter(random)),
+          j + (boundary ? 0.0 : jitter(random)), k + (boundary ? 0.0 : jitter(random)));
+        marker->InsertNextValue(i == 0 ? 2 : boundary ? 1 : 0);
+      }
+  auto box = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  box->SetPoints(points);
+  box->GetPointData()->AddArray(marker);
+  dgmf_test::AddHexahedraOfGrid(box, n);
+  return box;
+}
+
+/// True when the SizeSkew arrays of `a` and `b` hold the same bits.
+bool SameSizeSkew(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
+{
+  auto* x = vtkDoubleArray::SafeDownCast(a->GetCellData()->GetArray("SizeSkew"));
+  auto* y = vtkDoubleArray::SafeDownCast(b->GetCellData()->GetArray("SizeSkew"));
+  return x && y && x->GetNumberOfTuples() == a->GetNumberOfCells() &&
+    y->GetNumberOfTuples() == x->GetNumberOfTuples() &&
+    std::memcmp(x->GetPointer(0), y->GetPointer(0),
+      sizeof(double) * static_cast<std::size_t>(x->GetNumberOfTuples())) == 0;
+}
+
+/// The SizeSkew of `mesh` against `reference` by a new quality filter (nothing kept).
+vtkSmartPointer<vtkUnstructuredGrid> FreshQuality(
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* reference)
+{
+  vtkNew<vtkSizeSkewQualityFilter> quality;
+  quality->SetInputData(mesh);
+  quality->SetReferenceData(reference);
+  quality->Update();
+  return quality->GetOutput();
+}
+} // namespace
+
+TEST(FaceQualityFilters, ANewMotionReusesTheHexahedraOriginalHalfAndFollowsAChangedInput)
+{
+  const int n = 8; // 512 hexahedra
+  const vtkSmartPointer<vtkUnstructuredGrid> box = JitteredBox(n);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(box);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetTranslation(-0.3, 0.1, 0.0);
+  filter->ComputeQualityOff();
+  filter->Update();
+  const std::size_t withoutQuality = filter->GetCacheMemorySize();
+  // Frame after frame, the quality equals a fresh filter's, bit for bit.
+  filter->ComputeQualityOn();
+  for (double angle : { 5.0, 20.0, 35.0 })
+  {
+    SCOPED_TRACE(angle);
+    filter->SetRotationAngles(0.0, 0.0, angle);
+    filter->Update();
+    EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+    EXPECT_TRUE(SameSizeSkew(filter->GetOutput(), FreshQuality(filter->GetOutput(), box)));
+    EXPECT_GT(filter->GetLastQualitySeconds(), 0.0);
+  }
+  // The reference sizes are kept: 8 bytes per cell.
+  EXPECT_EQ(filter->GetCacheMemorySize(), withoutQuality + 8 * box->GetNumberOfCells());
+  // The input's interior points moved in place (the same object, modified): the original half
+  // must follow them, not the kept one.
+  for (vtkIdType p = 0; p < box->GetNumberOfPoints(); ++p)
+  {
+    if (vtkArrayDownCast<vtkIntArray>(box->GetPointData()->GetArray("BoundaryMarker"))
+          ->GetValue(p) == 0)
+    {
+      double x[3];
+      box->GetPoint(p, x);
+      box->GetPoints()->SetPoint(p, x[0] + 0.1, 0.9 * x[1] + 0.05, x[2]);
+    }
+  }
+  box->GetPoints()->Modified();
+  filter->Update();
+  EXPECT_TRUE(SameSizeSkew(filter->GetOutput(), FreshQuality(filter->GetOutput(), box)));
+  // The quality filter keeps the same half for a mesh measured again against one reference.
+  vtkNew<vtkSizeSkewQualityFilter> quality;
+  quality->SetReferenceData(box);
+  for (double angle : { 10.0, 40.0 })
+  {
+    filter->SetRotationAngles(0.0, 0.0, angle);
+    filter->Update();
+    vtkNew<vtkUnstructuredGrid> deformed;
+    deformed->ShallowCopy(filter->GetOutput());
+    quality->SetInputData(deformed);
+    quality->Update();
+    EXPECT_TRUE(SameSizeSkew(quality->GetOutput(), FreshQuality(deformed, box)));
+  }
 }

@@ -261,34 +261,61 @@ inline T HexCornerDeterminant(const HexEdgesOf<T>& edges, int corner)
     Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
 }
 
-CellQuality HexSizeSkew(const double* original, const double* deformed)
+/// Not a number: the reference size of a hexahedron without a corner metric.
+constexpr double kNoReference = std::numeric_limits<double>::quiet_NaN();
+
+/// The checks of ComputeHexReferenceSize on one cell: its corner Jacobians `alphas` (sum `sum`)
+/// and the squared lengths of its 12 edges. Returns `sum`, or kNoReference.
+inline double CheckedHexReference(
+  double sum, const double (&alphas)[8], const double (&length2)[12])
+{
+  double smallest = kInfinity, largest = -kInfinity;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    smallest = std::min(smallest, alphas[corner]);
+    largest = std::max(largest, alphas[corner]);
+  }
+  double longestEdge2 = 0.0;
+  for (int e = 0; e < 12; ++e)
+  {
+    longestEdge2 = std::max(longestEdge2, length2[e]);
+  }
+  const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
+  // Written as !(x > y) so that NaN coordinates also take these exits.
+  if (!(std::abs(sum) > kDegenerateTolerance * scale))
+  {
+    return kNoReference; // degenerate
+  }
+  if (!((sum > 0.0 ? smallest : -largest) > 0.0))
+  {
+    return kNoReference; // non-convex (or partly inverted) before the motion
+  }
+  return sum;
+}
+
+double HexReferenceSize(const double* original)
 {
   HexEdges edges;
   ComputeHexEdges(original, edges);
-  double originalSum = 0.0;
-  double longestEdge2 = 0.0;
-  double smallest = kInfinity, largest = -kInfinity; // the original corners' Jacobians
+  double sum = 0.0;
+  double alphas[8];
   for (int corner = 0; corner < 8; ++corner)
   {
-    const double alpha = HexCornerDeterminant(edges, corner);
-    originalSum += alpha;
-    smallest = std::min(smallest, alpha);
-    largest = std::max(largest, alpha);
+    alphas[corner] = HexCornerDeterminant(edges, corner);
+    sum += alphas[corner];
   }
-  for (int e = 0; e < 12; ++e)
-  {
-    longestEdge2 = std::max(longestEdge2, edges.Length2[e]);
-  }
-  const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
-  if (!(std::abs(originalSum) > kDegenerateTolerance * scale))
+  return CheckedHexReference(sum, alphas, edges.Length2);
+}
+
+/// The deformed half of the hexahedron's metric, from its reference size (HexReferenceSize).
+CellQuality HexSizeSkewFromReference(double referenceSize, const double* deformed)
+{
+  if (std::isnan(referenceSize))
   {
     return Degenerate();
   }
-  const double orientation = originalSum > 0.0 ? 1.0 : -1.0;
-  if (!((orientation > 0.0 ? smallest : -largest) > 0.0))
-  {
-    return Degenerate(); // non-convex (or partly inverted) before the motion
-  }
+  const double orientation = referenceSize > 0.0 ? 1.0 : -1.0;
+  HexEdges edges;
   ComputeHexEdges(deformed, edges);
   double deformedSum = 0.0;
   ScaledCubeRoot terms[8];
@@ -305,106 +332,169 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
       alpha * alpha };
   }
   const double inverseSum = SumOfScaledCubeRoots(terms);
-  const double tau = deformedSum / (orientation * originalSum);
+  const double tau = deformedSum / (orientation * referenceSize);
   return Valid(SizeFactor(tau) * 8.0 / inverseSum);
 }
 
-/// Two doubles processed together (Simd.h).
-using Pair = simd::Double2;
-
-/// Vec3 of two hexahedra at once.
-using PairVec3 = Vec3Of<Pair>;
-
-using PairHexEdges = HexEdgesOf<Pair>;
-
-inline void ComputeHexEdges(const double* a, const double* b, PairHexEdges& edges)
+CellQuality HexSizeSkew(const double* original, const double* deformed)
 {
+  return HexSizeSkewFromReference(HexReferenceSize(original), deformed);
+}
+
+/// Four doubles processed together (Simd.h): four hexahedra at once.
+using Four = simd::Double4;
+
+/// Vec3 of four hexahedra at once.
+using FourVec3 = Vec3Of<Four>;
+
+using FourHexEdges = HexEdgesOf<Four>;
+
+/// The edges of the four hexahedra whose corners are at `points[0..3]`.
+inline void ComputeHexEdges(const double* const* points, FourHexEdges& edges)
+{
+  const double* a = points[0];
+  const double* b = points[1];
+  const double* c = points[2];
+  const double* d = points[3];
   ComputeHexEdges(
-    [a, b](int i) -> PairVec3
+    [a, b, c, d](int i) -> FourVec3
     {
-      return { Pair{ a[3 * i], b[3 * i] }, Pair{ a[3 * i + 1], b[3 * i + 1] },
-        Pair{ a[3 * i + 2], b[3 * i + 2] } };
+      return { Four{ a[3 * i], b[3 * i], c[3 * i], d[3 * i] },
+        Four{ a[3 * i + 1], b[3 * i + 1], c[3 * i + 1], d[3 * i + 1] },
+        Four{ a[3 * i + 2], b[3 * i + 2], c[3 * i + 2], d[3 * i + 2] } };
     },
     edges);
 }
 
-/// InverseCubeRootInRange of two values (the bit-level guess lane by lane, the Newton steps
+/// InverseCubeRootInRange of four values (the bit-level guess lane by lane, the Newton steps
 /// together).
-inline Pair InverseCubeRootInRange(Pair x)
+inline Four InverseCubeRootInRange(Four x)
 {
-  return InverseCubeRootNewton(x, Pair{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]) });
+  return InverseCubeRootNewton(x,
+    Four{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]), InverseCubeRootGuess(x[2]),
+      InverseCubeRootGuess(x[3]) });
 }
 
-/**
- * HexSizeSkew of two hexahedra at once: the same operations in the same order, in two-lane
- * vectors, so the same bits. False (nothing written) when either cell is degenerate, inverted or
- * has a cube-root argument out of range: the caller then evaluates them one at a time.
- */
-bool HexSizeSkewPair(const double* original0, const double* deformed0, const double* original1,
-  const double* deformed1, CellQuality& quality0, CellQuality& quality1)
+/// The cells of the group of four starting at `first`, of `count`: the last group repeats its last
+/// cell (its lanes are computed twice and written once).
+inline void GroupOfFour(std::size_t first, std::size_t count, std::size_t (&cells)[4])
 {
-  PairHexEdges edges;
-  ComputeHexEdges(original0, original1, edges);
-  Pair originalSum = { 0.0, 0.0 };
-  Pair alphas[8];
-  for (int corner = 0; corner < 8; ++corner)
+  for (std::size_t l = 0; l < 4; ++l)
   {
-    alphas[corner] = HexCornerDeterminant(edges, corner);
-    originalSum += alphas[corner];
+    cells[l] = std::min(first + l, count - 1);
   }
-  Pair orientation;
-  for (int l = 0; l < 2; ++l)
+}
+
+} // namespace
+
+DGMF_SIMD_AVX2_CLONES
+void ComputeHexReferenceSizes(
+  std::size_t count, const double* const* original, double* referenceSizes)
+{
+  // The loop's body is written here, not in a lambda: the AVX2 clone compiles what it inlines.
+  for (std::size_t first = 0; first < count; first += 4)
   {
-    double longestEdge2 = 0.0;
-    for (int e = 0; e < 12; ++e)
+    std::size_t cells[4];
+    GroupOfFour(first, count, cells);
     {
-      longestEdge2 = std::max(longestEdge2, edges.Length2[e][l]);
-    }
-    const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
-    if (!(std::abs(originalSum[l]) > kDegenerateTolerance * scale))
-    {
-      return false;
-    }
-    orientation[l] = originalSum[l] > 0.0 ? 1.0 : -1.0;
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      if (!(orientation[l] * alphas[corner][l] > 0.0))
+      const double* const points[4] = { original[cells[0]], original[cells[1]], original[cells[2]],
+        original[cells[3]] };
+      FourHexEdges edges;
+      ComputeHexEdges(points, edges);
+      Four sum = { 0.0, 0.0, 0.0, 0.0 };
+      Four alphas[8];
+      for (int corner = 0; corner < 8; ++corner)
       {
-        return false; // non-convex before the motion: one at a time
+        alphas[corner] = HexCornerDeterminant(edges, corner);
+        sum += alphas[corner];
+      }
+      for (int l = 0; l < 4; ++l)
+      {
+        double laneAlphas[8], laneLength2[12];
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          laneAlphas[corner] = alphas[corner][l];
+        }
+        for (int e = 0; e < 12; ++e)
+        {
+          laneLength2[e] = edges.Length2[e][l];
+        }
+        referenceSizes[cells[l]] = CheckedHexReference(sum[l], laneAlphas, laneLength2);
       }
     }
   }
-  ComputeHexEdges(deformed0, deformed1, edges);
-  Pair deformedSum = { 0.0, 0.0 };
-  Pair numerator[8], argument[8];
-  bool usable = true;
-  for (int corner = 0; corner < 8; ++corner)
+}
+
+DGMF_SIMD_AVX2_CLONES
+void ComputeHexSizeSkew(std::size_t count, const double* referenceSizes,
+  const double* const* deformed, CellQuality* quality)
+{
+  for (std::size_t first = 0; first < count; first += 4)
   {
-    const Pair alpha = orientation * HexCornerDeterminant(edges, corner);
-    deformedSum += alpha;
-    const int* e = kHexCornerEdges[corner];
-    numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
-    argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
-    for (int l = 0; l < 2; ++l)
+    std::size_t cells[4];
+    GroupOfFour(first, count, cells);
     {
-      usable &= alpha[l] > 0.0 && argument[corner][l] >= kCubeRootLow &&
-        argument[corner][l] <= kCubeRootHigh;
+      const double* const points[4] = { deformed[cells[0]], deformed[cells[1]], deformed[cells[2]],
+        deformed[cells[3]] };
+      const Four reference = { referenceSizes[cells[0]], referenceSizes[cells[1]],
+        referenceSizes[cells[2]], referenceSizes[cells[3]] };
+      Four orientation;
+      for (int l = 0; l < 4; ++l)
+      {
+        orientation[l] = reference[l] > 0.0 ? 1.0 : -1.0;
+      }
+      FourHexEdges edges;
+      ComputeHexEdges(points, edges);
+      Four deformedSum = { 0.0, 0.0, 0.0, 0.0 };
+      Four numerator[8], argument[8];
+      // The smallest Jacobian and the range of the cube roots' arguments, lane by lane: a NaN
+      // that Min or Max drops leaves a NaN in deformedSum or inverseSum, checked below.
+      Four smallestAlpha, smallestArgument, largestArgument;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const Four alpha = orientation * HexCornerDeterminant(edges, corner);
+        deformedSum += alpha;
+        const int* e = kHexCornerEdges[corner];
+        numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
+        argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
+        smallestAlpha = corner == 0 ? alpha : simd::Min(smallestAlpha, alpha);
+        smallestArgument =
+          corner == 0 ? argument[0] : simd::Min(smallestArgument, argument[corner]);
+        largestArgument = corner == 0 ? argument[0] : simd::Max(largestArgument, argument[corner]);
+      }
+      Four inverseSum = { 0.0, 0.0, 0.0, 0.0 };
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
+      }
+      const Four tau = deformedSum / (orientation * reference);
+      for (int l = 0; l < 4; ++l)
+      {
+        // A lane out of the fast path (no reference, inverted, a cube root out of range) is
+        // evaluated on its own: the same operations where both apply, so the same bits.
+        const bool usable = smallestAlpha[l] > 0.0 && smallestArgument[l] >= kCubeRootLow &&
+          largestArgument[l] <= kCubeRootHigh && !std::isnan(deformedSum[l]) &&
+          !std::isnan(inverseSum[l]);
+        quality[cells[l]] = usable && !std::isnan(reference[l])
+          ? Valid(SizeFactor(tau[l]) * 8.0 / inverseSum[l])
+          : HexSizeSkewFromReference(reference[l], points[l]);
+      }
     }
   }
-  if (!usable)
-  {
-    return false;
-  }
-  Pair inverseSum = { 0.0, 0.0 };
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
-  }
-  const Pair tau = deformedSum / (orientation * originalSum);
-  quality0 = Valid(SizeFactor(tau[0]) * 8.0 / inverseSum[0]);
-  quality1 = Valid(SizeFactor(tau[1]) * 8.0 / inverseSum[1]);
-  return true;
 }
+
+double ComputeHexReferenceSize(const double* original)
+{
+  return HexReferenceSize(original);
+}
+
+CellQuality ComputeHexSizeSkew(double referenceSize, const double* deformed)
+{
+  return HexSizeSkewFromReference(referenceSize, deformed);
+}
+
+namespace
+{
 
 /// Longest squared edge of a polygon with n corners.
 inline double LongestEdge2(const Vec3* p, int n)
@@ -553,16 +643,6 @@ CellQuality TetraSizeSkew(double alpha, double edgeSquares, double originalAlpha
     ? InverseCubeRootInRange(argument)
     : 1.0 / std::cbrt(argument);
   return Valid(SizeFactor(alpha / originalAlpha) * 6.0 / (edgeSquares * inverseRoot));
-}
-
-void ComputeHexSizeSkewPair(const double* original0, const double* deformed0,
-  const double* original1, const double* deformed1, CellQuality& quality0, CellQuality& quality1)
-{
-  if (!HexSizeSkewPair(original0, deformed0, original1, deformed1, quality0, quality1))
-  {
-    quality0 = HexSizeSkew(original0, deformed0);
-    quality1 = HexSizeSkew(original1, deformed1);
-  }
 }
 
 } // namespace dgmf
