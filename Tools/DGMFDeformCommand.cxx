@@ -80,6 +80,10 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
   vtkDataObject* deformed = filter->GetOutputDataObject(0);
   std::cout << "dgmf-deform: " << deformed->GetNumberOfElements(vtkDataObject::POINT) << " points, "
             << deformed->GetNumberOfElements(vtkDataObject::CELL) << " cells, " << seconds << " s";
+  if (filter->GetComputeQuality() || filter->GetComputeNonOrthogonality())
+  {
+    std::cout << " (quality " << filter->GetLastQualitySeconds() << " s)";
+  }
   if (filter->GetComputeQuality() && CountValue(deformed, "SizeSkewEvaluatedCells") == 0)
   {
     // Quadratic cells and polyhedra have no SizeSkew: a minimum of 0 would read as the worst.
