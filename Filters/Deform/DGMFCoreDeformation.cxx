@@ -135,7 +135,8 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
     // A new graph: r and f are computed anew, and their arrays and the output points are first
     // touched while the graph is built (on another thread), off the critical path.
     mapping = &caches.Mapping.Update(
-      solved, mesh->GetPoints()->GetData(), extruded ? 0 : HintStrideOf(mesh),
+      solved, mesh->GetPoints()->GetData(),
+      [mesh, extruded]() { return extruded ? std::size_t(0) : HintStrideOf(mesh); },
       [&]()
       {
         caches.Fields.Reset(solved.NumberOfNodes);

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -207,7 +208,17 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
   }
   else
   {
-    groups.resize(1); // the marker's value 3: one plane
+    // The marker's value 3: one plane. Most meshes have none: a byte search says so at once.
+    const dgmf::NodeKind slip = dgmf::NodeKind::SlipBoundary;
+    static_assert(sizeof(dgmf::NodeKind) == 1, "node kinds are bytes");
+    unsigned char slipByte;
+    std::memcpy(&slipByte, &slip, 1);
+    if (nodes.NumberOfNodes == 0 ||
+      std::memchr(nodes.Kinds.data(), slipByte, nodes.NumberOfNodes) == nullptr)
+    {
+      return;
+    }
+    groups.resize(1);
     names.push_back("boundary-marker value 3");
     for (std::size_t i = 0; i < nodes.NumberOfNodes; ++i)
     {

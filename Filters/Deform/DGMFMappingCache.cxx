@@ -23,7 +23,8 @@ bool MappingCache::Matches(const dgmf::DeformationProblem& problem, vtkDataArray
   const std::size_t n = problem.NumberOfNodes;
   return this->Mapping && this->Dimension == problem.Dimension &&
     this->Mapping->GetNumberOfNodes() == n &&
-    std::equal(problem.Kinds, problem.Kinds + n, this->Mapping->GetNodeKinds().begin()) &&
+    std::memcmp(problem.Kinds, this->Mapping->GetNodeKinds().data(), n * sizeof(dgmf::NodeKind)) ==
+    0 &&
     this->Points.Matches(pointsArray, [&]() { return HashPoints(problem); });
 }
 
@@ -51,7 +52,7 @@ const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem&
 }
 
 const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem& problem,
-  vtkDataArray* pointsArray, std::size_t hintStride,
+  vtkDataArray* pointsArray, const std::function<std::size_t()>& hintStride,
   const std::function<std::vector<vtkDoubleArray*>()>& beforeBuild,
   const dgmf::ParallelFor& parallelFor, bool& reused, std::vector<std::string>& warnings)
 {
@@ -62,7 +63,7 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
   }
   const std::vector<vtkDoubleArray*> arrays = beforeBuild();
   const dgmf::DelaunayMapping& built = this->Build(
-    problem, pointsArray, hintStride,
+    problem, pointsArray, hintStride(),
     [&arrays]()
     {
       for (vtkDoubleArray* array : arrays)

@@ -42,13 +42,14 @@ public:
     const dgmf::ParallelFor& parallelFor);
 
   /**
-   * The mapping of `problem`: Matches() or Build(). Before a build, `beforeBuild` runs (on this
+   * The mapping of `problem`: Matches() or Build(), with the hint stride `hintStride()` (asked
+   * only for a build: it samples the cells). Before a build, `beforeBuild` runs (on this
    * thread) and returns arrays whose memory is then zeroed on a second thread during the build
    * (first touches of output arrays, off the critical path). `reused` tells which; `warnings`
    * gets what the new graph found (static nodes on moving ones, nodes outside the graph).
    */
   const dgmf::DelaunayMapping& Update(const dgmf::DeformationProblem& problem,
-    vtkDataArray* pointsArray, std::size_t hintStride,
+    vtkDataArray* pointsArray, const std::function<std::size_t()>& hintStride,
     const std::function<std::vector<vtkDoubleArray*>()>& beforeBuild,
     const dgmf::ParallelFor& parallelFor, bool& reused, std::vector<std::string>& warnings);
 

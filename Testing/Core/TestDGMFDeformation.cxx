@@ -313,9 +313,9 @@ TEST(DGMFDeformation, SameBitsWithOneAndTwoThreads)
   EXPECT_EQ(std::memcmp(serial.F.data(), threaded.F.data(), serial.F.size() * sizeof(double)), 0);
 }
 
-TEST(DGMFDeformation, TwoNodesAtOnceGiveTheSameBitsAsOneAtATime)
+TEST(DGMFDeformation, FourNodesAtOnceGiveTheSameBitsAsOneAtATime)
 {
-  // DeformDGMF moves interior nodes two at a time (ApplyPair); the result must be Apply's, bit
+  // DeformDGMF moves interior nodes four at a time (ApplyFour); the result must be Apply's, bit
   // for bit, for Euler angles, an axis rotation, with and without a node's own displacement.
   dgmf::RigidMotion euler;
   euler.AnglesDegrees[0] = 17.0;
@@ -337,22 +337,30 @@ TEST(DGMFDeformation, TwoNodesAtOnceGiveTheSameBitsAsOneAtATime)
     for (int t = 0; t < 2000; ++t)
     {
       // f in [0, 1], with the table's end points and exact entries among them.
-      const double f[2] = { t % 50 == 0 ? 1.0 : unit(random), t % 7 == 0 ? 0.25 : unit(random) };
-      double x[2][3], d[2][3], single[2][3], pair[2][3];
-      for (int l = 0; l < 2; ++l)
+      const double f[4] = { t % 50 == 0 ? 1.0 : unit(random), t % 7 == 0 ? 0.25 : unit(random),
+        t % 11 == 0 ? 0.0 : unit(random), unit(random) };
+      double x[4][3], d[4][3], single[4][3], four[4][3];
+      for (int l = 0; l < 4; ++l)
         for (int c = 0; c < 3; ++c)
         {
           x[l][c] = coordinate(random);
           d[l][c] = coordinate(random) * 0.01;
         }
-      const bool withD = t % 2 == 1;
-      for (int l = 0; l < 2; ++l)
+      // Lanes with and without their own displacement, mixed.
+      const bool withD[4] = { t % 2 == 1, t % 3 == 1, t % 2 == 0, true };
+      const double* xs[4];
+      const double* ds[4];
+      double* outs[4];
+      for (int l = 0; l < 4; ++l)
       {
-        damped.Apply(f[l], x[l], withD ? d[l] : nullptr, single[l]);
+        damped.Apply(f[l], x[l], withD[l] ? d[l] : nullptr, single[l]);
+        xs[l] = x[l];
+        ds[l] = withD[l] ? d[l] : nullptr;
+        outs[l] = four[l];
       }
-      damped.ApplyPair(
-        f, x[0], x[1], withD ? d[0] : nullptr, withD ? d[1] : nullptr, pair[0], pair[1]);
-      ASSERT_EQ(std::memcmp(single, pair, sizeof(single)), 0) << "f = " << f[0] << ", " << f[1];
+      damped.ApplyFour(f, xs, ds, outs);
+      ASSERT_EQ(std::memcmp(single, four, sizeof(single)), 0)
+        << "f = " << f[0] << ", " << f[1] << ", " << f[2] << ", " << f[3];
     }
   }
 }

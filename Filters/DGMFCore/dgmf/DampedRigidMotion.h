@@ -51,31 +51,34 @@ public:
   }
 
   /**
-   * Apply() for two nodes at once, in the processor's two-lane double-precision vectors: the
-   * same operations in the same order as Apply(), so the same bits, at about the cost of one.
-   * `d0` and `d1` may be null.
+   * Apply() for four nodes at once, in four-lane double-precision vectors (simd::Double4: AVX2 in
+   * a caller marked DGMF_SIMD_AVX2_CLONES on a processor that has it): the same operations in the
+   * same order as Apply(), so the same bits. `d[l]` may be null.
    */
-  void ApplyPair(const double f[2], const double* x0, const double* x1, const double* d0,
-    const double* d1, double* out0, double* out1) const
+  DGMF_SIMD_INLINE void ApplyFour(const double f[4], const double* const x[4],
+    const double* const d[4], double* const out[4]) const
   {
-    const Pair fv = { f[0], f[1] };
-    int k[2];
-    const Pair frac = TableSplit(fv, k);
-    Pair y[3];
+    const Four fv = { f[0], f[1], f[2], f[3] };
+    int k[4];
+    const Four frac = TableSplit(fv, k);
+    Four y[3];
     for (int c = 0; c < 3; ++c)
     {
-      y[c] = Pair{ x0[c], x1[c] } - this->Motion.Center[c];
+      y[c] = Four{ x[0][c], x[1][c], x[2][c], x[3][c] } - this->Motion.Center[c];
     }
-    this->Rotate(y, [&k, frac](const Axis& axis, Pair& s, Pair& c) { axis.SinCos(k, frac, s, c); });
+    this->Rotate(y, [&k, frac](const Axis& axis, Four& s, Four& c) { axis.SinCos(k, frac, s, c); });
+    const Four hasD = { d[0] ? 1.0 : 0.0, d[1] ? 1.0 : 0.0, d[2] ? 1.0 : 0.0, d[3] ? 1.0 : 0.0 };
     for (int c = 0; c < 3; ++c)
     {
-      const Pair d = { d0 ? d0[c] : 0.0, d1 ? d1[c] : 0.0 };
-      const Pair hasD = { d0 ? 1.0 : 0.0, d1 ? 1.0 : 0.0 };
+      const Four dc = { d[0] ? d[0][c] : 0.0, d[1] ? d[1][c] : 0.0, d[2] ? d[2][c] : 0.0,
+        d[3] ? d[3][c] : 0.0 };
       // As in Apply: c + y + f t + (d ? f d : 0); f d is 0 exactly when there is no d.
-      const Pair r =
-        this->Motion.Center[c] + y[c] + fv * this->Motion.Translation[c] + hasD * (fv * d);
-      out0[c] = r[0];
-      out1[c] = r[1];
+      const Four r =
+        this->Motion.Center[c] + y[c] + fv * this->Motion.Translation[c] + hasD * (fv * dc);
+      for (int l = 0; l < 4; ++l)
+      {
+        out[l][c] = r[l];
+      }
     }
   }
 
@@ -86,19 +89,20 @@ public:
   static constexpr double ShortSeriesLimit = 1e-3;
 
 private:
-  /// Two doubles processed together (Simd.h).
-  using Pair = simd::Double2;
+  /// Four doubles processed together (Simd.h).
+  using Four = simd::Double4;
 
   /// f * Steps split into a table entry k and a remainder, as Axis::SinCos(double) does.
-  static Pair TableSplit(Pair f, int k[2])
+  DGMF_SIMD_INLINE static Four TableSplit(Four f, int k[4])
   {
-    const Pair scaled = f * static_cast<double>(Steps);
-    for (int l = 0; l < 2; ++l)
+    const Four scaled = f * static_cast<double>(Steps);
+    for (int l = 0; l < 4; ++l)
     {
       k[l] = static_cast<int>(scaled[l]);
       k[l] = k[l] < 0 ? 0 : (k[l] > Steps ? Steps : k[l]);
     }
-    const Pair kd = { static_cast<double>(k[0]), static_cast<double>(k[1]) };
+    const Four kd = { static_cast<double>(k[0]), static_cast<double>(k[1]),
+      static_cast<double>(k[2]), static_cast<double>(k[3]) };
     return scaled - kd;
   }
 
@@ -121,21 +125,23 @@ private:
         this->Cos[static_cast<std::size_t>(k)], s, c);
     }
 
-    /// SinCos for two factors at once (the same operations, lane by lane), given their table
+    /// SinCos for four factors at once (the same operations, lane by lane), given their table
     /// entries `k` and remainders `frac` (TableSplit: the same for every angle).
-    void SinCos(const int k[2], Pair frac, Pair& s, Pair& c) const
+    DGMF_SIMD_INLINE void SinCos(const int k[4], Four frac, Four& s, Four& c) const
     {
-      const Pair sk = { this->Sin[static_cast<std::size_t>(k[0])],
-        this->Sin[static_cast<std::size_t>(k[1])] };
-      const Pair ck = { this->Cos[static_cast<std::size_t>(k[0])],
-        this->Cos[static_cast<std::size_t>(k[1])] };
+      const Four sk = { this->Sin[static_cast<std::size_t>(k[0])],
+        this->Sin[static_cast<std::size_t>(k[1])], this->Sin[static_cast<std::size_t>(k[2])],
+        this->Sin[static_cast<std::size_t>(k[3])] };
+      const Four ck = { this->Cos[static_cast<std::size_t>(k[0])],
+        this->Cos[static_cast<std::size_t>(k[1])], this->Cos[static_cast<std::size_t>(k[2])],
+        this->Cos[static_cast<std::size_t>(k[3])] };
       this->Combine(this->AnglePerStep * frac, sk, ck, s, c);
     }
 
     /// sin and cos of (table angle + rho) from the table's sk, ck and the Taylor series of rho,
-    /// for one node (T = double) or two (T = Pair).
+    /// for one node (T = double) or four (T = Four).
     template <typename T>
-    void Combine(T rho, T sk, T ck, T& s, T& c) const
+    DGMF_SIMD_INLINE void Combine(T rho, T sk, T ck, T& s, T& c) const
     {
       const T r2 = rho * rho;
       // Taylor series of sin and cos to rho^9 and rho^8 (multiplications by reciprocals of the
@@ -155,12 +161,12 @@ private:
   };
 
   /**
-   * y <- R(f angles) y for one node (T = double) or two (T = Pair): Rodrigues' formula for an
+   * y <- R(f angles) y for one node (T = double) or four (T = Four): Rodrigues' formula for an
    * axis rotation, else the rotations about x, y and z in turn. `sinCos(axis, s, c)` gives the
    * sine and cosine of the damped angle of `axis`.
    */
   template <typename T, typename SinCos>
-  void Rotate(T y[3], const SinCos& sinCos) const
+  DGMF_SIMD_INLINE void Rotate(T y[3], const SinCos& sinCos) const
   {
     if (this->HasAxisRotation)
     {

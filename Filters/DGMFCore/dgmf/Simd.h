@@ -221,6 +221,18 @@ inline DoubleN<N> operator/(const DoubleN<N>& a, double b)
 #endif
 
 /**
+ * DGMF_SIMD_INLINE instead of `inline` on a function that must be inlined into its callers (so
+ * that an AVX2 clone compiles it for AVX2, not calls a baseline copy).
+ */
+#if defined(__GNUC__) || defined(__clang__)
+#define DGMF_SIMD_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define DGMF_SIMD_INLINE __forceinline
+#else
+#define DGMF_SIMD_INLINE inline
+#endif
+
+/**
  * DGMF_SIMD_AVX2_CLONES before a function's definition compiles it twice, for AVX2 and for the
  * baseline, and picks one when the program loads, by the processor (GCC's target_clones, on
  * x86-64 with the vector types): Double4 arithmetic then takes one instruction instead of two.
