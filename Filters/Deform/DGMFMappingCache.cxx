@@ -29,23 +29,17 @@ bool MappingCache::Matches(const dgmf::DeformationProblem& problem, vtkDataArray
 }
 
 const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem& problem,
-  vtkDataArray* pointsArray, std::size_t hintStride, const std::function<void()>& alongside,
+  vtkDataArray* pointsArray, std::size_t hintStride, const dgmf::DelaunayGraph::SideJobs& alongside,
   const dgmf::ParallelFor& parallelFor)
 {
   this->Mapping.reset();
   this->Points.Reset();
-  // The cache key's hash of the points is computed on the second thread too.
+  // The cache key's hash of the points is one more job beside the graph's insertion.
   std::uint64_t pointsHash = 0;
-  auto work = [&]()
-  {
-    if (alongside)
-    {
-      alongside();
-    }
-    pointsHash = HashPoints(problem);
-  };
+  dgmf::DelaunayGraph::SideJobs jobs = alongside;
+  jobs.emplace_back([&pointsHash, &problem]() { pointsHash = HashPoints(problem); });
   this->Mapping = std::make_unique<dgmf::DelaunayMapping>(problem.Dimension, problem.Points,
-    problem.NumberOfNodes, problem.Kinds, parallelFor, hintStride, work);
+    problem.NumberOfNodes, problem.Kinds, parallelFor, hintStride, jobs);
   this->Points.Set(pointsArray, [pointsHash]() { return pointsHash; });
   this->Dimension = problem.Dimension;
   return *this->Mapping;
@@ -62,17 +56,22 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
     return *this->Mapping;
   }
   const std::vector<vtkDoubleArray*> arrays = beforeBuild();
-  const dgmf::DelaunayMapping& built = this->Build(
-    problem, pointsArray, hintStride(),
-    [&arrays]()
+  // The arrays' first touch in parts of 8 MB, so that both threads share it once the graph's
+  // insertion is done.
+  constexpr std::size_t part = std::size_t(1) << 20; // doubles
+  dgmf::DelaunayGraph::SideJobs touches;
+  for (vtkDoubleArray* array : arrays)
+  {
+    const auto size = static_cast<std::size_t>(array->GetDataSize());
+    for (std::size_t begin = 0; begin < size; begin += part)
     {
-      for (vtkDoubleArray* array : arrays)
-      {
-        std::memset(
-          array->GetPointer(0), 0, static_cast<std::size_t>(array->GetDataSize()) * sizeof(double));
-      }
-    },
-    parallelFor);
+      double* values = array->GetPointer(0) + begin;
+      const std::size_t count = std::min(part, size - begin);
+      touches.emplace_back([values, count]() { std::memset(values, 0, count * sizeof(double)); });
+    }
+  }
+  const dgmf::DelaunayMapping& built =
+    this->Build(problem, pointsArray, hintStride(), touches, parallelFor);
   if (built.GetNumberOfConflictingNodes() > 0)
   {
     warnings.push_back(std::to_string(built.GetNumberOfConflictingNodes()) +

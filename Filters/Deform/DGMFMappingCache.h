@@ -34,18 +34,19 @@ public:
   bool Matches(const dgmf::DeformationProblem& problem, vtkDataArray* pointsArray);
 
   /**
-   * Builds the mapping of `problem`'s nodes, located with `hintStride`; `alongside` runs on a
-   * second thread while the graph is built. Throws as dgmf::DelaunayMapping.
+   * Builds the mapping of `problem`'s nodes, located with `hintStride`; the `alongside` jobs run
+   * beside the graph's insertion (dgmf::DelaunayGraph::SideJobs), with the hash of the points for
+   * the cache's key. Throws as dgmf::DelaunayMapping.
    */
   const dgmf::DelaunayMapping& Build(const dgmf::DeformationProblem& problem,
-    vtkDataArray* pointsArray, std::size_t hintStride, const std::function<void()>& alongside,
+    vtkDataArray* pointsArray, std::size_t hintStride, const dgmf::DelaunayGraph::SideJobs& alongside,
     const dgmf::ParallelFor& parallelFor);
 
   /**
    * The mapping of `problem`: Matches() or Build(), with the hint stride `hintStride()` (asked
    * only for a build: it samples the cells). Before a build, `beforeBuild` runs (on this
-   * thread) and returns arrays whose memory is then zeroed on a second thread during the build
-   * (first touches of output arrays, off the critical path). `reused` tells which; `warnings`
+   * thread) and returns arrays whose memory is then zeroed, in parts, beside the graph's
+   * insertion (first touches of output arrays, off the critical path). `reused` tells which; `warnings`
    * gets what the new graph found (static nodes on moving ones, nodes outside the graph).
    */
   const dgmf::DelaunayMapping& Update(const dgmf::DeformationProblem& problem,

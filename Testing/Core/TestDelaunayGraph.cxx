@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace
@@ -211,7 +213,7 @@ TEST(DelaunayGraph, TwoThreadsBuildTheSameGraphAsOne)
     const dgmf::DelaunayGraph serial(dimension, xyz.data(), count);
     int calls = 0;
     const dgmf::DelaunayGraph parallel(
-      dimension, xyz.data(), count, dgmf_test::TwoThreadFor, [&]() { ++calls; });
+      dimension, xyz.data(), count, dgmf_test::TwoThreadFor, { [&]() { ++calls; } });
     EXPECT_EQ(calls, 1);
     ASSERT_GT(serial.GetNumberOfElements(), 3u * 4096u) << "too few elements for several blocks";
     ASSERT_EQ(parallel.GetNumberOfVertices(), serial.GetNumberOfVertices());
@@ -258,14 +260,57 @@ TEST(DelaunayGraph, TheCallersFailureIsThrownInPreferenceToTheGraphs)
 {
   const double coplanar[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0 };
   bool ran = false;
-  EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5, dgmf_test::TwoThreadFor, [&]() { ran = true; }),
+  EXPECT_THROW(dgmf::DelaunayGraph(
+                 3, coplanar, 5, dgmf_test::TwoThreadFor, { [&]() { ran = true; } }),
     std::invalid_argument);
   EXPECT_TRUE(ran);
   EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5, dgmf::SerialFor,
-                 []() { throw std::runtime_error("the caller's check"); }),
+                 { []() { throw std::runtime_error("the caller's check"); } }),
     std::runtime_error);
   const std::vector<double> cloud = DegenerateCloud(3);
   EXPECT_THROW(dgmf::DelaunayGraph(3, cloud.data(), cloud.size() / 3, dgmf_test::TwoThreadFor,
-                 []() { throw std::runtime_error("the caller's check"); }),
+                 { []() { throw std::runtime_error("the caller's check"); } }),
     std::runtime_error);
+}
+
+// The side jobs each run exactly once, on one thread or two, and the first failing job in the
+// list's order is the one thrown.
+TEST(DelaunayGraph, EverySideJobRunsOnceAndTheFirstFailureInOrderIsThrown)
+{
+  const std::vector<double> cloud = DegenerateCloud(3);
+  const dgmf::ParallelFor serial = dgmf::SerialFor, twoThreads = dgmf_test::TwoThreadFor;
+  for (const dgmf::ParallelFor* parallelFor : { &serial, &twoThreads })
+  {
+    std::vector<std::atomic<int>> runs(200);
+    dgmf::DelaunayGraph::SideJobs jobs;
+    for (std::size_t j = 0; j < runs.size(); ++j)
+    {
+      jobs.emplace_back([&runs, j]() { ++runs[j]; });
+    }
+    const dgmf::DelaunayGraph graph(3, cloud.data(), cloud.size() / 3, *parallelFor, jobs);
+    EXPECT_GT(graph.GetNumberOfElements(), 0u);
+    for (const std::atomic<int>& r : runs)
+    {
+      ASSERT_EQ(r.load(), 1);
+    }
+    jobs.clear();
+    for (int j = 0; j < 50; ++j)
+    {
+      jobs.emplace_back(
+        [j]()
+        {
+          if (j == 7 || j == 30)
+            throw std::runtime_error("job " + std::to_string(j));
+        });
+    }
+    try
+    {
+      dgmf::DelaunayGraph(3, cloud.data(), cloud.size() / 3, *parallelFor, jobs);
+      ADD_FAILURE() << "no exception";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_STREQ(e.what(), "job 7");
+    }
+  }
 }

@@ -16,6 +16,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <numeric>
@@ -211,12 +212,12 @@ void NumberElements(const std::vector<Handle>& elements, int corners,
 } // namespace
 
 DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count)
-  : DelaunayGraph(dimension, xyz, count, SerialFor, {})
+  : DelaunayGraph(dimension, xyz, count, SerialFor, SideJobs())
 {
 }
 
 DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count,
-  const ParallelFor& parallelFor, const std::function<void()>& duringInsertion)
+  const ParallelFor& parallelFor, const SideJobs& duringInsertion)
   : Dimension(dimension)
 {
   // The graph is built on the points moved by GraphPerturbation of their nearest-neighbour
@@ -244,28 +245,45 @@ DelaunayGraph::DelaunayGraph(int dimension, const double* xyz, std::size_t count
     failure[0] = std::current_exception();
   }
   // The perturbation and CGAL's insertion are sequential (CGAL's parallel insertion, with TBB,
-  // was no faster on 2 threads: speed.md): the caller's work runs beside them.
-  ForEachBlock(parallelFor, 2,
-    [&](std::size_t task)
+  // was no faster on 2 threads: speed.md): the caller's jobs run beside them, then on both tasks.
+  std::atomic<std::size_t> nextJob{ 0 };
+  std::vector<std::exception_ptr> jobFailures(duringInsertion.size());
+  const auto runJobs = [&]()
+  {
+    for (std::size_t j = nextJob++; j < duringInsertion.size(); j = nextJob++)
     {
       try
       {
-        if (task == 0 && !failure[0])
+        if (duringInsertion[j])
         {
-          moved = PerturbPoints(dimension, xyz, count, GraphPerturbation);
-          this->InsertPoints(moved, count);
-        }
-        else if (task == 1 && duringInsertion)
-        {
-          duringInsertion();
+          duringInsertion[j]();
         }
       }
       catch (...)
       {
-        failure[task] = std::current_exception();
+        jobFailures[j] = std::current_exception();
       }
+    }
+  };
+  ForEachBlock(parallelFor, 2,
+    [&](std::size_t task)
+    {
+      if (task == 0 && !failure[0])
+      {
+        try
+        {
+          moved = PerturbPoints(dimension, xyz, count, GraphPerturbation);
+          this->InsertPoints(moved, count);
+        }
+        catch (...)
+        {
+          failure[0] = std::current_exception();
+        }
+      }
+      runJobs();
     });
-  for (const std::exception_ptr& thrown : { failure[1], failure[0] })
+  jobFailures.push_back(failure[0]);
+  for (const std::exception_ptr& thrown : jobFailures)
   {
     if (thrown)
     {

@@ -60,15 +60,22 @@ public:
   DelaunayGraph(int dimension, const double* xyz, std::size_t count);
 
   /**
+   * Work done beside the graph's insertion, job by job: each runs once, on a second task while
+   * the points are perturbed and CGAL inserts them (on one thread), and on both tasks once the
+   * insertion is done (with one thread, all after it). Independent jobs of similar sizes keep
+   * both threads busy until the end (page-faulting first touches, hashes, checks).
+   */
+  using SideJobs = std::vector<std::function<void()>>;
+
+  /**
    * Builds the same graph (the same bits), its loops over the elements (their order, records
-   * and flat-element count) run through `parallelFor`; `duringInsertion`, when given, runs in a
-   * second task while the points are perturbed and CGAL inserts them (on one thread), or after
-   * that with one thread. An exception of `duringInsertion` is thrown in preference to the
-   * graph's own, which the caller's work may explain (its own checks of the input).
-   * `duringInsertion` runs even when the graph's input is rejected.
+   * and flat-element count) run through `parallelFor`, and runs `duringInsertion` (SideJobs) beside
+   * the insertion. An exception of a job (the first in the list's order) is thrown in preference
+   * to the graph's own, which the caller's work may explain (its own checks of the input). The
+   * jobs run even when the graph's input is rejected.
    */
   DelaunayGraph(int dimension, const double* xyz, std::size_t count, const ParallelFor& parallelFor,
-    const std::function<void()>& duringInsertion);
+    const SideJobs& duringInsertion);
   ~DelaunayGraph();
   DelaunayGraph(const DelaunayGraph&) = delete;
   DelaunayGraph& operator=(const DelaunayGraph&) = delete;

@@ -22,7 +22,7 @@ constexpr std::size_t GatherAhead = 16;
 
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride,
-  const std::function<void()>& alongside)
+  const DelaunayGraph::SideJobs& alongside)
 {
   if (numberOfNodes > static_cast<std::size_t>(INT32_MAX))
   {
@@ -52,12 +52,13 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   }
   // CGAL inserts the graph's points on one thread; meanwhile another prepares the node arrays,
   // whose first touch costs as much as a pass of the location (page faults), and runs the
-  // caller's `alongside` work. With one thread, one after the other. The check of every point
-  // explains a failure of the graph's as well: its exception is thrown in preference.
+  // caller's `alongside` jobs; once the insertion is done, both threads share what is left. With
+  // one thread, one after the other. The check of every point explains a failure of the graph's
+  // as well: its exception is thrown in preference.
   const int n = dimension + 1;
-  this->Graph = std::make_unique<DelaunayGraph>(dimension, boundaryXYZ.data(),
-    this->BoundaryNodes.size(), parallelFor,
-    [&]()
+  DelaunayGraph::SideJobs jobs;
+  jobs.emplace_back(
+    [points, numberOfNodes]()
     {
       const std::size_t bad = FirstNonFinite(points, 3 * numberOfNodes);
       if (bad < 3 * numberOfNodes)
@@ -65,13 +66,14 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         throw std::invalid_argument("The input mesh has NaN or infinite point coordinates (point " +
           std::to_string(bad / 3) + ").");
       }
-      this->NodeElement.assign(numberOfNodes, NotLocated);
-      this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0);
-      if (alongside)
-      {
-        alongside();
-      }
     });
+  jobs.emplace_back(
+    [this, numberOfNodes, n]()
+    { this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0); });
+  jobs.emplace_back([this, numberOfNodes]() { this->NodeElement.assign(numberOfNodes, NotLocated); });
+  jobs.insert(jobs.end(), alongside.begin(), alongside.end());
+  this->Graph = std::make_unique<DelaunayGraph>(
+    dimension, boundaryXYZ.data(), this->BoundaryNodes.size(), parallelFor, jobs);
   boundaryXYZ = std::vector<double>();
 
   // Vertex kinds: a vertex shared by coincident nodes is moving if any of them moves.

@@ -87,15 +87,16 @@ public:
    * @param kinds the kind of every node
    * @param hintStride 0, or the index difference of mesh neighbours across layers (see
    *   FindHintStride): node i's walk then starts from node i - hintStride's element (LocateNodes)
-   * @param alongside work that does not need the mapping (such as the first touch of the
-   *   caller's output arrays), run on a second thread while the graph is built on one; with a
-   *   single thread, after it. Exceptions it throws are passed on.
+   * @param alongside jobs that do not need the mapping (such as the first touch of the caller's
+   *   output arrays, in parts), run beside the graph's insertion with the mapping's own first
+   *   touches (DelaunayGraph::SideJobs: on a second thread while the graph is built on one, then
+   *   on both). Exceptions they throw are passed on.
    * Throws std::invalid_argument when there are no boundary nodes, when the boundary nodes do
    * not span the dimension, or when any node's coordinate is not finite.
    */
   DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
     const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride = 0,
-    const std::function<void()>& alongside = {});
+    const DelaunayGraph::SideJobs& alongside = {});
 
   int GetDimension() const { return this->Graph->GetDimension(); }
   std::size_t GetNumberOfNodes() const { return this->NodeElement.size(); }
