@@ -39,15 +39,16 @@ public:
    * the cache's key. Throws as dgmf::DelaunayMapping.
    */
   const dgmf::DelaunayMapping& Build(const dgmf::DeformationProblem& problem,
-    vtkDataArray* pointsArray, std::size_t hintStride, const dgmf::DelaunayGraph::SideJobs& alongside,
-    const dgmf::ParallelFor& parallelFor);
+    vtkDataArray* pointsArray, std::size_t hintStride,
+    const dgmf::DelaunayGraph::SideJobs& alongside, const dgmf::ParallelFor& parallelFor);
 
   /**
    * The mapping of `problem`: Matches() or Build(), with the hint stride `hintStride()` (asked
    * only for a build: it samples the cells). Before a build, `beforeBuild` runs (on this
    * thread) and returns arrays whose memory is then zeroed, in parts, beside the graph's
-   * insertion (first touches of output arrays, off the critical path). `reused` tells which; `warnings`
-   * gets what the new graph found (static nodes on moving ones, nodes outside the graph).
+   * insertion (first touches of output arrays, off the critical path). `reused` tells which;
+   * `warnings` gets what the new graph found (static nodes on moving ones, nodes outside the
+   * graph).
    */
   const dgmf::DelaunayMapping& Update(const dgmf::DeformationProblem& problem,
     vtkDataArray* pointsArray, const std::function<std::size_t()>& hintStride,

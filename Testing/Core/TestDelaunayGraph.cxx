@@ -260,8 +260,8 @@ TEST(DelaunayGraph, TheCallersFailureIsThrownInPreferenceToTheGraphs)
 {
   const double coplanar[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0 };
   bool ran = false;
-  EXPECT_THROW(dgmf::DelaunayGraph(
-                 3, coplanar, 5, dgmf_test::TwoThreadFor, { [&]() { ran = true; } }),
+  EXPECT_THROW(
+    dgmf::DelaunayGraph(3, coplanar, 5, dgmf_test::TwoThreadFor, { [&]() { ran = true; } }),
     std::invalid_argument);
   EXPECT_TRUE(ran);
   EXPECT_THROW(dgmf::DelaunayGraph(3, coplanar, 5, dgmf::SerialFor,

@@ -67,10 +67,10 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           std::to_string(bad / 3) + ").");
       }
     });
-  jobs.emplace_back(
-    [this, numberOfNodes, n]()
+  jobs.emplace_back([this, numberOfNodes, n]()
     { this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0); });
-  jobs.emplace_back([this, numberOfNodes]() { this->NodeElement.assign(numberOfNodes, NotLocated); });
+  jobs.emplace_back(
+    [this, numberOfNodes]() { this->NodeElement.assign(numberOfNodes, NotLocated); });
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
   this->Graph = std::make_unique<DelaunayGraph>(
     dimension, boundaryXYZ.data(), this->BoundaryNodes.size(), parallelFor, jobs);
