@@ -66,7 +66,7 @@ bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>
   {
     return true;
   }
-  if (hash() != this->Hash)
+  if (this->ObjectOnly || hash() != this->Hash)
   {
     return false;
   }
@@ -81,6 +81,16 @@ void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& ha
   this->MTime = object->GetMTime();
   this->Hash = hash();
   this->Valid = true;
+  this->ObjectOnly = false;
+}
+
+void ContentKey::SetObjectOnly(vtkObject* object)
+{
+  this->Object = object;
+  this->MTime = object->GetMTime();
+  this->Hash = 0;
+  this->Valid = true;
+  this->ObjectOnly = true;
 }
 
 } // namespace dgmf_vtk

@@ -42,6 +42,9 @@ public:
   bool Matches(vtkObject* object, const std::function<std::uint64_t()>& hash);
   /// Remembers `object`'s content (its hash from `hash`).
   void Set(vtkObject* object, const std::function<std::uint64_t()>& hash);
+  /// Remembers `object` and its MTime only, for a result cheaper to compute again than to hash:
+  /// another object (or this one modified) then never matches.
+  void SetObjectOnly(vtkObject* object);
   /// Forgets the content: the next Matches is false.
   void Reset() { this->Valid = false; }
 
@@ -50,6 +53,7 @@ private:
   vtkMTimeType MTime = 0;
   std::uint64_t Hash = 0;
   bool Valid = false;
+  bool ObjectOnly = false; ///< SetObjectOnly: no hash to compare
 };
 
 } // namespace dgmf_vtk

@@ -130,7 +130,16 @@ void InputGatherer::Gather(
       if (!this->LayerPoints.Matches(mesh->GetPoints()->GetData(), hash))
       {
         this->Layers = dgmf::FindExtrudedLayers(nodes.Points, n);
-        this->LayerPoints.Set(mesh->GetPoints()->GetData(), hash);
+        // No layers (a volume mesh): kept for the same points object only, as finding that again
+        // costs one streaming pass, about what a hash of the points would.
+        if (this->Layers.Found())
+        {
+          this->LayerPoints.Set(mesh->GetPoints()->GetData(), hash);
+        }
+        else
+        {
+          this->LayerPoints.SetObjectOnly(mesh->GetPoints()->GetData());
+        }
       }
       nodes.Layers = this->Layers;
     }

@@ -117,6 +117,33 @@ TEST(ContentKey, MatchesTheSameContentInAnyObjectAndNothingElse)
   EXPECT_EQ(dgmf_vtk::HashBytes(x, sizeof x), dgmf_vtk::HashBytes(x, sizeof x));
 }
 
+TEST(ContentKey, AnObjectOnlyKeyMatchesThatObjectUnmodifiedWithoutHashing)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetNumberOfTuples(10);
+  a->FillValue(1.0);
+  int hashes = 0;
+  const auto hashOf = [&hashes](vtkDataArray* array)
+  {
+    return [&hashes, array]()
+    {
+      ++hashes;
+      return dgmf_vtk::HashArray(array);
+    };
+  };
+  dgmf_vtk::ContentKey key;
+  key.SetObjectOnly(a);
+  EXPECT_TRUE(key.Matches(a, hashOf(a)));
+  vtkNew<vtkDoubleArray> copy; // the same values in another object: not known without a hash
+  copy->DeepCopy(a);
+  EXPECT_FALSE(key.Matches(copy, hashOf(copy)));
+  a->Modified(); // possibly changed in place
+  EXPECT_FALSE(key.Matches(a, hashOf(a)));
+  EXPECT_EQ(hashes, 0);
+  key.Set(a, hashOf(a)); // a full key again compares content
+  EXPECT_TRUE(key.Matches(copy, hashOf(copy)));
+}
+
 TEST(OutputBuffers, PointsAreReusedOnlyWhenNobodyElseHoldsThem)
 {
   auto input = TwoSquares();
