@@ -37,8 +37,10 @@ HexReferences HexReferenceCache::For(vtkUnstructuredGrid* mesh, vtkDataArray* or
   }
   this->Sizes.assign(numberOfCells, 0.0);
   this->Sizes.shrink_to_fit();
-  this->Cells.Set(cells, hashCells);
-  this->Points.Set(originalPoints, hashPoints);
+  // Kept for the same objects, unmodified: computing the sizes again costs about what hashing
+  // the cells and points would (a reader's new objects with the same content compute them again).
+  this->Cells.SetObjectOnly(cells);
+  this->Points.SetObjectOnly(originalPoints);
   references.Sizes = this->Sizes.data();
   return references;
 }

@@ -30,10 +30,11 @@ struct HexReferences
 
 /**
  * The reference sizes of a mesh's hexahedra (the signed sums of their original corner Jacobians),
- * kept while the mesh's cells and original points are unchanged, so that a new motion computes
- * only the deformed half of the metric. 8 bytes per cell, taken only when at least half the cells
- * are hexahedra (a tetrahedral mesh has several cells per node, and its cells' original half is
- * cheap): otherwise nothing is kept.
+ * kept while the mesh's cells and original points are the same objects, unmodified (their MTime),
+ * so that a new motion computes only the deformed half of the metric. Other objects, even with
+ * the same content, compute them again: that costs about what hashing the content would. 8 bytes
+ * per cell, taken only when at least half the cells are hexahedra (a tetrahedral mesh has several
+ * cells per node, and its cells' original half is cheap): otherwise nothing is kept.
  */
 class HexReferenceCache
 {
