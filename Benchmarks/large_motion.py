@@ -38,7 +38,8 @@ LARGE_CONFIGURATIONS = (
 )
 # The target: the 180-degree turn within this many single steps.
 LARGE_TARGET = 30.0
-LINE = re.compile(r"(?P<points>\d+) points, (?P<cells>\d+) cells, (?P<seconds>[0-9.e+-]+) s; "
+LINE = re.compile(r"(?P<points>\d+) points, (?P<cells>\d+) cells, (?P<seconds>[0-9.e+-]+) s"
+                  r"(?: \(quality [0-9.e+-]+ s\))?; "
                   r"SizeSkew mean (?P<mean>[0-9.e+-]+), minimum (?P<minimum>[0-9.e+-]+), "
                   r"inverted cells (?P<inverted>\d+)(?: \(invalid in the input: \d+\))?"
                   r"(; sub-steps (?P<steps>\d+), cells repaired (?P<repaired>\d+), "

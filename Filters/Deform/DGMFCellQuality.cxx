@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -147,12 +148,18 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
   const dgmf::ParallelFor& parallelFor)
 {
   const vtkIdType numberOfCells = mesh->GetNumberOfCells();
-  sizeSkew->SetNumberOfComponents(1);
-  AllocateTuples(sizeSkew, numberOfCells);
-  inverted->SetNumberOfComponents(1);
-  AllocateTuples(inverted, numberOfCells);
-  inputInvalid->SetNumberOfComponents(1);
-  AllocateTuples(inputInvalid, numberOfCells);
+  // An array kept from the last execution with as many values is written in place (its pages
+  // are mapped already: every value is written below).
+  for (vtkDataArray* array :
+    std::initializer_list<vtkDataArray*>{ sizeSkew, inverted, inputInvalid })
+  {
+    if (array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != numberOfCells ||
+      numberOfCells == 0)
+    {
+      array->SetNumberOfComponents(1);
+      AllocateTuples(array, numberOfCells);
+    }
+  }
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
   unsigned char* invalid = inputInvalid->GetPointer(0);

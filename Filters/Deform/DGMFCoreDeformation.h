@@ -39,6 +39,7 @@ struct DeformationCaches
   vtkSmartPointer<vtkPoints> OutputPoints; ///< the last output's points, reused
   InternalFacesCache Faces;                ///< for the non-orthogonality
   HexReferenceCache HexReferences;         ///< the hexahedra's original half of the quality
+  QualityArrays Quality;                   ///< the quality's arrays, reused
   CompositeMeshCache Composite;            ///< a composite input's merged grid
   /// The node roles of the named boundaries, while the merge and the selection are unchanged.
   struct

@@ -4,6 +4,7 @@
 
 #include "DGMFCellQuality.h"
 #include "DGMFNonOrthogonality.h"
+#include "DGMFOutputBuffers.h"
 
 #include "dgmf/ResultNames.h"
 
@@ -144,13 +145,16 @@ void SetQualitySummary(vtkFieldData* fieldData, const dgmf::QualitySummary& summ
 
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
-  const HexReferences& references, const dgmf::ParallelFor& parallelFor)
+  const HexReferences& references, const dgmf::ParallelFor& parallelFor, QualityArrays* kept)
 {
-  vtkNew<vtkDoubleArray> sizeSkew;
+  QualityArrays fresh;
+  QualityArrays& arrays = kept ? *kept : fresh;
+  const vtkSmartPointer<vtkDoubleArray> sizeSkew = QualityArrays::Reuse(arrays.SizeSkew);
   sizeSkew->SetName(dgmf::names::SizeSkew);
-  vtkNew<vtkUnsignedCharArray> inverted;
+  const vtkSmartPointer<vtkUnsignedCharArray> inverted = QualityArrays::Reuse(arrays.Inverted);
   inverted->SetName(dgmf::names::Inverted);
-  vtkNew<vtkUnsignedCharArray> inputInvalid;
+  const vtkSmartPointer<vtkUnsignedCharArray> inputInvalid =
+    QualityArrays::Reuse(arrays.InputInvalid);
   inputInvalid->SetName(dgmf::names::InputInvalid);
   const dgmf::QualitySummary summary = ComputeCellQuality(mesh, originalPoints, deformedPoints,
     sizeSkew, inverted, inputInvalid, references, parallelFor);
@@ -163,13 +167,14 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
 
 dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
-  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor)
+  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor,
+  QualityArrays* kept)
 {
   dgmf::QualitySummary summary;
   if (sizeSkew)
   {
     summary = AddCellQuality(mesh, originalPoints, deformedPoints, output->GetCellData(),
-      output->GetFieldData(), references, parallelFor);
+      output->GetFieldData(), references, parallelFor, kept);
   }
   if (faces)
   {

@@ -23,6 +23,7 @@ namespace dgmf_vtk
 {
 class InternalFacesCache;
 struct HexReferences;
+struct QualityArrays;
 
 /// Adds a one-tuple vtkIdTypeArray `name` with `value` to `fieldData` (replacing one of that name).
 void AddFieldCount(vtkFieldData* fieldData, const char* name, std::size_t value);
@@ -62,11 +63,13 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
  * per point): the cell arrays SizeSkew and Inverted into `cellData`, and the summary
  * (SizeSkewMean, SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) into `fieldData`.
  * Returns the summary. The hexahedra's reference sizes are read from, or left in, `references`
- * (ComputeCellQuality).
+ * (ComputeCellQuality). With `kept`, the arrays are the last execution's when nobody else holds
+ * them (QualityArrays).
  */
 dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkDataSetAttributes* cellData, vtkFieldData* fieldData,
-  const HexReferences& references, const dgmf::ParallelFor& parallelFor);
+  const HexReferences& references, const dgmf::ParallelFor& parallelFor,
+  QualityArrays* kept = nullptr);
 
 /**
  * The quality outputs a filter's options ask for, on `output` (the deformed `mesh`): SizeSkew,
@@ -77,7 +80,8 @@ dgmf::QualitySummary AddCellQuality(vtkUnstructuredGrid* mesh, const double* ori
  */
 dgmf::QualitySummary AddOutputQuality(vtkUnstructuredGrid* mesh, const double* originalPoints,
   const double* deformedPoints, vtkUnstructuredGrid* output, bool sizeSkew,
-  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor);
+  const HexReferences& references, InternalFacesCache* faces, const dgmf::ParallelFor& parallelFor,
+  QualityArrays* kept = nullptr);
 
 /// Writes `summary` into `fieldData` (SizeSkewMean, SizeSkewMinimum, InvertedCellCount,
 /// SizeSkewEvaluatedCells), replacing the arrays of those names.

@@ -20,6 +20,7 @@
 
 class vtkDoubleArray;
 class vtkPoints;
+class vtkUnsignedCharArray;
 class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
@@ -31,6 +32,28 @@ namespace dgmf_vtk
  */
 vtkSmartPointer<vtkPoints> ReuseOutputPoints(vtkSmartPointer<vtkPoints>& last,
   vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, std::size_t n);
+
+/**
+ * The quality's cell arrays (SizeSkew, Inverted, InputInvalid), kept from one execution to the
+ * next: Reuse() gives the kept array when only this object holds it (its memory already mapped),
+ * else a new one, kept in its place.
+ */
+struct QualityArrays
+{
+  vtkSmartPointer<vtkDoubleArray> SizeSkew;
+  vtkSmartPointer<vtkUnsignedCharArray> Inverted, InputInvalid;
+
+  /// `kept` when only `kept` holds it, else a new array (then kept).
+  template <typename T>
+  static vtkSmartPointer<T> Reuse(vtkSmartPointer<T>& kept)
+  {
+    if (!kept || kept->GetReferenceCount() != 1)
+    {
+      kept = vtkSmartPointer<T>::New();
+    }
+    return kept;
+  }
+};
 
 /**
  * r and f as vtkDoubleArrays shared with the output: dgmf::FieldStore for the DGMF method. Store()

@@ -485,9 +485,10 @@ int vtkDGMFDeformFilter::Execute(
   const dgmf_vtk::HexReferences hexReferences = this->ComputeQuality && input->GetPoints()
     ? cache.HexReferences.For(input, input->GetPoints()->GetData())
     : dgmf_vtk::HexReferences();
-  const dgmf::QualitySummary summary = dgmf_vtk::AddOutputQuality(input, nodes.Points,
-    newCoordinates->GetPointer(0), output, this->ComputeQuality, hexReferences,
-    this->ComputeNonOrthogonality ? &cache.Faces : nullptr, dgmf_vtk::MakeSMPParallelFor());
+  const dgmf::QualitySummary summary =
+    dgmf_vtk::AddOutputQuality(input, nodes.Points, newCoordinates->GetPointer(0), output,
+      this->ComputeQuality, hexReferences, this->ComputeNonOrthogonality ? &cache.Faces : nullptr,
+      dgmf_vtk::MakeSMPParallelFor(), &cache.Quality);
   this->LastQualitySeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - qualityStart).count();
   if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)

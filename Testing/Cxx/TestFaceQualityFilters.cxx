@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 using dgmf_test::Field;
 
@@ -248,4 +249,33 @@ TEST(FaceQualityFilters, ANewMotionReusesTheHexahedraOriginalHalfAndFollowsAChan
     quality->Update();
     EXPECT_TRUE(SameSizeSkew(quality->GetOutput(), FreshQuality(deformed, box)));
   }
+}
+
+TEST(FaceQualityFilters, TheQualityArraysAreReusedOnlyWhenNobodyElseHoldsThem)
+{
+  const vtkSmartPointer<vtkUnstructuredGrid> box = JitteredBox(6);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(box);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetRotationAngles(0.0, 0.0, 10.0);
+  filter->Update();
+  vtkDataArray* first = filter->GetOutput()->GetCellData()->GetArray("SizeSkew");
+  ASSERT_NE(first, nullptr);
+  // A new motion writes into the same memory when only the filter holds it.
+  filter->SetRotationAngles(0.0, 0.0, 20.0);
+  filter->Update();
+  vtkDataArray* second = filter->GetOutput()->GetCellData()->GetArray("SizeSkew");
+  EXPECT_EQ(second, first);
+  EXPECT_TRUE(SameSizeSkew(filter->GetOutput(), FreshQuality(filter->GetOutput(), box)));
+  // Held by the user (a Python variable, a downstream filter): never written again.
+  vtkSmartPointer<vtkDataArray> held = second;
+  std::vector<double> before(static_cast<std::size_t>(held->GetNumberOfTuples()));
+  for (vtkIdType c = 0; c < held->GetNumberOfTuples(); ++c)
+    before[static_cast<std::size_t>(c)] = held->GetTuple1(c);
+  filter->SetRotationAngles(0.0, 0.0, 40.0);
+  filter->Update();
+  EXPECT_NE(filter->GetOutput()->GetCellData()->GetArray("SizeSkew"), held.GetPointer());
+  for (vtkIdType c = 0; c < held->GetNumberOfTuples(); ++c)
+    ASSERT_EQ(held->GetTuple1(c), before[static_cast<std::size_t>(c)]);
+  EXPECT_TRUE(SameSizeSkew(filter->GetOutput(), FreshQuality(filter->GetOutput(), box)));
 }
