@@ -1,0 +1,300 @@
+// The hexahedron's size-skew metric (SizeSkewQuality.h): one cell, its original half kept apart
+// (the reference size), and four cells at a time in four-lane vectors. Definitions:
+// Documentation/quality.md; speed: Documentation/speed.md, "The quality metric on a new motion".
+#include "dgmf/CellGeometry.h"
+#include "dgmf/Simd.h"
+#include "dgmf/SizeSkewQuality.h"
+#include "dgmf/SizeSkewTerms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace dgmf
+{
+namespace sizeskew
+{
+namespace
+{
+
+/**
+ * The hexahedron (Knupp): skew = 8 / sum_k (sqrt(l11 l22 l33)_k / alpha_k)^(2/3) over the corners
+ * of kHexCorners, computed from the 12 edge vectors once (each corner's three edges are three of
+ * them, up to sign): the most common cell of large structured meshes, and about twice as fast as
+ * the generic Evaluate3D this way.
+ */
+/// For each corner of kHexCorners: its edges to A, B and C, and the product of their signs.
+constexpr int kHexCornerEdges[8][3] = { { 0, 3, 8 }, { 1, 0, 9 }, { 2, 1, 10 }, { 3, 2, 11 },
+  { 7, 4, 8 }, { 4, 5, 9 }, { 5, 6, 10 }, { 6, 7, 11 } };
+constexpr double kHexCornerSign[8] = { -1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0 };
+
+/// The 12 edge vectors of a hexahedron and their squared lengths (of one, or two at once).
+template <typename T>
+struct HexEdgesOf
+{
+  Vec3Of<T> Vector[12];
+  T Length2[12];
+};
+using HexEdges = HexEdgesOf<double>;
+
+/// `load(i)` gives corner i.
+template <typename T, typename Loader>
+inline void ComputeHexEdges(const Loader& load, HexEdgesOf<T>& edges)
+{
+  for (int e = 0; e < 12; ++e)
+  {
+    edges.Vector[e] = load(kHexEdges[e][1]) - load(kHexEdges[e][0]);
+    edges.Length2[e] = Dot(edges.Vector[e], edges.Vector[e]);
+  }
+}
+
+inline void ComputeHexEdges(const double* points, HexEdges& edges)
+{
+  ComputeHexEdges([points](int i) { return Load(points, i); }, edges);
+}
+
+template <typename T>
+inline T HexCornerDeterminant(const HexEdgesOf<T>& edges, int corner)
+{
+  const int* e = kHexCornerEdges[corner];
+  return kHexCornerSign[corner] *
+    Dot(Cross(edges.Vector[e[0]], edges.Vector[e[1]]), edges.Vector[e[2]]);
+}
+
+/// Not a number: the reference size of a hexahedron without a corner metric.
+constexpr double kNoReference = std::numeric_limits<double>::quiet_NaN();
+
+/// The checks of ComputeHexReferenceSize on one cell: its corner Jacobians `alphas` (sum `sum`)
+/// and the squared lengths of its 12 edges. Returns `sum`, or kNoReference.
+inline double CheckedHexReference(
+  double sum, const double (&alphas)[8], const double (&length2)[12])
+{
+  double smallest = kInfinity, largest = -kInfinity;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    smallest = std::min(smallest, alphas[corner]);
+    largest = std::max(largest, alphas[corner]);
+  }
+  double longestEdge2 = 0.0;
+  for (int e = 0; e < 12; ++e)
+  {
+    longestEdge2 = std::max(longestEdge2, length2[e]);
+  }
+  const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
+  // Written as !(x > y) so that NaN coordinates also take these exits.
+  if (!(std::abs(sum) > kDegenerateTolerance * scale))
+  {
+    return kNoReference; // degenerate
+  }
+  if (!((sum > 0.0 ? smallest : -largest) > 0.0))
+  {
+    return kNoReference; // non-convex (or partly inverted) before the motion
+  }
+  return sum;
+}
+
+double HexReferenceSize(const double* original)
+{
+  HexEdges edges;
+  ComputeHexEdges(original, edges);
+  double sum = 0.0;
+  double alphas[8];
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    alphas[corner] = HexCornerDeterminant(edges, corner);
+    sum += alphas[corner];
+  }
+  return CheckedHexReference(sum, alphas, edges.Length2);
+}
+
+/// The deformed half of the hexahedron's metric, from its reference size (HexReferenceSize).
+CellQuality HexSizeSkewFromReference(double referenceSize, const double* deformed)
+{
+  if (std::isnan(referenceSize))
+  {
+    return Degenerate();
+  }
+  const double orientation = referenceSize > 0.0 ? 1.0 : -1.0;
+  HexEdges edges;
+  ComputeHexEdges(deformed, edges);
+  double deformedSum = 0.0;
+  ScaledCubeRoot terms[8];
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double alpha = orientation * HexCornerDeterminant(edges, corner);
+    if (!(alpha > 0.0))
+    {
+      return Inverted();
+    }
+    deformedSum += alpha;
+    const int* e = kHexCornerEdges[corner];
+    terms[corner] = { 1.0, edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]],
+      alpha * alpha };
+  }
+  const double inverseSum = SumOfScaledCubeRoots(terms);
+  const double tau = deformedSum / (orientation * referenceSize);
+  return Valid(SizeFactor(tau) * 8.0 / inverseSum);
+}
+
+/// Four doubles processed together (Simd.h): four hexahedra at once.
+using Four = simd::Double4;
+
+/// Vec3 of four hexahedra at once.
+using FourVec3 = Vec3Of<Four>;
+
+using FourHexEdges = HexEdgesOf<Four>;
+
+/// The edges of the four hexahedra whose corners are at `points[0..3]`.
+inline void ComputeHexEdges(const double* const* points, FourHexEdges& edges)
+{
+  const double* a = points[0];
+  const double* b = points[1];
+  const double* c = points[2];
+  const double* d = points[3];
+  ComputeHexEdges(
+    [a, b, c, d](int i) -> FourVec3
+    {
+      return { Four{ a[3 * i], b[3 * i], c[3 * i], d[3 * i] },
+        Four{ a[3 * i + 1], b[3 * i + 1], c[3 * i + 1], d[3 * i + 1] },
+        Four{ a[3 * i + 2], b[3 * i + 2], c[3 * i + 2], d[3 * i + 2] } };
+    },
+    edges);
+}
+
+/// InverseCubeRootInRange of four values (the bit-level guess lane by lane, the Newton steps
+/// together).
+inline Four InverseCubeRootInRange(Four x)
+{
+  return InverseCubeRootNewton(x,
+    Four{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]), InverseCubeRootGuess(x[2]),
+      InverseCubeRootGuess(x[3]) });
+}
+
+/// The cells of the group of four starting at `first`, of `count`: the last group repeats its last
+/// cell (its lanes are computed twice and written once).
+inline void GroupOfFour(std::size_t first, std::size_t count, std::size_t (&cells)[4])
+{
+  for (std::size_t l = 0; l < 4; ++l)
+  {
+    cells[l] = std::min(first + l, count - 1);
+  }
+}
+
+} // namespace
+
+CellQuality HexSizeSkew(const double* original, const double* deformed)
+{
+  return HexSizeSkewFromReference(HexReferenceSize(original), deformed);
+}
+
+} // namespace sizeskew
+
+using namespace sizeskew;
+
+DGMF_SIMD_AVX2_CLONES
+void ComputeHexReferenceSizes(
+  std::size_t count, const double* const* original, double* referenceSizes)
+{
+  // The loop's body is written here, not in a lambda: the AVX2 clone compiles what it inlines.
+  for (std::size_t first = 0; first < count; first += 4)
+  {
+    std::size_t cells[4];
+    GroupOfFour(first, count, cells);
+    {
+      const double* const points[4] = { original[cells[0]], original[cells[1]], original[cells[2]],
+        original[cells[3]] };
+      FourHexEdges edges;
+      ComputeHexEdges(points, edges);
+      Four sum = { 0.0, 0.0, 0.0, 0.0 };
+      Four alphas[8];
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        alphas[corner] = HexCornerDeterminant(edges, corner);
+        sum += alphas[corner];
+      }
+      for (int l = 0; l < 4; ++l)
+      {
+        double laneAlphas[8], laneLength2[12];
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          laneAlphas[corner] = alphas[corner][l];
+        }
+        for (int e = 0; e < 12; ++e)
+        {
+          laneLength2[e] = edges.Length2[e][l];
+        }
+        referenceSizes[cells[l]] = CheckedHexReference(sum[l], laneAlphas, laneLength2);
+      }
+    }
+  }
+}
+
+DGMF_SIMD_AVX2_CLONES
+void ComputeHexSizeSkew(std::size_t count, const double* referenceSizes,
+  const double* const* deformed, CellQuality* quality)
+{
+  for (std::size_t first = 0; first < count; first += 4)
+  {
+    std::size_t cells[4];
+    GroupOfFour(first, count, cells);
+    {
+      const double* const points[4] = { deformed[cells[0]], deformed[cells[1]], deformed[cells[2]],
+        deformed[cells[3]] };
+      const Four reference = { referenceSizes[cells[0]], referenceSizes[cells[1]],
+        referenceSizes[cells[2]], referenceSizes[cells[3]] };
+      Four orientation;
+      for (int l = 0; l < 4; ++l)
+      {
+        orientation[l] = reference[l] > 0.0 ? 1.0 : -1.0;
+      }
+      FourHexEdges edges;
+      ComputeHexEdges(points, edges);
+      Four deformedSum = { 0.0, 0.0, 0.0, 0.0 };
+      Four numerator[8], argument[8];
+      // The smallest Jacobian and the range of the cube roots' arguments, lane by lane: a NaN
+      // that Min or Max drops leaves a NaN in deformedSum or inverseSum, checked below.
+      Four smallestAlpha, smallestArgument, largestArgument;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const Four alpha = orientation * HexCornerDeterminant(edges, corner);
+        deformedSum += alpha;
+        const int* e = kHexCornerEdges[corner];
+        numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
+        argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
+        smallestAlpha = corner == 0 ? alpha : simd::Min(smallestAlpha, alpha);
+        smallestArgument =
+          corner == 0 ? argument[0] : simd::Min(smallestArgument, argument[corner]);
+        largestArgument = corner == 0 ? argument[0] : simd::Max(largestArgument, argument[corner]);
+      }
+      Four inverseSum = { 0.0, 0.0, 0.0, 0.0 };
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
+      }
+      const Four tau = deformedSum / (orientation * reference);
+      for (int l = 0; l < 4; ++l)
+      {
+        // A lane out of the fast path (no reference, inverted, a cube root out of range) is
+        // evaluated on its own: the same operations where both apply, so the same bits.
+        const bool usable = smallestAlpha[l] > 0.0 && smallestArgument[l] >= kCubeRootLow &&
+          largestArgument[l] <= kCubeRootHigh && !std::isnan(deformedSum[l]) &&
+          !std::isnan(inverseSum[l]);
+        quality[cells[l]] = usable && !std::isnan(reference[l])
+          ? Valid(SizeFactor(tau[l]) * 8.0 / inverseSum[l])
+          : HexSizeSkewFromReference(reference[l], points[l]);
+      }
+    }
+  }
+}
+
+double ComputeHexReferenceSize(const double* original)
+{
+  return HexReferenceSize(original);
+}
+
+CellQuality ComputeHexSizeSkew(double referenceSize, const double* deformed)
+{
+  return HexSizeSkewFromReference(referenceSize, deformed);
+}
+
+} // namespace dgmf
