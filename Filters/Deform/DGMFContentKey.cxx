@@ -62,7 +62,7 @@ bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>
   {
     return false;
   }
-  if (this->Object == object && this->MTime == object->GetMTime())
+  if (this->MatchesObject(object))
   {
     return true;
   }
@@ -82,6 +82,11 @@ void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& ha
   this->Hash = hash();
   this->Valid = true;
   this->ObjectOnly = false;
+}
+
+bool ContentKey::MatchesObject(vtkObject* object) const
+{
+  return this->Valid && this->Object == object && this->MTime == object->GetMTime();
 }
 
 void ContentKey::SetObjectOnly(vtkObject* object)

@@ -45,6 +45,9 @@ public:
   /// Remembers `object` and its MTime only, for a result cheaper to compute again than to hash:
   /// another object (or this one modified) then never matches.
   void SetObjectOnly(vtkObject* object);
+  /// True when `object` is the object the key was set for, unmodified (what a SetObjectOnly key
+  /// can tell; no hash).
+  bool MatchesObject(vtkObject* object) const;
   /// Forgets the content: the next Matches is false.
   void Reset() { this->Valid = false; }
 

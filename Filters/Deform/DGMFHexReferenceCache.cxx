@@ -14,12 +14,10 @@ namespace dgmf_vtk
 HexReferences HexReferenceCache::For(vtkUnstructuredGrid* mesh, vtkDataArray* originalPoints)
 {
   vtkCellArray* cells = mesh->GetCells();
-  const auto hashCells = [mesh]() { return HashCells(mesh); };
-  const auto hashPoints = [originalPoints]() { return HashArray(originalPoints); };
   const auto numberOfCells = static_cast<std::size_t>(mesh->GetNumberOfCells());
   HexReferences references;
   if (!this->Sizes.empty() && this->Sizes.size() == numberOfCells &&
-    this->Cells.Matches(cells, hashCells) && this->Points.Matches(originalPoints, hashPoints))
+    this->Cells.MatchesObject(cells) && this->Points.MatchesObject(originalPoints))
   {
     references.Sizes = this->Sizes.data();
     references.Known = true;

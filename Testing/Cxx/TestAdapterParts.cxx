@@ -134,11 +134,13 @@ TEST(ContentKey, AnObjectOnlyKeyMatchesThatObjectUnmodifiedWithoutHashing)
   dgmf_vtk::ContentKey key;
   key.SetObjectOnly(a);
   EXPECT_TRUE(key.Matches(a, hashOf(a)));
+  EXPECT_TRUE(key.MatchesObject(a));
   vtkNew<vtkDoubleArray> copy; // the same values in another object: not known without a hash
   copy->DeepCopy(a);
   EXPECT_FALSE(key.Matches(copy, hashOf(copy)));
   a->Modified(); // possibly changed in place
   EXPECT_FALSE(key.Matches(a, hashOf(a)));
+  EXPECT_FALSE(key.MatchesObject(a));
   EXPECT_EQ(hashes, 0);
   key.Set(a, hashOf(a)); // a full key again compares content
   EXPECT_TRUE(key.Matches(copy, hashOf(copy)));
