@@ -89,6 +89,20 @@ struct FacedCell
       this->Original.data(), this->Deformed.data(), this->Faces.data());
   }
 };
+/// The `corners` corners of a cell (ids `pts` in VTK's order, read in the metric's `order`) from
+/// `points` (3 doubles each) into `out`.
+void GatherCorners(
+  int corners, const vtkIdType* pts, const int* order, const double* points, double* out)
+{
+  for (int k = 0; k < corners; ++k)
+  {
+    const double* p = points + 3 * static_cast<std::size_t>(pts[order[k]]);
+    out[3 * k] = p[0];
+    out[3 * k + 1] = p[1];
+    out[3 * k + 2] = p[2];
+  }
+}
+
 /**
  * Hexahedra gathered from a block of cells and evaluated together (dgmf::ComputeHexSizeSkew, four
  * at a time): their deformed corners, and their original corners only when the reference sizes
@@ -119,25 +133,13 @@ struct HexBatch
   bool Add(std::size_t c, const vtkIdType* pts, const int* order, const double* originalPoints,
     const double* deformedPoints, bool withOriginal)
   {
-    GatherCorners(pts, order, deformedPoints, this->Deformed[this->Count]);
+    GatherCorners(8, pts, order, deformedPoints, this->Deformed[this->Count]);
     if (withOriginal)
     {
-      GatherCorners(pts, order, originalPoints, this->Original[this->Count]);
+      GatherCorners(8, pts, order, originalPoints, this->Original[this->Count]);
     }
     this->Cells[this->Count++] = c;
     return this->Count == Capacity;
-  }
-
-  static void GatherCorners(
-    const vtkIdType* pts, const int* order, const double* points, double* corners)
-  {
-    for (int k = 0; k < 8; ++k)
-    {
-      const double* p = points + 3 * static_cast<std::size_t>(pts[order[k]]);
-      corners[3 * k] = p[0];
-      corners[3 * k + 1] = p[1];
-      corners[3 * k + 2] = p[2];
-    }
   }
 };
 } // namespace
@@ -229,7 +231,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
             const int* order;
             CellShapeOf(types[b.Cells[i]], shape, order);
             cells->GetCellAtId(static_cast<vtkIdType>(b.Cells[i]), npts, pts, scratch);
-            HexBatch::GatherCorners(pts, order, originalPoints, b.Original[i]);
+            GatherCorners(8, pts, order, originalPoints, b.Original[i]);
             b.Quality[i] = dgmf::JudgeInvalidInputCell(shape, b.Original[i], b.Deformed[i]);
           }
           write(b.Cells[i], b.Quality[i]);
@@ -291,15 +293,8 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
           continue;
         }
         const int corners = dgmf::GetNumberOfCorners(shape);
-        for (int k = 0; k < corners; ++k)
-        {
-          const auto p = static_cast<std::size_t>(pts[order[k]]);
-          for (int d = 0; d < 3; ++d)
-          {
-            original[3 * k + d] = originalPoints[3 * p + d];
-            deformed[3 * k + d] = deformedPoints[3 * p + d];
-          }
-        }
+        GatherCorners(corners, pts, order, originalPoints, original);
+        GatherCorners(corners, pts, order, deformedPoints, deformed);
         write(c, dgmf::ComputeCellSizeSkew(shape, original, deformed));
       }
       evaluate();
