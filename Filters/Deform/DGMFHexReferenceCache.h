@@ -9,7 +9,7 @@
 #include "DGMFContentKey.h"
 
 #include <cstddef>
-#include <vector>
+#include <memory>
 
 class vtkDataArray;
 class vtkUnstructuredGrid;
@@ -46,11 +46,12 @@ public:
    */
   HexReferences For(vtkUnstructuredGrid* mesh, vtkDataArray* originalPoints);
   /// Bytes kept.
-  std::size_t GetMemorySize() const { return this->Sizes.capacity() * sizeof(double); }
+  std::size_t GetMemorySize() const { return this->Sizes ? this->Count * sizeof(double) : 0; }
 
 private:
   ContentKey Cells, Points;
-  std::vector<double> Sizes;
+  std::unique_ptr<double[]> Sizes; ///< one per cell (the non-hexahedra's not meaningful)
+  std::size_t Count = 0;
 };
 
 } // namespace dgmf_vtk

@@ -64,29 +64,18 @@ inline T HexCornerDeterminant(const HexEdgesOf<T>& edges, int corner)
 /// Not a number: the reference size of a hexahedron without a corner metric.
 constexpr double kNoReference = std::numeric_limits<double>::quiet_NaN();
 
-/// The checks of ComputeHexReferenceSize on one cell: its corner Jacobians `alphas` (sum `sum`)
-/// and the squared lengths of its 12 edges. Returns `sum`, or kNoReference.
+/// The checks of ComputeHexReferenceSize on one cell, from the sum of its corner Jacobians, the
+/// smallest and largest of them, and the longest squared edge. Returns `sum`, or kNoReference.
 inline double CheckedHexReference(
-  double sum, const double (&alphas)[8], const double (&length2)[12])
+  double sum, double smallestAlpha, double largestAlpha, double longestEdge2)
 {
-  double smallest = kInfinity, largest = -kInfinity;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    smallest = std::min(smallest, alphas[corner]);
-    largest = std::max(largest, alphas[corner]);
-  }
-  double longestEdge2 = 0.0;
-  for (int e = 0; e < 12; ++e)
-  {
-    longestEdge2 = std::max(longestEdge2, length2[e]);
-  }
   const double scale = 8.0 * longestEdge2 * std::sqrt(longestEdge2);
   // Written as !(x > y) so that NaN coordinates also take these exits.
   if (!(std::abs(sum) > kDegenerateTolerance * scale))
   {
     return kNoReference; // degenerate
   }
-  if (!((sum > 0.0 ? smallest : -largest) > 0.0))
+  if (!((sum > 0.0 ? smallestAlpha : -largestAlpha) > 0.0))
   {
     return kNoReference; // non-convex (or partly inverted) before the motion
   }
@@ -98,13 +87,20 @@ double HexReferenceSize(const double* original)
   HexEdges edges;
   ComputeHexEdges(original, edges);
   double sum = 0.0;
-  double alphas[8];
+  double smallest = kInfinity, largest = -kInfinity;
   for (int corner = 0; corner < 8; ++corner)
   {
-    alphas[corner] = HexCornerDeterminant(edges, corner);
-    sum += alphas[corner];
+    const double alpha = HexCornerDeterminant(edges, corner);
+    sum += alpha;
+    smallest = std::min(smallest, alpha);
+    largest = std::max(largest, alpha);
   }
-  return CheckedHexReference(sum, alphas, edges.Length2);
+  double longestEdge2 = 0.0;
+  for (int e = 0; e < 12; ++e)
+  {
+    longestEdge2 = std::max(longestEdge2, edges.Length2[e]);
+  }
+  return CheckedHexReference(sum, smallest, largest, longestEdge2);
 }
 
 /// The deformed half of the hexahedron's metric, from its reference size (HexReferenceSize).
@@ -206,24 +202,24 @@ void ComputeHexReferenceSizes(
       FourHexEdges edges;
       ComputeHexEdges(points, edges);
       Four sum = { 0.0, 0.0, 0.0, 0.0 };
-      Four alphas[8];
+      // The extremes lane by lane (minima and maxima are exact: the one-cell path's values).
+      Four smallest, largest;
       for (int corner = 0; corner < 8; ++corner)
       {
-        alphas[corner] = HexCornerDeterminant(edges, corner);
-        sum += alphas[corner];
+        const Four alpha = HexCornerDeterminant(edges, corner);
+        sum += alpha;
+        smallest = corner == 0 ? alpha : simd::Min(smallest, alpha);
+        largest = corner == 0 ? alpha : simd::Max(largest, alpha);
+      }
+      Four longestEdge2 = edges.Length2[0];
+      for (int e = 1; e < 12; ++e)
+      {
+        longestEdge2 = simd::Max(longestEdge2, edges.Length2[e]);
       }
       for (int l = 0; l < 4; ++l)
       {
-        double laneAlphas[8], laneLength2[12];
-        for (int corner = 0; corner < 8; ++corner)
-        {
-          laneAlphas[corner] = alphas[corner][l];
-        }
-        for (int e = 0; e < 12; ++e)
-        {
-          laneLength2[e] = edges.Length2[e][l];
-        }
-        referenceSizes[cells[l]] = CheckedHexReference(sum[l], laneAlphas, laneLength2);
+        referenceSizes[cells[l]] =
+          CheckedHexReference(sum[l], smallest[l], largest[l], longestEdge2[l]);
       }
     }
   }
