@@ -17,11 +17,8 @@ namespace
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Grid = DelaunayGraph::SeedGridGeometry;
 
-/// Sub-cells per axis of a crowded seed cell.
+/// Sub-cells per axis of a seed cell.
 constexpr std::int64_t SubCells = 8;
-
-/// A seed cell with more nodes than this is ordered by its sub-cells too.
-constexpr std::size_t CrowdedCell = 32;
 
 /// The layout of a node's sort key: id in bits 0-30, sub-cell rank in 31-39, cell rank above.
 constexpr int SubShift = 31;
@@ -115,25 +112,6 @@ struct GridPosition
   }
 };
 
-/// Stable counting sort of `nodes` by key(node) < keys.
-template <typename Key>
-void CountingSort(std::int32_t* nodes, std::size_t count, std::size_t keys, Key&& key,
-  std::vector<std::size_t>& start, std::vector<std::int32_t>& scratch)
-{
-  start.assign(keys + 1, 0);
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    ++start[key(nodes[k]) + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  scratch.resize(count);
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    scratch[start[key(nodes[k])]++] = nodes[k];
-  }
-  std::copy(scratch.begin(), scratch.end(), nodes);
-}
-
 /**
  * Sorts `keys` by their bits [low, high), stably: an LSD radix sort in digits of up to DigitBits
  * bits (8,192 buckets: the writes stay within the caches). Each pass counts the digits of fixed
@@ -221,10 +199,12 @@ std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const
   const Grid grid = graph.GetSeedGridGeometry();
   const int dimension = graph.GetDimension();
   // Each interior node as one 64-bit key: its cell's rank along the curve (bits 40 and up), its
-  // sub-cell's rank in a crowded cell (bits 31-39; 0 elsewhere), its id (bits 0-30). Sorted by
-  // the ranks, stably, the nodes of a cell stay in increasing id within a sub-cell: the keys carry
-  // the ids, so no pass reads a node's data in the sorted (random) order.
+  // sub-cell's rank (bits 31-39), its id (bits 0-30). Sorted by the ranks, stably, the nodes of a
+  // sub-cell stay in increasing id: the keys carry the ids, so no pass reads a node's data in the
+  // sorted (random) order.
   const std::vector<std::uint32_t> cellRank = HilbertRanks(grid.Cells, dimension);
+  const std::int64_t sub[3] = { SubCells, SubCells, dimension == 3 ? SubCells : 1 };
+  const std::vector<std::uint32_t> subRank = HilbertRanks(sub, dimension);
   int rankBits = 0;
   while ((std::size_t{ 1 } << rankBits) < cellRank.size())
   {
@@ -233,47 +213,43 @@ std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const
   // Beyond 2^24 cells (about 10 million boundary nodes) neighbouring ranks share a key.
   const int coarsen = std::max(0, rankBits - MaximumRankBits);
   rankBits -= coarsen;
-  std::vector<std::uint32_t> rankOfNode(numberOfNodes);
-  ForEachIndex(parallelFor, numberOfNodes, KeyBlock,
-    [&](std::size_t i)
+  // The interior nodes of each fixed block counted, then each block's keys written from its
+  // offset: one pass over the points, in parallel, whatever the threads.
+  const std::size_t blocks = (numberOfNodes + KeyBlock - 1) / KeyBlock;
+  std::vector<std::size_t> offsets(blocks + 1, 0);
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
     {
-      rankOfNode[i] = IsBoundary(kinds[i])
-        ? NoRank
-        : cellRank[GridPosition(grid, points + 3 * i, dimension).CellIndex(grid)];
-    });
-  std::vector<std::uint64_t> keys;
-  keys.reserve(numberOfNodes);
-  std::vector<std::uint32_t> nodesPerCell(cellRank.size(), 0);
-  for (std::size_t i = 0; i < numberOfNodes; ++i)
-  {
-    if (rankOfNode[i] != NoRank)
-    {
-      ++nodesPerCell[rankOfNode[i]];
-      keys.push_back(static_cast<std::uint64_t>(rankOfNode[i] >> coarsen) << RankShift | i);
-    }
-  }
-  rankOfNode = std::vector<std::uint32_t>();
-  // A crowded cell (near a body, where the graph's elements are small) in the order of the same
-  // curve through its sub-cells.
-  const std::int64_t sub[3] = { SubCells, SubCells, dimension == 3 ? SubCells : 1 };
-  const std::vector<std::uint32_t> subRank = HilbertRanks(sub, dimension);
-  ForEachIndex(parallelFor, keys.size(), KeyBlock,
-    [&](std::size_t k)
-    {
-      std::uint64_t& key = keys[k];
-      const std::size_t node = key & NodeMask;
-      const GridPosition position(grid, points + 3 * node, dimension);
-      if (nodesPerCell[cellRank[position.CellIndex(grid)]] > CrowdedCell)
+      const std::size_t end = std::min(numberOfNodes, (b + 1) * KeyBlock);
+      std::size_t interior = 0;
+      for (std::size_t i = b * KeyBlock; i < end; ++i)
       {
-        key |= static_cast<std::uint64_t>(subRank[position.SubIndex()]) << SubShift;
+        interior += IsBoundary(kinds[i]) ? 0 : 1;
+      }
+      offsets[b + 1] = interior;
+    });
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::uint64_t> keys(offsets.back());
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
+    {
+      const std::size_t end = std::min(numberOfNodes, (b + 1) * KeyBlock);
+      std::uint64_t* key = keys.data() + offsets[b];
+      for (std::size_t i = b * KeyBlock; i < end; ++i)
+      {
+        if (!IsBoundary(kinds[i]))
+        {
+          const GridPosition position(grid, points + 3 * i, dimension);
+          *key++ = static_cast<std::uint64_t>(cellRank[position.CellIndex(grid)] >> coarsen)
+              << RankShift |
+            static_cast<std::uint64_t>(subRank[position.SubIndex()]) << SubShift | i;
+        }
       }
     });
   RadixSort(keys, SubShift, RankShift + rankBits, parallelFor);
   std::vector<std::int32_t> order(keys.size());
-  for (std::size_t k = 0; k < keys.size(); ++k)
-  {
-    order[k] = static_cast<std::int32_t>(keys[k] & NodeMask);
-  }
+  ForEachIndex(parallelFor, keys.size(), KeyBlock,
+    [&](std::size_t k) { order[k] = static_cast<std::int32_t>(keys[k] & NodeMask); });
   return order;
 }
 

@@ -32,12 +32,12 @@ constexpr std::size_t CoherenceSamples = 4096;
 
 /**
  * The interior nodes in a spatial order: grouped by the graph's seed grid cell, the cells visited
- * along CGAL's Hilbert curve through the grid (Hilbert_sort_middle_policy), the nodes of a cell
- * in increasing id (of a cell with more than 32 nodes, by the same curve through 8^3 sub-cells,
- * then by id). Consecutive nodes are then near each other whatever the mesh's numbering, so each
- * visibility walk starts next to its node (LocateNodes). Each node's key (cell rank, sub-cell
- * rank, id) is computed in parallel, in node order; a radix sort of the keys, O(numberOfNodes +
- * cells log cells). The order depends only on the graph and the points.
+ * along CGAL's Hilbert curve through the grid (Hilbert_sort_middle_policy), the nodes of a cell by
+ * the same curve through its 8^3 sub-cells, then by increasing id. Consecutive nodes are then near
+ * each other whatever the mesh's numbering, so each visibility walk starts next to its node
+ * (LocateNodes). Each node's key (cell rank, sub-cell rank, id) is computed in parallel, in node
+ * order; a radix sort of the keys, O(numberOfNodes + cells log cells). The order depends only on
+ * the graph and the points.
  */
 std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t numberOfNodes, const ParallelFor& parallelFor);
