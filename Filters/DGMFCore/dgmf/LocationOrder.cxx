@@ -29,7 +29,6 @@ constexpr std::uint64_t NodeMask = (std::uint64_t{ 1 } << SubShift) - 1;
 constexpr int DigitBits = 13;
 /// Nodes per block of the parallel passes.
 constexpr std::size_t KeyBlock = 4096;
-constexpr std::uint32_t NoRank = 0xffffffffu; ///< a boundary node's rank
 
 /// The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k)) along CGAL's
 /// Hilbert curve through the cells' centres.
