@@ -44,11 +44,14 @@ AppendedData::AppendedData(
 #ifdef MAP_POPULATE
     flags |= MAP_POPULATE; // the pages mapped at once, not one fault at a time
 #endif
-    void* data = ::mmap(nullptr, static_cast<std::size_t>(status.st_size), PROT_READ, flags, fd, 0);
+    const auto size = static_cast<std::size_t>(status.st_size);
+    void* data = ::mmap(nullptr, size, PROT_READ, flags, fd, 0);
     if (data != MAP_FAILED)
     {
+      this->File = std::shared_ptr<const void>(
+        data, [size](const void* at) { ::munmap(const_cast<void*>(at), size); });
       this->Data = static_cast<const unsigned char*>(data);
-      this->Size = static_cast<std::size_t>(status.st_size);
+      this->Size = size;
     }
   }
   if (fd >= 0)
@@ -59,11 +62,6 @@ AppendedData::AppendedData(
   {
     throw NotTaken{ "the file cannot be mapped" };
   }
-}
-
-AppendedData::~AppendedData()
-{
-  ::munmap(const_cast<unsigned char*>(this->Data), this->Size);
 }
 
 bool AppendedData::CanDecompress(const std::string& compressorName)
@@ -93,8 +91,10 @@ void AppendedData::Check(std::size_t at, std::size_t bytes) const
   }
 }
 
-void AppendedData::Queue(std::size_t offset, unsigned char* target, std::size_t bytes)
+AppendedData::CompressedBlocks AppendedData::Queue(
+  std::size_t offset, unsigned char* target, std::size_t bytes)
 {
+  CompressedBlocks compressedBlocks;
   const std::size_t header = this->HeaderBytes;
   if (offset > this->Size)
   {
@@ -109,7 +109,7 @@ void AppendedData::Queue(std::size_t offset, unsigned char* target, std::size_t 
     }
     this->Check(at + header, bytes);
     this->Jobs.push_back({ this->Data + at + header, bytes, target, bytes });
-    return;
+    return compressedBlocks;
   }
   const std::uint64_t blocks = this->Word(at);
   const std::uint64_t blockSize = this->Word(at + header);
@@ -132,6 +132,7 @@ void AppendedData::Queue(std::size_t offset, unsigned char* target, std::size_t 
     this->Check(source, static_cast<std::size_t>(compressed));
     this->Jobs.push_back({ this->Data + source, static_cast<std::size_t>(compressed), target,
       static_cast<std::size_t>(size) });
+    compressedBlocks.Blocks.emplace_back(this->Data + source, static_cast<std::size_t>(compressed));
     source += static_cast<std::size_t>(compressed);
     target += size;
     left -= static_cast<std::size_t>(size);
@@ -140,6 +141,8 @@ void AppendedData::Queue(std::size_t offset, unsigned char* target, std::size_t 
   {
     throw NotTaken{ "an array whose size is not the one the header gives" };
   }
+  compressedBlocks.BlockSize = static_cast<std::size_t>(blockSize);
+  return compressedBlocks;
 }
 
 void AppendedData::Run()

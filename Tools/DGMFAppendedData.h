@@ -8,7 +8,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dgmf_cli
@@ -33,18 +35,32 @@ class AppendedData
 public:
   AppendedData(const std::string& path, std::size_t position, int headerBytes,
     const std::string& compressorName);
-  ~AppendedData();
   AppendedData(const AppendedData&) = delete;
   AppendedData& operator=(const AppendedData&) = delete;
 
   /// Whether `compressorName` is "" or a compressor class Run can use.
   static bool CanDecompress(const std::string& compressorName);
 
-  /// Queues the `bytes` of the array at `offset` in the section, to be written at `target`.
-  void Queue(std::size_t offset, unsigned char* target, std::size_t bytes);
+  /// An array's compressed blocks in the mapped file (where each lies, how many bytes), each of
+  /// BlockSize bytes of values but the last; none when the file is not compressed.
+  struct CompressedBlocks
+  {
+    std::size_t BlockSize = 0;
+    std::vector<std::pair<const unsigned char*, std::size_t>> Blocks;
+  };
+
+  /// Queues the `bytes` of the array at `offset` in the section, to be written at `target`;
+  /// returns its compressed blocks.
+  CompressedBlocks Queue(std::size_t offset, unsigned char* target, std::size_t bytes);
 
   /// Writes the arrays queued so far (their targets must be alive) and forgets them.
   void Run();
+
+  /// The mapped file, held for as long as the result is (the blocks of Queue lie in it).
+  std::shared_ptr<const void> GetFile() const { return this->File; }
+
+  /// The compressor class of the file ("": not compressed).
+  const std::string& GetCompressorName() const { return this->CompressorName; }
 
 private:
   /// A piece of work: bytes of the file into an array (decompressed, or copied).
@@ -59,6 +75,7 @@ private:
   std::uint64_t Word(std::size_t at) const;
   void Check(std::size_t at, std::size_t bytes) const;
 
+  std::shared_ptr<const void> File;    ///< the mapping (unmapped when the last holder goes)
   const unsigned char* Data = nullptr; ///< the mapped file
   std::size_t Size = 0;
   std::size_t Position;

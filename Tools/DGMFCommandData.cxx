@@ -255,6 +255,9 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
                               : xml->SetCompressorTypeToLZ4();
     // VTK compresses block after block on one thread: 4 blocks per thread at once, same bytes.
     xml->CompressAhead(4 * vtkSMPTools::GetEstimatedNumberOfThreads());
+    // What was read compressed and did not change (the cells, as a rule) is written with the
+    // blocks it was read from, in their block size, instead of being compressed again.
+    xml->PreferReadBlockSize(written);
     xml->Write();
     errorCode = xml->GetErrorCode();
   }

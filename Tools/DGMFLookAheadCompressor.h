@@ -19,6 +19,8 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace dgmf_cli
 {
@@ -40,8 +42,18 @@ public:
   /// Blocks inside [begin, begin + bytes) may be compressed ahead (the memory must not change
   /// until the write ends).
   virtual void RegisterRange(const void* begin, std::size_t bytes) = 0;
-  /// Forgets the ranges and the blocks compressed ahead.
+  /**
+   * The values at [begin, begin + bytes) are already compressed by this compressor's class in
+   * blocks of `blockSize` bytes (the last one shorter): `blocks` (where each block's bytes lie,
+   * how many; they must stay until ClearRanges). A block VTK asks for at begin + k blockSize, of
+   * block k's size, is handed as it is (CompressedArray: the blocks a file was read from).
+   */
+  virtual void RegisterCompressed(const void* begin, std::size_t bytes, std::size_t blockSize,
+    const std::vector<std::pair<const unsigned char*, std::size_t>>& blocks) = 0;
+  /// Forgets the ranges, the compressed blocks registered and the blocks compressed ahead.
   virtual void ClearRanges() = 0;
+  /// Blocks handed as registered with RegisterCompressed since the compressor was made.
+  virtual std::size_t GetBlocksHandedAsRead() const = 0;
   /// Blocks handed from the cache, and blocks asked for that were not there (compressed on the
   /// spot, with the blocks ahead of them when in a range), since the compressor was made.
   virtual std::size_t GetCacheHits() const = 0;

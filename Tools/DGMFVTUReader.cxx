@@ -1,6 +1,7 @@
 #include "DGMFVTUReader.h"
 
 #include "DGMFAppendedData.h"
+#include "DGMFCompressedArray.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <fstream>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace dgmf_cli
@@ -99,7 +101,13 @@ public:
     {
       throw NotTaken{ "an array too large to be held" };
     }
-    auto array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type ? type : fileType));
+    // The cells' ids straight into vtkCellArray's own storage type: SetData keeps such arrays
+    // themselves (a vtkIdTypeArray would be wrapped in a new array), with what they carry.
+    auto array = type == VTK_ID_TYPE
+      ? vtkSmartPointer<vtkDataArray>::Take(sizeof(vtkIdType) == 8
+            ? static_cast<vtkDataArray*>(vtkCellArray::ArrayType64::New())
+            : static_cast<vtkDataArray*>(vtkCellArray::ArrayType32::New()))
+      : vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type ? type : fileType));
     const char* name = element->GetAttribute("Name");
     if (name && type == 0) // the cells' arrays (converted) have no name in VTK's reader
     {
@@ -122,15 +130,34 @@ public:
     }
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
-    this->Appended.Queue(static_cast<std::size_t>(offset), target, bytes);
-    this->Made.push_back(array); // alive until its bytes are written, whatever the caller keeps
+    AppendedData::CompressedBlocks blocks =
+      this->Appended.Queue(static_cast<std::size_t>(offset), target, bytes);
+    // alive until its bytes are written, whatever the caller keeps
+    this->Made.push_back(
+      { array, static_cast<std::size_t>(skip) * valueBytes, bytes, std::move(blocks) });
     return array;
   }
 
-  /// Writes the bytes of the arrays made so far.
+  /// Writes the bytes of the arrays made so far, and remembers for each array of a compressed
+  /// file the blocks it was read from (CompressedArray: written again as they are if the array
+  /// is not modified).
   void Run()
   {
     this->Appended.Run();
+    for (Queued& made : this->Made)
+    {
+      if (!made.Blocks.Blocks.empty())
+      {
+        CompressedArray compressed;
+        compressed.Keep = this->Appended.GetFile();
+        compressed.CompressorClass = this->Appended.GetCompressorName();
+        compressed.BlockSize = made.Blocks.BlockSize;
+        compressed.Offset = made.Offset;
+        compressed.Bytes = made.Bytes;
+        compressed.Blocks = std::move(made.Blocks.Blocks);
+        CompressedArray::Remember(made.Array, std::move(compressed));
+      }
+    }
     this->Made.clear();
   }
 
@@ -159,8 +186,18 @@ private:
     }
   }
 
+  /// An array made, its values' place in its memory (bytes from its start, bytes in all) and
+  /// its compressed blocks in the file.
+  struct Queued
+  {
+    vtkSmartPointer<vtkDataArray> Array;
+    std::size_t Offset;
+    std::size_t Bytes;
+    AppendedData::CompressedBlocks Blocks;
+  };
+
   AppendedData& Appended;
-  std::vector<vtkSmartPointer<vtkDataArray>> Made;
+  std::vector<Queued> Made;
 };
 
 /// The active attributes (Scalars="name", ...) of a PointData or CellData element.
@@ -391,7 +428,16 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
       throw NotTaken{ "a cell with a point id outside the points" };
     }
     vtkNew<vtkCellArray> cellArray;
-    cellArray->SetData(offsets, connectivity);
+    if (sizeof(vtkIdType) == 8)
+    {
+      cellArray->SetData(vtkCellArray::ArrayType64::SafeDownCast(offsets),
+        vtkCellArray::ArrayType64::SafeDownCast(connectivity));
+    }
+    else
+    {
+      cellArray->SetData(vtkCellArray::ArrayType32::SafeDownCast(offsets),
+        vtkCellArray::ArrayType32::SafeDownCast(connectivity));
+    }
     output->SetCells(vtkUnsignedCharArray::SafeDownCast(types), cellArray);
   }
   if (vtkXMLDataElement* pointData = Child(piece, "PointData"))

@@ -1,5 +1,6 @@
 #include "DGMFVTUWriter.h"
 
+#include "DGMFCompressedArray.h"
 #include "DGMFLookAheadCompressor.h"
 
 #include "vtkArrayDispatch.h"
@@ -21,6 +22,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace dgmf_cli
 {
@@ -185,14 +187,27 @@ void DGMFVTUWriter::CompressAhead(int blocks)
 
 namespace
 {
-/// Registers the memory of `array` with the look-ahead compressor if VTK writes it from there.
-void RegisterArray(LookAheadCompressor* compressor, vtkAbstractArray* array)
+/**
+ * Registers the memory of `array` with the look-ahead compressor if VTK writes it from there,
+ * and the blocks it was read from (CompressedArray) when it is unmodified and they were made
+ * by the compressor's class (`compressorClass`) in blocks of the writer's `blockSize`.
+ */
+void RegisterArray(LookAheadCompressor* compressor, vtkAbstractArray* array,
+  const std::string& compressorClass, std::size_t blockSize)
 {
-  if (array && array->HasStandardMemoryLayout() && array->GetNumberOfValues() > 0)
+  if (!array || !array->HasStandardMemoryLayout() || array->GetNumberOfValues() <= 0)
   {
-    compressor->RegisterRange(array->GetVoidPointer(0),
-      static_cast<std::size_t>(array->GetNumberOfValues()) *
-        static_cast<std::size_t>(array->GetDataTypeSize()));
+    return;
+  }
+  auto* memory = static_cast<const unsigned char*>(array->GetVoidPointer(0));
+  const std::size_t bytes = static_cast<std::size_t>(array->GetNumberOfValues()) *
+    static_cast<std::size_t>(array->GetDataTypeSize());
+  compressor->RegisterRange(memory, bytes);
+  const CompressedArray* read = CompressedArray::Of(array);
+  if (read && read->CompressorClass == compressorClass && read->BlockSize == blockSize &&
+    read->Offset <= bytes && read->Bytes <= bytes - read->Offset)
+  {
+    compressor->RegisterCompressed(memory + read->Offset, read->Bytes, blockSize, read->Blocks);
   }
 }
 
@@ -214,6 +229,49 @@ void ForEachPointAndCellArray(vtkUnstructuredGrid* grid, Visit visit)
   }
 }
 } // namespace
+
+bool DGMFVTUWriter::PreferReadBlockSize(vtkUnstructuredGrid* grid)
+{
+  if (!grid || !this->GetCompressor())
+  {
+    return false;
+  }
+  const std::string compressorClass = this->GetCompressor()->GetClassName();
+  // The bytes of the arrays to write, and of those read in blocks of each size by this class.
+  std::size_t total = 0;
+  std::map<std::size_t, std::size_t> readBytes;
+  const auto count = [&](vtkAbstractArray* array)
+  {
+    if (!array)
+    {
+      return;
+    }
+    const std::size_t bytes = static_cast<std::size_t>(array->GetNumberOfValues()) *
+      static_cast<std::size_t>(array->GetDataTypeSize());
+    total += bytes;
+    const CompressedArray* read = CompressedArray::Of(array);
+    if (read && read->CompressorClass == compressorClass && read->BlockSize > 0 &&
+      read->BlockSize <= static_cast<std::size_t>(VTK_INT_MAX))
+    {
+      readBytes[read->BlockSize] += read->Bytes;
+    }
+  };
+  ForEachPointAndCellArray(grid, count);
+  if (vtkCellArray* cells = grid->GetCells())
+  {
+    count(cells->GetConnectivityArray());
+    count(cells->GetOffsetsArray());
+  }
+  count(grid->GetCellTypesArray());
+  const auto most = std::max_element(readBytes.begin(), readBytes.end(),
+    [](const auto& a, const auto& b) { return a.second < b.second; });
+  if (most == readBytes.end() || 2 * most->second < total)
+  {
+    return false;
+  }
+  this->SetBlockSize(most->first);
+  return true;
+}
 
 int DGMFVTUWriter::EndFile()
 {
@@ -246,14 +304,17 @@ int DGMFVTUWriter::StartFile()
     ahead->ClearRanges();
     if (grid && this->GetNumberOfPieces() == 1) // pieces would need their own ranges
     {
-      ForEachPointAndCellArray(
-        grid, [ahead](vtkAbstractArray* array) { RegisterArray(ahead, array); });
+      const std::string compressorClass = this->GetCompressor()->GetClassName();
+      const auto blockSize = static_cast<std::size_t>(this->GetBlockSize());
+      const auto add = [&](vtkAbstractArray* array)
+      { RegisterArray(ahead, array, compressorClass, blockSize); };
+      ForEachPointAndCellArray(grid, add);
       if (vtkCellArray* cells = grid->GetCells())
       {
-        RegisterArray(ahead, cells->GetConnectivityArray());
-        RegisterArray(ahead, cells->GetOffsetsArray());
+        add(cells->GetConnectivityArray());
+        add(cells->GetOffsetsArray());
       }
-      RegisterArray(ahead, grid->GetCellTypesArray());
+      add(grid->GetCellTypesArray());
     }
   }
   return this->Superclass::StartFile();

@@ -64,6 +64,16 @@ public:
    */
   void CompressAhead(int blocks);
 
+  /**
+   * Takes the block size of the arrays of `grid` that were read with their compressed blocks
+   * (CompressedArray: DGMFVTUReader's arrays, unmodified), when blocks of that size made by
+   * this writer's compressor class hold at least half the bytes to write: those blocks are then
+   * written as they were read instead of being compressed again (with CompressAhead). Call after
+   * choosing the compressor type and block size; returns true when the block size was changed.
+   * A file whose arrays were compressed in blocks of VTK's 32 KiB then gets blocks of 32 KiB.
+   */
+  bool PreferReadBlockSize(vtkUnstructuredGrid* grid);
+
 protected:
   DGMFVTUWriter();
   ~DGMFVTUWriter() override;

@@ -2,7 +2,9 @@
 // shortcuts taken only where VTK would choose the same.
 #include "DGMFVTUWriter.h"
 
+#include "DGMFCompressedArray.h"
 #include "DGMFLookAheadCompressor.h"
+#include "DGMFVTUReader.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -24,6 +26,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -115,14 +118,14 @@ vtkSmartPointer<vtkUnstructuredGrid> MixedGrid(bool quadratic)
 /// The .vtu `writer` writes for `grid` (to a string), with the given mode and compressor, and,
 /// for a DGMFVTUWriter with `ahead` > 0, the compressor's blocks compressed that many at once.
 std::string Written(vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* grid, bool appended,
-  int compressor, int ahead = 0)
+  int compressor, int ahead = 0, int blockSize = 1 << 12)
 {
   writer->SetInputData(grid);
   writer->WriteToOutputStringOn();
   appended ? writer->SetDataModeToAppended() : writer->SetDataModeToBinary();
   writer->SetEncodeAppendedData(0);
   writer->SetCompressorType(compressor);
-  writer->SetBlockSize(1 << 12);
+  writer->SetBlockSize(blockSize);
   if (auto* ours = dgmf_cli::DGMFVTUWriter::SafeDownCast(writer); ours && ahead > 0)
   {
     ours->CompressAhead(ahead);
@@ -279,4 +282,151 @@ TEST(VTUWriter, CachedRangesAreVtksRanges)
     EXPECT_EQ(actual[0], expected[0]) << array->GetName();
     EXPECT_EQ(actual[1], expected[1]) << array->GetName();
   }
+}
+
+namespace
+{
+/// MixedGrid written by VTK's writer (appended, LZ4, blocks of 4 KiB) to the file `name` (one
+/// per test: the tests may run at the same time).
+std::string CompressedFile(const std::string& name)
+{
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  std::ofstream(path, std::ios::binary)
+    << Written(writer, MixedGrid(false), true, vtkXMLWriterBase::LZ4);
+  return path;
+}
+
+/// The file read by dgmf-deform's reader (a new grid each time: writes cache ranges in arrays).
+vtkSmartPointer<vtkUnstructuredGrid> ReadBack(const std::string& path)
+{
+  std::string whyNot;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = dgmf_cli::ReadAppendedVTU(path, whyNot);
+  EXPECT_NE(grid, nullptr) << whyNot;
+  return grid;
+}
+
+/// The blocks left with the arrays VTK's writer writes (points, point and cell data, cells).
+std::size_t ReadBlocks(vtkUnstructuredGrid* grid)
+{
+  std::vector<vtkAbstractArray*> arrays = { grid->GetPoints()->GetData(),
+    grid->GetCells()->GetConnectivityArray(), grid->GetCells()->GetOffsetsArray(),
+    grid->GetCellTypesArray() };
+  for (int k = 0; k < grid->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    arrays.push_back(grid->GetPointData()->GetAbstractArray(k));
+  }
+  for (int k = 0; k < grid->GetCellData()->GetNumberOfArrays(); ++k)
+  {
+    arrays.push_back(grid->GetCellData()->GetAbstractArray(k));
+  }
+  std::size_t blocks = 0;
+  for (vtkAbstractArray* array : arrays)
+  {
+    const dgmf_cli::CompressedArray* read = dgmf_cli::CompressedArray::Of(array);
+    blocks += read ? read->Blocks.size() : 0;
+  }
+  return blocks;
+}
+
+/**
+ * The bytes DGMFVTUWriter writes for the file read back and changed by `change` (compressing
+ * ahead, compressor `compressor`, blocks of `blockSize`) are VTK's writer's for the same grid;
+ * returns the blocks it wrote as they were read.
+ */
+std::size_t BlocksWrittenAsRead(const std::string& path,
+  const std::function<void(vtkUnstructuredGrid*)>& change, int compressor, int blockSize)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> forVtk = ReadBack(path);
+  change(forVtk);
+  vtkNew<vtkXMLUnstructuredGridWriter> stock;
+  const std::string expected = Written(stock, forVtk, true, compressor, 0, blockSize);
+  vtkSmartPointer<vtkUnstructuredGrid> read = ReadBack(path);
+  change(read);
+  vtkNew<vtkUnstructuredGrid> copy; // as dgmf-deform writes: a shallow copy
+  copy->ShallowCopy(read);
+  vtkNew<dgmf_cli::DGMFVTUWriter> ours;
+  ours->SkipCellTypeScan(copy);
+  const std::string actual = Written(ours, copy, true, compressor, 3, blockSize);
+  EXPECT_TRUE(actual == expected) << actual.size() << " against " << expected.size() << " bytes";
+  auto* lookAhead = dynamic_cast<dgmf_cli::LookAheadCompressor*>(ours->GetCompressor());
+  return lookAhead ? lookAhead->GetBlocksHandedAsRead() : 0;
+}
+} // namespace
+
+// dgmf-deform writes again, as they were read, the compressed blocks of the arrays it did not
+// change (the cells, as a rule): VTK's bytes, only for unmodified arrays, only with the file's
+// compressor and block size.
+TEST(VTUWriter, ArraysReadCompressedAreWrittenWithTheBlocksTheyWereRead)
+{
+  const std::string path = CompressedFile("dgmf-test-vtu-blocks-as-read.vtu");
+  const auto unchanged = [](vtkUnstructuredGrid*) {};
+  // Nothing is left in the arrays: VTK's writer writes a grid read back as the original.
+  {
+    vtkNew<vtkXMLUnstructuredGridWriter> original, readBack;
+    const std::string a = Written(original, MixedGrid(false), true, vtkXMLWriterBase::LZ4);
+    const std::string b = Written(readBack, ReadBack(path), true, vtkXMLWriterBase::LZ4);
+    EXPECT_TRUE(a == b);
+  }
+  const std::size_t all = ReadBlocks(ReadBack(path));
+  EXPECT_GT(all, 10u);
+  EXPECT_EQ(BlocksWrittenAsRead(path, unchanged, vtkXMLWriterBase::LZ4, 1 << 12), all);
+  // Points moved in place (and said so): theirs compressed again, the rest as read.
+  std::size_t pointBlocks = 0;
+  const auto movePoints = [&pointBlocks](vtkUnstructuredGrid* grid)
+  {
+    vtkDataArray* points = grid->GetPoints()->GetData();
+    pointBlocks = dgmf_cli::CompressedArray::Of(points)->Blocks.size();
+    for (vtkIdType p = 0; p < points->GetNumberOfTuples(); p += 3)
+    {
+      points->SetComponent(p, 1, points->GetComponent(p, 1) + 0.25);
+    }
+    points->Modified();
+  };
+  const std::size_t afterMove =
+    BlocksWrittenAsRead(path, movePoints, vtkXMLWriterBase::LZ4, 1 << 12);
+  EXPECT_EQ(afterMove, all - pointBlocks) << all << " " << pointBlocks;
+  // A deep copy of an array is another array: compressed again.
+  std::size_t markerBlocks = 0;
+  const auto copyMarker = [&markerBlocks](vtkUnstructuredGrid* grid)
+  {
+    vtkDataArray* marker = grid->GetPointData()->GetArray("BoundaryMarker");
+    markerBlocks = dgmf_cli::CompressedArray::Of(marker)->Blocks.size();
+    vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(marker->NewInstance());
+    copy->DeepCopy(marker);
+    grid->GetPointData()->AddArray(copy); // replaces the array of the same name
+  };
+  const std::size_t afterCopy =
+    BlocksWrittenAsRead(path, copyMarker, vtkXMLWriterBase::LZ4, 1 << 12);
+  EXPECT_EQ(afterCopy, all - markerBlocks) << all << " " << markerBlocks;
+  // Another block size or compressor: everything compressed again.
+  EXPECT_EQ(BlocksWrittenAsRead(path, unchanged, vtkXMLWriterBase::LZ4, 1 << 13), 0u);
+  EXPECT_EQ(BlocksWrittenAsRead(path, unchanged, vtkXMLWriterBase::ZLIB, 1 << 12), 0u);
+  std::filesystem::remove(path);
+}
+
+// The writer takes the read arrays' block size when they hold at least half the bytes.
+TEST(VTUWriter, PrefersTheBlockSizeOfWhatWasReadCompressed)
+{
+  const std::string path = CompressedFile("dgmf-test-vtu-read-block-size.vtu");
+  const auto preferred = [&](int compressor, bool copyEverything)
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> grid = ReadBack(path);
+    if (copyEverything)
+    {
+      vtkNew<vtkUnstructuredGrid> copy;
+      copy->DeepCopy(grid);
+      grid = copy;
+    }
+    vtkNew<dgmf_cli::DGMFVTUWriter> writer;
+    writer->SetCompressorType(compressor);
+    writer->SetBlockSize(1 << 20);
+    const bool changed = writer->PreferReadBlockSize(grid);
+    EXPECT_EQ(changed, writer->GetBlockSize() != (1 << 20));
+    return writer->GetBlockSize();
+  };
+  EXPECT_EQ(preferred(vtkXMLWriterBase::LZ4, false), 1 << 12);
+  EXPECT_EQ(preferred(vtkXMLWriterBase::LZ4, true), 1 << 20) << "a deep copy was taken as read";
+  EXPECT_EQ(preferred(vtkXMLWriterBase::ZLIB, false), 1 << 20) << "another compressor's blocks";
+  std::filesystem::remove(path);
 }
