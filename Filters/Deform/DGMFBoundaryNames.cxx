@@ -2,6 +2,7 @@
 
 #include "DGMFCompositeMesh.h"
 #include "DGMFMeshConversion.h"
+#include "DGMFSMPTools.h"
 
 #include "vtkCompositeDataSet.h"
 #include "vtkDataAssembly.h"
@@ -58,7 +59,8 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   std::vector<double> copy;
   const double* xyz = PointsAsDouble(merged->GetPoints(), copy);
   dgmf::ExtrudedLayers layers = findLayers
-    ? dgmf::FindExtrudedLayers(xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()))
+    ? dgmf::FindExtrudedLayers(
+        xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()), MakeSMPParallelFor())
     : dgmf::ExtrudedLayers();
   NodeRoles roles = AssignRoles(mesh, selection, layers);
   roles.Layers = std::move(layers);

@@ -1,6 +1,7 @@
 #include "DGMFInputNodes.h"
 
 #include "DGMFMeshConversion.h"
+#include "DGMFSMPTools.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkArrayDispatch.h"
@@ -129,7 +130,7 @@ void InputGatherer::Gather(
       const auto hash = [&]() { return HashBytes(nodes.Points, 3 * n * sizeof(double)); };
       if (!this->LayerPoints.Matches(mesh->GetPoints()->GetData(), hash))
       {
-        this->Layers = dgmf::FindExtrudedLayers(nodes.Points, n);
+        this->Layers = dgmf::FindExtrudedLayers(nodes.Points, n, MakeSMPParallelFor());
         // No layers (a volume mesh): kept for the same points object only, as finding that again
         // costs one streaming pass, about what a hash of the points would.
         if (this->Layers.Found())

@@ -2,6 +2,7 @@
 // planes to the bit or to round-off, a plane that is not one is refused, and the two layers of an
 // extruded mesh get the same in-plane motion bit for bit.
 #include "SyntheticNodes.h"
+#include "TwoThreadFor.h"
 
 #include "dgmf/DeformationMethod.h"
 #include "dgmf/DelaunayMapping.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -265,6 +267,50 @@ TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
   const double y = deformed[3 * 0 + 1], z = deformed[3 * 0 + 2];
   EXPECT_NEAR(y, std::cos(40.0 * Pi / 180.0), 1e-12);
   EXPECT_NEAR(z, std::sin(40.0 * Pi / 180.0), 1e-12);
+}
+
+TEST(ExtrudedLayers, TheFirstPassGivesTheSameAnswerOnTwoThreadsOverManyBlocks)
+{
+  // Two planes z = -0.5 and z = 2 of a 300 x 300 grid, the nodes of both planes interleaved so
+  // that every block of the first pass (65,536 nodes) holds some of each plane's extremes.
+  const std::size_t side = 300;
+  std::vector<double> points;
+  for (std::size_t k = 0; k < side * side; ++k)
+  {
+    for (double z : { -0.5, 2.0 })
+    {
+      points.insert(points.end(), { double(k % side), double(k / side), z });
+    }
+  }
+  const std::size_t n = points.size() / 3;
+  const auto find = [&](const std::vector<double>& xyz, const dgmf::ParallelFor& parallelFor)
+  { return dgmf::FindExtrudedLayers(xyz.data(), n, parallelFor); };
+  const dgmf::ParallelFor two = dgmf_test::TwoThreadFor;
+  const dgmf::ExtrudedLayers serial = find(points, dgmf::SerialFor);
+  const dgmf::ExtrudedLayers threaded = find(points, two);
+  ASSERT_TRUE(serial.Found());
+  ASSERT_TRUE(threaded.Found());
+  EXPECT_EQ(threaded.Axis, 2);
+  EXPECT_EQ(threaded.Low, -0.5);
+  EXPECT_EQ(threaded.High, 2.0);
+  EXPECT_EQ(threaded.Pairs, side * side);
+  EXPECT_EQ(threaded.Front, serial.Front);
+  EXPECT_EQ(threaded.Layer, serial.Layer);
+
+  // One node of the last block below the lower plane: that plane is then a single node, and
+  // nothing is paired, whatever the threads.
+  std::vector<double> lowered = points;
+  lowered[3 * (n - 2) + 2] = -0.75;
+  EXPECT_FALSE(find(lowered, dgmf::SerialFor).Found());
+  EXPECT_FALSE(find(lowered, two).Found());
+  // A NaN coordinate: ignored by the extremes, except as the first node's (its axis is out).
+  std::vector<double> nan = points;
+  nan[3 * 70000 + 2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(find(nan, dgmf::SerialFor).Found(), find(nan, two).Found());
+  nan = points;
+  nan[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(find(nan, dgmf::SerialFor).Found());
+  EXPECT_FALSE(find(nan, two).Found());
 }
 
 TEST(ExtrudedLayers, CellCentresBetweenThePlanesAreInnerNodesAThirdLayerIsNot)

@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <unordered_map>
 
 namespace dgmf
 {
 namespace
 {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 /// The in-plane coordinates of a node as a hashable key (bit patterns; -0 and +0 alike).
 struct PlaneKey
 {
@@ -59,6 +63,75 @@ void TurnMotion(int axis, RigidMotion& motion)
     std::copy(v, v + 3, vector);
   }
 }
+
+/// Nodes per block of the extremes pass.
+constexpr std::size_t ExtremesBlock = 1 << 16;
+
+/**
+ * Each axis's smallest and largest coordinate over some nodes and how many nodes have it (NaN
+ * coordinates ignored). Blocks combine in any grouping, in order, to the whole range's.
+ */
+struct Extremes
+{
+  double Low[3] = { kInfinity, kInfinity, kInfinity };
+  double High[3] = { -kInfinity, -kInfinity, -kInfinity };
+  std::size_t LowCount[3] = { 0, 0, 0 };
+  std::size_t HighCount[3] = { 0, 0, 0 };
+
+  void Add(const Extremes& other)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (other.Low[axis] < this->Low[axis])
+      {
+        this->Low[axis] = other.Low[axis];
+        this->LowCount[axis] = other.LowCount[axis];
+      }
+      else if (other.Low[axis] == this->Low[axis])
+      {
+        this->LowCount[axis] += other.LowCount[axis];
+      }
+      if (other.High[axis] > this->High[axis])
+      {
+        this->High[axis] = other.High[axis];
+        this->HighCount[axis] = other.HighCount[axis];
+      }
+      else if (other.High[axis] == this->High[axis])
+      {
+        this->HighCount[axis] += other.HighCount[axis];
+      }
+    }
+  }
+};
+
+Extremes FindExtremes(const double* points, std::size_t begin, std::size_t end)
+{
+  Extremes extremes;
+  double* low = extremes.Low;
+  double* high = extremes.High;
+  std::size_t* lowCount = extremes.LowCount;
+  std::size_t* highCount = extremes.HighCount;
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double value = points[3 * i + axis];
+      if (value < low[axis])
+      {
+        low[axis] = value;
+        lowCount[axis] = 0;
+      }
+      if (value > high[axis])
+      {
+        high[axis] = value;
+        highCount[axis] = 0;
+      }
+      lowCount[axis] += value == low[axis];
+      highCount[axis] += value == high[axis];
+    }
+  }
+  return extremes;
+}
 } // namespace
 
 void ToLayer(int axis, const double in[3], double out[3])
@@ -77,7 +150,8 @@ void FromLayer(int axis, const double in[3], double out[3])
   out[axis] = w;
 }
 
-ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n)
+ExtrudedLayers FindExtrudedLayers(
+  const double* points, std::size_t n, const ParallelFor& parallelFor)
 {
   ExtrudedLayers layers;
   if (n < 6)
@@ -88,30 +162,29 @@ ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n)
   // all on each. One streaming pass finds every axis's extremes and how many nodes lie on them, so
   // that a volume mesh, which fails here, costs no hash lookups (measured: 0.55 s of a 0.9 s
   // repeated deformation on the 8.26M-node benchmark mesh before this check).
+  const std::size_t blocks = (n + ExtremesBlock - 1) / ExtremesBlock;
+  std::vector<Extremes> perBlock(blocks);
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      perBlock[block] =
+        FindExtremes(points, block * ExtremesBlock, std::min(n, (block + 1) * ExtremesBlock));
+    });
+  Extremes all;
+  for (const Extremes& extremes : perBlock)
+  {
+    all.Add(extremes);
+  }
   double low[3], high[3];
-  std::size_t lowCount[3] = { 1, 1, 1 }, highCount[3] = { 1, 1, 1 };
+  std::size_t lowCount[3], highCount[3];
   for (int axis = 0; axis < 3; ++axis)
   {
-    low[axis] = high[axis] = points[axis];
-  }
-  for (std::size_t i = 1; i < n; ++i)
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const double value = points[3 * i + axis];
-      if (value < low[axis])
-      {
-        low[axis] = value;
-        lowCount[axis] = 0;
-      }
-      if (value > high[axis])
-      {
-        high[axis] = value;
-        highCount[axis] = 0;
-      }
-      lowCount[axis] += value == low[axis];
-      highCount[axis] += value == high[axis];
-    }
+    // A NaN first coordinate keeps the axis out, as a scan started from it always did.
+    const bool nan = std::isnan(points[axis]);
+    low[axis] = nan ? points[axis] : all.Low[axis];
+    high[axis] = nan ? points[axis] : all.High[axis];
+    lowCount[axis] = all.LowCount[axis];
+    highCount[axis] = all.HighCount[axis];
   }
   for (int axis = 0; axis < 3; ++axis)
   {

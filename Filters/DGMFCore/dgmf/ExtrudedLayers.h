@@ -8,6 +8,7 @@
 
 #include "dgmf/DeformationProblem.h"
 #include "dgmf/NodeKind.h"
+#include "dgmf/ParallelFor.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -43,9 +44,11 @@ struct ExtrudedLayers
  * Finds the layers of a one-cell-thick mesh among `n` nodes (3 coordinates each): the first axis
  * along which the nodes' coordinates lie between two values, every node at those two values
  * paired, and the nodes between them (if any) inner nodes (see ExtrudedLayers). Not Found() when
- * there is none. O(n) with a hash of the in-plane coordinates.
+ * there is none. O(n) with a hash of the in-plane coordinates; the first pass (every axis's
+ * extremes) on `parallelFor`'s threads (none: the calling thread), in fixed blocks.
  */
-ExtrudedLayers FindExtrudedLayers(const double* points, std::size_t n);
+ExtrudedLayers FindExtrudedLayers(
+  const double* points, std::size_t n, const ParallelFor& parallelFor = {});
 
 /**
  * The in-plane coordinates of an extruded mesh's layer: (u, v, w) with w along `axis` and (u, v)
