@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -61,10 +62,39 @@ vtkDataArray* FindPointArray(
 /// dgmf::MarkerToNodeKinds over any array type (vtkArrayDispatch: no virtual call per value).
 struct MarkerToKinds
 {
+  /// Nodes per block of the conversion on the threads.
+  static constexpr vtkIdType Block = 1 << 16;
+
+  /// The blocks' conversions on the threads; the error of the first block that has one (its
+  /// first bad value, so the first of all), whatever the threads.
   template <typename ArrayType>
   void operator()(ArrayType* array, dgmf::NodeKind* kinds) const
   {
-    dgmf::MarkerToNodeKinds(vtk::DataArrayValueRange<1>(array), kinds);
+    const vtkIdType n = array->GetNumberOfTuples();
+    const auto blocks = static_cast<std::size_t>((n + Block - 1) / Block);
+    std::vector<std::exception_ptr> failures(blocks);
+    dgmf::ForEachBlock(MakeSMPParallelFor(), blocks,
+      [&](std::size_t block)
+      {
+        const vtkIdType begin = static_cast<vtkIdType>(block) * Block;
+        try
+        {
+          dgmf::MarkerToNodeKinds(
+            vtk::DataArrayValueRange<1>(array, begin, std::min(n, begin + Block)), kinds + begin,
+            static_cast<std::size_t>(begin));
+        }
+        catch (...)
+        {
+          failures[block] = std::current_exception();
+        }
+      });
+    for (const std::exception_ptr& failure : failures)
+    {
+      if (failure)
+      {
+        std::rethrow_exception(failure);
+      }
+    }
   }
 };
 } // namespace

@@ -10,6 +10,7 @@
 #include "DGMFMeshConversion.h"
 #include "DGMFOutputArrays.h"
 #include "DGMFOutputBuffers.h"
+#include "DGMFSMPTools.h"
 
 #include "dgmf/ResultNames.h"
 
@@ -458,6 +459,65 @@ TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChan
   blocks->SetBlock(1, TwoSquares(2.0));
   cache.Get(blocks, "", "");
   EXPECT_FALSE(cache.WasReused());
+}
+
+TEST(InputNodes, AMarkerOfManyBlocksIsConvertedOnTheThreadsAndItsFirstBadValueNamed)
+{
+  // 200,000 points in the plane z = 0 (and a triangle: a 2D mesh), a marker of 1s and 2s: converted
+  // in blocks of 65,536 on two threads.
+  const vtkIdType n = 200000;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("BoundaryMarker");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->InsertNextPoint(double(i % 1000), double(i / 1000), 0.0);
+    marker->InsertNextValue(i % 3 == 0 ? 2 : i % 3 == 1 ? 1 : 0);
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  const vtkIdType triangle[3] = { 0, 1, 1000 };
+  grid->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+  grid->GetPointData()->AddArray(marker);
+  dgmf_vtk::GatherOptions options;
+  options.Arrays.Marker = "BoundaryMarker";
+  const auto gather = [&]()
+  {
+    std::string error = "no error";
+    dgmf_vtk::InputGatherer gatherer;
+    dgmf_vtk::InputNodes nodes;
+    dgmf_vtk::RunWithThreads(2,
+      [&]()
+      {
+        try
+        {
+          gatherer.Gather(grid, options, nodes);
+        }
+        catch (const std::invalid_argument& e)
+        {
+          error = e.what();
+        }
+      });
+    return std::make_pair(nodes.Kinds, error);
+  };
+  const auto good = gather();
+  ASSERT_EQ(good.second, "no error");
+  ASSERT_EQ(good.first.size(), static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const dgmf::NodeKind expected = i % 3 == 0 ? dgmf::NodeKind::MovingBoundary
+      : i % 3 == 1                             ? dgmf::NodeKind::StaticBoundary
+                                               : dgmf::NodeKind::Interior;
+    ASSERT_EQ(good.first[static_cast<std::size_t>(i)], expected) << "point " << i;
+  }
+  // Bad values in the second and third blocks (and a later one in the second): the first is
+  // named, whichever block a thread finishes first.
+  marker->SetValue(150000, 9);
+  marker->SetValue(70001, 5);
+  marker->SetValue(131000, 4);
+  marker->Modified();
+  EXPECT_NE(
+    gather().second.find("'BoundaryMarker' has the value 5 at point 70001"), std::string::npos);
 }
 
 TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)

@@ -77,10 +77,11 @@ BoundaryMotion GatherTotalBoundaryMotion(const DeformationProblem& problem);
  * Node kinds from boundary-marker values of any numeric type (0 interior, 1 static, 2 moving,
  * 3 slip).
  * Throws std::invalid_argument naming the first other value and its node; the message continues
- * a sentence that names the array ("The boundary-marker array 'X' has the value ...").
+ * a sentence that names the array ("The boundary-marker array 'X' has the value ..."). The values
+ * may be a part of the nodes' that starts at node `firstNode` (for the message).
  */
 template <typename Values>
-void MarkerToNodeKinds(const Values& values, NodeKind* kinds)
+void MarkerToNodeKinds(const Values& values, NodeKind* kinds, std::size_t firstNode = 0)
 {
   std::size_t i = 0;
   for (const auto value : values)
@@ -88,7 +89,7 @@ void MarkerToNodeKinds(const Values& values, NodeKind* kinds)
     const double v = static_cast<double>(value);
     if (v != 0.0 && v != 1.0 && v != 2.0 && v != 3.0)
     {
-      ThrowBadMarkerValue(v, i);
+      ThrowBadMarkerValue(v, firstNode + i);
     }
     kinds[i++] = static_cast<NodeKind>(static_cast<int>(v));
   }

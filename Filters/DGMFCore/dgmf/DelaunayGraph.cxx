@@ -426,7 +426,7 @@ void DelaunayGraph::BuildElements(
         }
       }
     });
-  this->BuildSeedGrid();
+  this->BuildSeedGrid(parallelFor);
   // Elements that are flat in the original coordinates: artefacts of coplanar or cospherical
   // boundary points, given a tiny volume by the perturbation.
   this->FlatElements = this->CountInvertedElements(nullptr, parallelFor);

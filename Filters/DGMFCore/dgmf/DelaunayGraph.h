@@ -5,6 +5,7 @@
 #ifndef dgmf_DelaunayGraph_h
 #define dgmf_DelaunayGraph_h
 
+#include "dgmf/FirstTouch.h"
 #include "dgmf/ParallelFor.h"
 #include "dgmf/Simd.h"
 #include "dgmf/WalkRecord.h"
@@ -193,7 +194,7 @@ private:
   std::vector<double> OriginalPositions;
   std::size_t FlatElements = 0;
   std::vector<std::int32_t> ElementVertices;
-  std::vector<WalkRecord> Records; ///< corners and neighbours of each element
+  UninitializedVector<WalkRecord> Records; ///< corners and neighbours of each element
   /// Seed grid (see GetSeedElement): origin, inverse cell size, cells per axis, element per cell.
   double SeedOrigin[3] = { 0, 0, 0 };
   double SeedInverseSize = 1.0;
@@ -204,7 +205,7 @@ private:
   /// The vertices' numbers, the elements' order, records and seed grid, and the flat elements.
   void BuildElements(
     const double* xyz, const std::vector<double>& moved, const ParallelFor& parallelFor);
-  void BuildSeedGrid();
+  void BuildSeedGrid(const ParallelFor& parallelFor);
 };
 
 } // namespace dgmf

@@ -5,11 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace dgmf
 {
+namespace
+{
+/// Elements per block of the seed grid's parallel pass.
+constexpr std::size_t SeedBlock = 4096;
+} // namespace
 
-void DelaunayGraph::BuildSeedGrid()
+void DelaunayGraph::BuildSeedGrid(const ParallelFor& parallelFor)
 {
   // A uniform grid with about one cell per 4 elements over the graph's bounding box.
   const std::size_t elements = this->GetNumberOfElements();
@@ -41,40 +47,52 @@ void DelaunayGraph::BuildSeedGrid()
       : 1;
     total *= static_cast<std::size_t>(this->SeedCells[c]);
   }
-  // Each cell gets the first element (in the Hilbert order) whose centroid lies in it...
+  // Each cell gets the first element (in the Hilbert order) whose centroid lies in it (the
+  // elements' cells found on the threads)...
   this->SeedGrid.assign(total, -1);
   const int n = this->Dimension + 1;
+  std::vector<std::size_t> cellOf(elements);
+  ForEachIndex(parallelFor, elements, SeedBlock,
+    [&](std::size_t e)
+    {
+      double centroid[3] = { 0, 0, 0 };
+      for (int k = 0; k < n; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          centroid[c] += this->Records[e].Corners[k][c] / n;
+        }
+      }
+      cellOf[e] = this->GetSeedCell(centroid);
+    });
   for (std::size_t e = 0; e < elements; ++e)
   {
-    double centroid[3] = { 0, 0, 0 };
-    for (int k = 0; k < n; ++k)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        centroid[c] += this->Records[e].Corners[k][c] / n;
-      }
-    }
-    std::int32_t& cell = this->SeedGrid[this->GetSeedCell(centroid)];
+    std::int32_t& cell = this->SeedGrid[cellOf[e]];
     cell = cell < 0 ? static_cast<std::int32_t>(e) : cell;
   }
-  // ... and empty cells the element of a filled neighbour, by sweeps along each axis.
-  const std::int64_t stride[3] = { 1, this->SeedCells[0], this->SeedCells[0] * this->SeedCells[1] };
+  // ... and empty cells the element of a filled neighbour, by sweeps along each axis: along every
+  // line of cells in the axis' direction, forwards then backwards.
+  const std::size_t cells[3] = { static_cast<std::size_t>(this->SeedCells[0]),
+    static_cast<std::size_t>(this->SeedCells[1]), static_cast<std::size_t>(this->SeedCells[2]) };
+  const std::size_t stride[3] = { 1, cells[0], cells[0] * cells[1] };
   for (int c = 0; c < 3; ++c)
   {
-    for (std::size_t i = 0; i < total; ++i)
+    const int a = (c + 1) % 3, b = (c + 2) % 3; // the two other axes span the lines' starts
+    for (std::size_t i = 0; i < cells[a]; ++i)
     {
-      const std::int64_t along = (static_cast<std::int64_t>(i) / stride[c]) % this->SeedCells[c];
-      if (this->SeedGrid[i] < 0 && along > 0)
+      for (std::size_t j = 0; j < cells[b]; ++j)
       {
-        this->SeedGrid[i] = this->SeedGrid[i - stride[c]];
-      }
-    }
-    for (std::size_t i = total; i-- > 0;)
-    {
-      const std::int64_t along = (static_cast<std::int64_t>(i) / stride[c]) % this->SeedCells[c];
-      if (this->SeedGrid[i] < 0 && along + 1 < this->SeedCells[c])
-      {
-        this->SeedGrid[i] = this->SeedGrid[i + stride[c]];
+        std::int32_t* line = this->SeedGrid.data() + i * stride[a] + j * stride[b];
+        for (std::size_t k = 1; k < cells[c]; ++k)
+        {
+          std::int32_t& cell = line[k * stride[c]];
+          cell = cell < 0 ? line[(k - 1) * stride[c]] : cell;
+        }
+        for (std::size_t k = cells[c] - 1; k-- > 0;)
+        {
+          std::int32_t& cell = line[k * stride[c]];
+          cell = cell < 0 ? line[(k + 1) * stride[c]] : cell;
+        }
       }
     }
   }

@@ -2,6 +2,7 @@
 
 #include "dgmf/DeformationProblem.h"
 #include "dgmf/Finite.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/LocationOrder.h"
 #include "dgmf/NodeLocation.h"
 #include "dgmf/Simd.h"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +20,13 @@ namespace
 {
 /// How many nodes ahead the spatial order's gather and scatter ask for a node's data.
 constexpr std::size_t GatherAhead = 16;
+
+/// Nodes per block of the boundary nodes' search.
+constexpr std::size_t KindBlock = std::size_t(1) << 16;
+
+/// Values (8 MB of doubles) per first-touch job beside the graph's insertion: parts small
+/// enough for both threads to share the end of the work evenly.
+constexpr std::size_t SideJobPart = std::size_t(1) << 20;
 } // namespace
 
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
@@ -30,16 +39,36 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   }
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
-  this->Kinds.assign(kinds, kinds + numberOfNodes);
-  // Step 1: the graph of all boundary nodes.
-  std::vector<double> boundaryXYZ;
-  for (std::size_t i = 0; i < numberOfNodes; ++i)
-  {
-    if (IsBoundary(kinds[i]))
+  // Step 1: the graph of all boundary nodes, found (and the kinds copied) in fixed blocks on the
+  // threads, listed in increasing order.
+  this->Kinds.resize(numberOfNodes);
+  const std::size_t kindBlocks = (numberOfNodes + KindBlock - 1) / KindBlock;
+  std::vector<std::size_t> boundaryBefore(kindBlocks + 1, 0);
+  ForEachBlock(parallelFor, kindBlocks,
+    [&](std::size_t block)
     {
-      this->BoundaryNodes.push_back(static_cast<std::int32_t>(i));
-    }
-  }
+      const std::size_t begin = block * KindBlock;
+      const std::size_t end = std::min(numberOfNodes, begin + KindBlock);
+      std::copy(kinds + begin, kinds + end, this->Kinds.data() + begin);
+      boundaryBefore[block + 1] = static_cast<std::size_t>(
+        std::count_if(kinds + begin, kinds + end, [](NodeKind kind) { return IsBoundary(kind); }));
+    });
+  std::partial_sum(boundaryBefore.begin(), boundaryBefore.end(), boundaryBefore.begin());
+  this->BoundaryNodes.resize(boundaryBefore.back());
+  ForEachBlock(parallelFor, kindBlocks,
+    [&](std::size_t block)
+    {
+      std::int32_t* next = this->BoundaryNodes.data() + boundaryBefore[block];
+      for (std::size_t i = block * KindBlock; i < std::min(numberOfNodes, (block + 1) * KindBlock);
+           ++i)
+      {
+        if (IsBoundary(kinds[i]))
+        {
+          *next++ = static_cast<std::int32_t>(i);
+        }
+      }
+    });
+  std::vector<double> boundaryXYZ;
   if (this->BoundaryNodes.empty())
   {
     throw std::invalid_argument(NoBoundaryNodeMessage);
@@ -67,11 +96,24 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           std::to_string(bad / 3) + ").");
       }
     });
-  jobs.emplace_back([this, numberOfNodes, n]()
-    { this->Weights.assign(numberOfNodes * static_cast<std::size_t>(n), 0.0); });
-  jobs.emplace_back(
-    [this, numberOfNodes]() { this->NodeElement.assign(numberOfNodes, NotLocated); });
+  // The node arrays are allocated here without being written, and their pages faulted in parts
+  // (FirstTouch: every weight is written later, boundary nodes' below; the elements need their
+  // "not located" mark).
+  this->Weights.resize(numberOfNodes * static_cast<std::size_t>(n));
+  this->NodeElement.resize(numberOfNodes);
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
+  for (std::size_t begin = 0; begin < this->Weights.size(); begin += SideJobPart)
+  {
+    const std::size_t count = std::min(SideJobPart, this->Weights.size() - begin);
+    jobs.emplace_back(
+      [this, begin, count]() { FirstTouch(this->Weights.data() + begin, count * sizeof(double)); });
+  }
+  for (std::size_t begin = 0; begin < numberOfNodes; begin += 2 * SideJobPart)
+  {
+    const std::size_t count = std::min(2 * SideJobPart, numberOfNodes - begin);
+    jobs.emplace_back(
+      [this, begin, count]() { std::fill_n(this->NodeElement.data() + begin, count, NotLocated); });
+  }
   this->Graph = std::make_unique<DelaunayGraph>(
     dimension, boundaryXYZ.data(), this->BoundaryNodes.size(), parallelFor, jobs);
   boundaryXYZ = std::vector<double>();
@@ -112,6 +154,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   {
     const auto node = static_cast<std::size_t>(this->BoundaryNodes[b]);
     this->NodeElement[node] = -vertexOfPoint[b] - 1;
+    std::fill_n(this->Weights.data() + node * n, n, 0.0);
     this->Weights[node * n] = 1.0;
   }
 

@@ -6,6 +6,7 @@
 #define dgmf_DelaunayMapping_h
 
 #include "dgmf/DelaunayGraph.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
 
@@ -154,8 +155,8 @@ private:
   std::vector<std::int32_t> BoundaryNodes;
   std::vector<NodeKind> Kinds;
   /// >= 0: element of an interior node; < 0: -(vertex + 1) for a boundary node.
-  std::vector<std::int32_t> NodeElement;
-  std::vector<double> Weights; ///< dim+1 per node
+  UninitializedVector<std::int32_t> NodeElement;
+  UninitializedVector<double> Weights; ///< dim+1 per node
   std::vector<NodeKind> VertexKind;
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
