@@ -20,7 +20,8 @@ TEST(FirstTouch, WritesNothingOutsideItsRangeWhateverTheAlignment)
       {
         if (i < offset || i >= offset + length)
         {
-          ASSERT_EQ(bytes[i], 0xab) << "offset " << offset << ", length " << length << ", byte " << i;
+          ASSERT_EQ(bytes[i], 0xab)
+            << "offset " << offset << ", length " << length << ", byte " << i;
         }
       }
     }
