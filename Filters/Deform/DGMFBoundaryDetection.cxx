@@ -201,6 +201,11 @@ public:
   {
     return this->Faces.GetCornerFaces(cell, corners); // polygons: none (not a 3D shape)
   }
+  const std::int64_t* GetCornerRun(std::size_t cell, std::size_t maxCells, const void*& ids,
+    std::size_t& count, int& cornersPerCell) const override
+  {
+    return this->Faces.GetCornerRun(cell, maxCells, ids, count, cornersPerCell);
+  }
   void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
   {
     const auto id = static_cast<vtkIdType>(cell);

@@ -1,19 +1,28 @@
 #include "DGMFContentKey.h"
 
+#include "DGMFSMPTools.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 namespace dgmf_vtk
 {
 
-std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
+namespace
 {
-  const auto* p = static_cast<const unsigned char*>(data);
+/// Bytes per block of HashBytes: blocks are hashed on the threads, then combined in order.
+constexpr std::size_t HashBlock = std::size_t(1) << 22;
+
+/// The lanes' hash of one block.
+std::uint64_t HashBlockBytes(const unsigned char* p, std::size_t bytes, std::uint64_t seed)
+{
   std::uint64_t lane[4] = { seed ^ (bytes * 0xff51afd7ed558ccdull), seed + 1, seed + 2, seed + 3 };
   std::size_t k = 0;
   for (; k + 32 <= bytes; k += 32)
@@ -35,6 +44,32 @@ std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
   for (; k < bytes; ++k)
   {
     h = (h ^ p[k]) * 0x100000001b3ull;
+  }
+  return h;
+}
+} // namespace
+
+std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
+{
+  const auto* p = static_cast<const unsigned char*>(data);
+  if (bytes <= HashBlock)
+  {
+    return HashBlockBytes(p, bytes, seed);
+  }
+  // Fixed blocks, so the hash does not depend on the threads.
+  const std::size_t blocks = (bytes + HashBlock - 1) / HashBlock;
+  std::vector<std::uint64_t> hashes(blocks);
+  dgmf::ForEachBlock(MakeSMPParallelFor(), blocks,
+    [&](std::size_t block)
+    {
+      const std::size_t begin = block * HashBlock;
+      hashes[block] = HashBlockBytes(p + begin, std::min(HashBlock, bytes - begin), seed + block);
+    });
+  std::uint64_t h = seed ^ (bytes * 0xc4ceb9fe1a85ec53ull);
+  for (const std::uint64_t blockHash : hashes)
+  {
+    h = (h ^ blockHash) * 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
   }
   return h;
 }

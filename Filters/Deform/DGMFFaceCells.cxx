@@ -36,8 +36,13 @@ VTKFaceCells::VTKFaceCells(vtkUnstructuredGrid* mesh, const std::vector<vtkIdTyp
       vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 3 &&
       CellShapeOf(type, shape, order))
     {
-      this->Shapes[type] = { order, dgmf::GetShapeFaceStream(shape),
-        dgmf::GetNumberOfCorners(shape) };
+      const int corners = dgmf::GetNumberOfCorners(shape);
+      bool inOrder = true;
+      for (int k = 0; k < corners; ++k)
+      {
+        inOrder = inOrder && order[k] == k;
+      }
+      this->Shapes[type] = { order, dgmf::GetShapeFaceStream(shape), corners, inOrder };
     }
   }
 }
@@ -128,6 +133,33 @@ const std::int64_t* VTKFaceCells::GetCornerFaces(
       ? (*this->Canonical)[static_cast<std::size_t>(point)]
       : point;
   }
+  return shape.Faces;
+}
+
+const std::int64_t* VTKFaceCells::GetCornerRun(std::size_t cell, std::size_t maxCells,
+  const void*& ids, std::size_t& count, int& cornersPerCell) const
+{
+  const unsigned char type = this->Types ? this->Types[cell] : 0;
+  const ShapeOfType& shape = this->Shapes[type];
+  if (!shape.Faces || !shape.InOrder || !this->Offsets64 || this->Canonical)
+  {
+    return nullptr;
+  }
+  // The run: the same type, each cell with exactly the shape's corners.
+  const vtkTypeInt64 corners = shape.Corners;
+  std::size_t end = cell;
+  while (end < cell + maxCells && this->Types[end] == type &&
+    this->Offsets64[end + 1] - this->Offsets64[end] == corners)
+  {
+    ++end;
+  }
+  if (end == cell)
+  {
+    return nullptr;
+  }
+  ids = this->Connectivity64 + this->Offsets64[cell];
+  count = end - cell;
+  cornersPerCell = shape.Corners;
   return shape.Faces;
 }
 

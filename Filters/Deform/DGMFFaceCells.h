@@ -35,6 +35,10 @@ public:
   void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override;
   const std::int64_t* GetCornerFaces(
     std::size_t cell, std::vector<std::int64_t>& corners) const override;
+  /// Runs of cells of one standard shape in 64-bit storage, with exactly its corners, in VTK's
+  /// corner order and without canonical ids (hexahedra, tetrahedra, wedges, pyramids, prisms).
+  const std::int64_t* GetCornerRun(std::size_t cell, std::size_t maxCells, const void*& ids,
+    std::size_t& count, int& cornersPerCell) const override;
 
   /**
    * Whether every 3D cell type of `types` (CellTypesPresent) has its faces here, i.e. no 3D cell
@@ -56,6 +60,7 @@ private:
     const int* Order = nullptr;
     const std::int64_t* Faces = nullptr; ///< null: not a standard 3D shape
     int Corners = 0;
+    bool InOrder = false; ///< the corners are VTK's points in their order (not pixel, voxel)
   };
   std::array<ShapeOfType, 256> Shapes;
 };

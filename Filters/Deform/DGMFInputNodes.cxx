@@ -331,14 +331,7 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
         is2D[type] =
           is2D[type] && vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 2;
       }
-      const unsigned char* types = mesh->GetCellTypesArray()->GetPointer(0);
-      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-      {
-        if (is2D[types[c]])
-        {
-          this->ClosingPolygons.push_back(c);
-        }
-      }
+      this->ClosingPolygons = CellsOfTypes(mesh, is2D);
     }
     this->ClosingCells.Set(cells, [&]() { return HashCells(mesh); });
   }

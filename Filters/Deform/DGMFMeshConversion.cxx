@@ -1,6 +1,7 @@
 #include "DGMFMeshConversion.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFSMPTools.h"
 
 #include "dgmf/HintStride.h"
 
@@ -20,6 +21,11 @@
 
 namespace dgmf_vtk
 {
+namespace
+{
+/// Cells per block of the scans of the cell types on the threads.
+constexpr std::size_t CellTypeBlock = std::size_t(1) << 18;
+} // namespace
 
 const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
 {
@@ -98,15 +104,56 @@ vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points)
 
 std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh)
 {
-  std::array<bool, 256> present{};
   vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
-  const vtkIdType n = types ? types->GetNumberOfValues() : 0;
+  const auto n = static_cast<std::size_t>(types ? types->GetNumberOfValues() : 0);
   const unsigned char* values = n > 0 ? types->GetPointer(0) : nullptr;
-  for (vtkIdType c = 0; c < n; ++c)
+  const std::size_t blocks = (n + CellTypeBlock - 1) / CellTypeBlock;
+  std::vector<std::array<bool, 256>> perBlock(blocks);
+  dgmf::ForEachBlock(MakeSMPParallelFor(), blocks,
+    [&](std::size_t block)
+    {
+      std::array<bool, 256> present{};
+      for (std::size_t c = block * CellTypeBlock; c < std::min(n, (block + 1) * CellTypeBlock); ++c)
+      {
+        present[values[c]] = true;
+      }
+      perBlock[block] = present;
+    });
+  std::array<bool, 256> present{};
+  for (const std::array<bool, 256>& block : perBlock)
   {
-    present[values[c]] = true;
+    for (int type = 0; type < 256; ++type)
+    {
+      present[type] = present[type] || block[type];
+    }
   }
   return present;
+}
+
+std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted)
+{
+  vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
+  const auto n = static_cast<std::size_t>(types ? types->GetNumberOfValues() : 0);
+  const unsigned char* values = n > 0 ? types->GetPointer(0) : nullptr;
+  const std::size_t blocks = (n + CellTypeBlock - 1) / CellTypeBlock;
+  std::vector<std::vector<vtkIdType>> perBlock(blocks);
+  dgmf::ForEachBlock(MakeSMPParallelFor(), blocks,
+    [&](std::size_t block)
+    {
+      for (std::size_t c = block * CellTypeBlock; c < std::min(n, (block + 1) * CellTypeBlock); ++c)
+      {
+        if (wanted[values[c]])
+        {
+          perBlock[block].push_back(static_cast<vtkIdType>(c));
+        }
+      }
+    });
+  std::vector<vtkIdType> cells;
+  for (const std::vector<vtkIdType>& block : perBlock)
+  {
+    cells.insert(cells.end(), block.begin(), block.end());
+  }
+  return cells;
 }
 
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)

@@ -38,11 +38,14 @@ bool CellShapeOf(int vtkCellType, dgmf::CellShape& shape, const int*& order);
 vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points);
 
 /**
- * Which VTK cell types `mesh` has (one flag per type value), from one pass over its types array
- * (vtkUnstructuredGrid::GetDistinctCellTypesArray takes a std::set insertion per cell: 0.5 s for
- * 8 million cells).
+ * Which VTK cell types `mesh` has (one flag per type value), from one pass over its types array on
+ * the threads (vtkUnstructuredGrid::GetDistinctCellTypesArray takes a std::set insertion per
+ * cell: 0.5 s for 8 million cells).
  */
 std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh);
+
+/// The ids of the cells whose type is `wanted`, in increasing order (one pass on the threads).
+std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted);
 
 /// The grid's cells in the corner order of the size-skew metric (the quality guard's input).
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh);

@@ -278,30 +278,13 @@ int vtkDGMFDeformFilter::RequestData(
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(outputObject);
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::SafeDownCast(inputObject);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::SafeDownCast(outputObject);
-  const dgmf_vtk::CompositeMesh* composite = nullptr;
-  vtkNew<vtkUnstructuredGrid> mergedOutput;
-  if (compositeInput && compositeOutput)
-  {
-    // Kept while the blocks are unchanged: a new motion does not merge them again.
-    const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
-    composite =
-      &this->Internal->Cache->Composite.Get(compositeInput, arrays.Displacement, arrays.Marker);
-    if (composite->GetNumberOfSkippedBlocks() > 0)
-    {
-      vtkWarningMacro(<< composite->GetNumberOfSkippedBlocks()
-                      << " blocks without explicit points (e.g. image data) are passed unchanged.");
-    }
-    input = composite->GetMergedMesh();
-    output = mergedOutput;
-    // The last output's blocks share the filter's output points: released, those can be reused.
-    compositeOutput->Initialize();
-  }
-  if (!input || !output)
+  const bool merged = compositeInput && compositeOutput;
+  if (!merged && (!input || !output))
   {
     vtkErrorMacro("The input must be a vtkUnstructuredGrid or a composite dataset of meshes.");
     return 0;
   }
-  if (!composite && !this->Internal->Boundaries.Empty())
+  if (!merged && !this->Internal->Boundaries.Empty())
   {
     vtkErrorMacro("Boundaries chosen by name need a composite input (a multiblock, as the "
                   "OpenFOAM, Exodus and CGNS readers give); for one unstructured grid, select a "
@@ -338,13 +321,37 @@ int vtkDGMFDeformFilter::RequestData(
       : dgmf_vtk::MotionTimeSteps(this, internal.Trajectory.get()).front();
   }
 
-  // 2-4. Check, deform and write the outputs, on the filter's threads (Execute); in a
-  //      distributed run every process takes part, and the quality summary is made global.
+  // The merge (1) and steps 2-4, check, deform and write the outputs (Execute), on the filter's
+  // threads; in a distributed run every process takes part, and the quality summary is made
+  // global.
+  const dgmf_vtk::CompositeMesh* composite = nullptr;
+  vtkNew<vtkUnstructuredGrid> mergedOutput;
   int status = 0;
   try
   {
-    dgmf_vtk::RunWithThreads(
-      this->NumberOfThreads, [&]() { status = this->Execute(input, output, composite); });
+    dgmf_vtk::RunWithThreads(this->NumberOfThreads,
+      [&]()
+      {
+        if (merged)
+        {
+          // Kept while the blocks are unchanged: a new motion does not merge them again.
+          const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
+          composite = &this->Internal->Cache->Composite.Get(
+            compositeInput, arrays.Displacement, arrays.Marker);
+          if (composite->GetNumberOfSkippedBlocks() > 0)
+          {
+            vtkWarningMacro(<< composite->GetNumberOfSkippedBlocks()
+                            << " blocks without explicit points (e.g. image data) are passed "
+                               "unchanged.");
+          }
+          input = composite->GetMergedMesh();
+          output = mergedOutput;
+          // The last output's blocks share the filter's output points: released, those can be
+          // reused.
+          compositeOutput->Initialize();
+        }
+        status = this->Execute(input, output, composite);
+      });
   }
   catch (const dgmf::Aborted& e)
   {
@@ -352,8 +359,11 @@ int vtkDGMFDeformFilter::RequestData(
   }
   catch (const std::bad_alloc&)
   {
-    vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
-                                                   << input->GetNumberOfCells() << " cells).");
+    // The merge itself may be what failed: then the counts are the blocks'.
+    const vtkIdType points =
+      input ? input->GetNumberOfPoints() : compositeInput->GetNumberOfPoints();
+    const vtkIdType cells = input ? input->GetNumberOfCells() : compositeInput->GetNumberOfCells();
+    vtkErrorMacro("Out of memory while deforming " << points << " points (" << cells << " cells).");
   }
   catch (const std::system_error& e) // a thread that cannot be started
   {

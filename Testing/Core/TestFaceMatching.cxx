@@ -4,6 +4,7 @@
 #include "dgmf/CellFaces.h"
 #include "dgmf/FaceMatching.h"
 #include "dgmf/FaceParity.h"
+#include "dgmf/SizeSkewQuality.h"
 
 #include "TwoThreadFor.h"
 
@@ -267,4 +268,135 @@ TEST(FaceParity, ACellWithTwoFacesOfTheSamePointsIsNotClosed)
   cells.Streams.push_back({ 2, 3, 0, 1, 2, 3, 2, 1, 0 });
   EXPECT_FALSE(dgmf::FacesPairUp(cells, 9, dgmf::SerialFor));
   EXPECT_EQ(dgmf::FindBoundaryFaces(cells, 3, dgmf::SerialFor).Size(), 2u);
+}
+
+namespace
+{
+/**
+ * The same cells as StreamCells, the first ones also given as runs of one shape whose corners
+ * follow one another (FaceCells::GetCornerRun), at most `RunLength` cells a run: the faces' parity
+ * must not depend on which way it reads them.
+ */
+class RunCells : public StreamCells
+{
+public:
+  dgmf::CellShape Shape = dgmf::CellShape::Hexahedron;
+  std::vector<std::int64_t> Corners; ///< the run cells' corners, cell after cell
+  std::size_t RunLength = 1000;
+
+  /// A cell of `Shape` with these corners, in the runs and as a stream.
+  void Add(const std::vector<std::int64_t>& corners)
+  {
+    const std::int64_t* local = dgmf::GetShapeFaceStream(this->Shape);
+    std::vector<std::int64_t> stream(local, local + dgmf::FaceStreamLength(local));
+    for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
+    {
+      for (std::int64_t k = 0; k < local[at]; ++k)
+      {
+        stream[at + 1 + k] = corners[static_cast<std::size_t>(local[at + 1 + k])];
+      }
+    }
+    this->Streams.push_back(stream);
+    this->Corners.insert(this->Corners.end(), corners.begin(), corners.end());
+  }
+
+  const std::int64_t* GetCornerRun(std::size_t cell, std::size_t maxCells, const void*& ids,
+    std::size_t& count, int& cornersPerCell) const override
+  {
+    const int n = dgmf::GetNumberOfCorners(this->Shape);
+    const std::size_t cells = this->Corners.size() / static_cast<std::size_t>(n);
+    if (cell >= cells)
+    {
+      return nullptr;
+    }
+    count = std::min({ maxCells, this->RunLength - cell % this->RunLength, cells - cell });
+    ids = this->Corners.data() + static_cast<std::size_t>(n) * cell;
+    cornersPerCell = n;
+    return dgmf::GetShapeFaceStream(this->Shape);
+  }
+};
+
+/// An n x n x n block of cubes, each as one hexahedron, two wedges or six tetrahedra (faces that
+/// match across the cubes), in runs.
+RunCells RunBlock(int n, dgmf::CellShape shape)
+{
+  RunCells cells;
+  cells.Shape = shape;
+  const auto id = [n](int i, int j, int k) -> std::int64_t
+  { return i + (n + 1) * (j + (n + 1) * k); };
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const std::int64_t c[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        if (shape == dgmf::CellShape::Hexahedron)
+        {
+          cells.Add({ c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7] });
+        }
+        else if (shape == dgmf::CellShape::Wedge)
+        {
+          cells.Add({ c[0], c[1], c[2], c[4], c[5], c[6] });
+          cells.Add({ c[0], c[2], c[3], c[4], c[6], c[7] });
+        }
+        else // the cube's six tetrahedra around its diagonal 0-6
+        {
+          for (const auto& t : { std::vector<int>{ 0, 1, 2, 6 }, { 0, 1, 5, 6 }, { 0, 3, 2, 6 },
+                 { 0, 3, 7, 6 }, { 0, 4, 5, 6 }, { 0, 4, 7, 6 } })
+          {
+            cells.Add({ c[t[0]], c[t[1]], c[t[2]], c[t[3]] });
+          }
+        }
+      }
+    }
+  }
+  return cells;
+}
+} // namespace
+
+TEST(FaceParity, RunsOfOneShapeGiveTheAnswerOfTheCellByCellReading)
+{
+  // Hexahedra and tetrahedra (their sizes fixed at compile time) and wedges (any shape), in runs
+  // that cross the pass's blocks of cells, on one and two threads.
+  for (const dgmf::CellShape shape :
+    { dgmf::CellShape::Hexahedron, dgmf::CellShape::Wedge, dgmf::CellShape::Tetra })
+  {
+    const int n = shape == dgmf::CellShape::Hexahedron ? 27 : 16;
+    const std::size_t points = static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1));
+    const RunCells block = RunBlock(n, shape);
+    StreamCells patches = WithPatches(block, points, true);
+    RunCells closed = block;
+    closed.Streams = patches.Streams; // the cells (as runs too), then their patches
+    const auto answers = [&](const RunCells& cells)
+    {
+      const StreamCells& streams = cells; // the same cells without runs
+      const bool expected = dgmf::FacesPairUp(streams, points, dgmf::SerialFor);
+      EXPECT_EQ(dgmf::FacesPairUp(cells, points, dgmf::SerialFor), expected);
+      EXPECT_EQ(dgmf::FacesPairUp(cells, points, dgmf_test::TwoThreadFor), expected);
+      return expected;
+    };
+    EXPECT_TRUE(answers(closed)) << "closed, shape " << static_cast<int>(shape);
+    EXPECT_FALSE(answers(block)) << "open";
+    RunCells changed = closed;
+    changed.Streams.pop_back(); // a patch fewer
+    EXPECT_FALSE(answers(changed));
+    changed = closed;
+    // An id out of range in a run (the cells' streams, not read for run cells, do not have it).
+    changed.Corners[changed.Corners.size() / 2] = static_cast<std::int64_t>(points);
+    EXPECT_FALSE(dgmf::FacesPairUp(changed, points, dgmf::SerialFor));
+    EXPECT_FALSE(dgmf::FacesPairUp(changed, points, dgmf_test::TwoThreadFor));
+  }
+}
+
+TEST(FaceParity, ACollapsedCellInARunIsNotClosed)
+{
+  // A hexahedron whose top is its bottom: its two caps are twin faces.
+  RunCells cells;
+  cells.Add({ 0, 1, 2, 3, 0, 1, 2, 3 });
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 4, dgmf::SerialFor));
+  const StreamCells& streams = cells;
+  EXPECT_FALSE(dgmf::FacesPairUp(streams, 4, dgmf::SerialFor));
 }

@@ -118,6 +118,34 @@ TEST(ContentKey, MatchesTheSameContentInAnyObjectAndNothingElse)
   EXPECT_EQ(dgmf_vtk::HashBytes(x, sizeof x), dgmf_vtk::HashBytes(x, sizeof x));
 }
 
+TEST(ContentKey, ALargeHashIsTheSameOnAnyNumberOfThreadsAndSeesEveryByte)
+{
+  // 10 MB: three blocks of the hash, the last one partial.
+  std::vector<std::uint8_t> bytes(10'000'003);
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+  {
+    bytes[i] = static_cast<std::uint8_t>((i * 0x9e3779b97f4a7c15ull) >> 56);
+  }
+  const auto hash = [&](int threads)
+  {
+    std::uint64_t h = 0;
+    dgmf_vtk::RunWithThreads(
+      threads, [&]() { h = dgmf_vtk::HashBytes(bytes.data(), bytes.size()); });
+    return h;
+  };
+  const std::uint64_t one = hash(1);
+  EXPECT_EQ(hash(2), one);
+  for (const std::size_t changed : { std::size_t(0), std::size_t(5'000'000), bytes.size() - 1 })
+  {
+    bytes[changed] ^= 1;
+    EXPECT_NE(hash(2), one) << "byte " << changed;
+    bytes[changed] ^= 1;
+  }
+  // Two blocks swapped: a different hash.
+  std::swap_ranges(bytes.begin(), bytes.begin() + (1 << 22), bytes.begin() + (1 << 22));
+  EXPECT_NE(hash(2), one);
+}
+
 TEST(ContentKey, AnObjectOnlyKeyMatchesThatObjectUnmodifiedWithoutHashing)
 {
   vtkNew<vtkDoubleArray> a;

@@ -39,6 +39,20 @@ public:
   {
     return nullptr;
   }
+  /**
+   * A run of cells from `cell` on (at most `maxCells`) of one standard shape whose corners' point
+   * ids (64-bit integers) lie one cell after the other in memory, in the shape's corner order:
+   * cell `cell + k` has the corners at ids + 8 * (k * cornersPerCell ...) bytes. Returns the
+   * shape's face stream over corner positions (as GetCornerFaces) and sets `ids`, `count` (>= 1)
+   * and `cornersPerCell`; nullptr (the default) when `cell` starts no such run. The same faces as
+   * GetCornerFaces, for readers that go through whole runs without a call per cell. Called
+   * concurrently.
+   */
+  virtual const std::int64_t* GetCornerRun(std::size_t /*cell*/, std::size_t /*maxCells*/,
+    const void*& /*ids*/, std::size_t& /*count*/, int& /*cornersPerCell*/) const
+  {
+    return nullptr;
+  }
 };
 
 /// The faces shared by two cells, each once, in increasing order of owner, then of face.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace dgmf
@@ -54,6 +55,103 @@ bool HasTwinFaces(std::vector<Hash128>& hashes)
   std::sort(hashes.begin(), hashes.end());
   return std::adjacent_find(hashes.begin(), hashes.end()) != hashes.end();
 }
+
+/// A point id's 128-bit mix.
+inline Hash128 PointHash(std::uint64_t p)
+{
+  return Hash128{ Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
+}
+
+/// The largest shape a run takes (hexagonal prism: 12 corners, 8 faces of up to 6 corners).
+constexpr int RunCorners = 12;
+constexpr int RunFaces = 8;
+constexpr int RunFaceSize = 6;
+
+/// A shape's face stream over its corners, decoded once per run.
+struct RunShape
+{
+  int Faces = 0;
+  int Size[RunFaces] = {};
+  int Corner[RunFaces][RunFaceSize] = {};
+
+  /// False when the shape is larger than a run takes (then cell by cell).
+  bool Decode(const std::int64_t* local, int corners)
+  {
+    if (corners > RunCorners || local[0] > RunFaces)
+    {
+      return false;
+    }
+    this->Faces = static_cast<int>(local[0]);
+    for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
+    {
+      if (local[at] <= 0 || local[at] > RunFaceSize)
+      {
+        return false;
+      }
+      this->Size[f] = static_cast<int>(local[at]);
+      for (std::int64_t k = 0; k < local[at]; ++k)
+      {
+        this->Corner[f][k] = static_cast<int>(local[at + 1 + k]);
+      }
+    }
+    return true;
+  }
+};
+
+/**
+ * The faces of `count` cells of one shape whose corners follow one another in `ids`, into `sum`;
+ * true when one of them refuses the answer (a point id out of range, twin faces). Each corner is
+ * mixed once, the faces are summed from the shape's table, as the cell-by-cell path does.
+ * `Corners`, `Faces` and `FaceSize` fixed at compile time for the usual shapes (0: the shape's).
+ */
+template <int Corners, int Faces, int FaceSize>
+bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int cornersPerCell,
+  std::size_t numberOfPoints, const Hash128* countHash, Hash128& sum)
+{
+  // The ids are read as bytes: their type is the caller's 64-bit integer (long or long long).
+  const auto* ids = static_cast<const unsigned char*>(idBytes);
+  const int corners = Corners > 0 ? Corners : cornersPerCell;
+  const int faces = Faces > 0 ? Faces : shape.Faces;
+  Hash128 cornerHash[RunCorners];
+  Hash128 faceHash[RunFaces];
+  for (std::size_t c = 0; c < count; ++c, ids += 8 * corners)
+  {
+    for (int k = 0; k < corners; ++k)
+    {
+      std::int64_t id;
+      std::memcpy(&id, ids + 8 * k, sizeof id);
+      if (id < 0 || static_cast<std::size_t>(id) >= numberOfPoints)
+      {
+        return true;
+      }
+      cornerHash[k] = PointHash(static_cast<std::uint64_t>(id));
+    }
+    for (int f = 0; f < faces; ++f)
+    {
+      const int size = FaceSize > 0 ? FaceSize : shape.Size[f];
+      Hash128 face = countHash[size];
+      for (int k = 0; k < size; ++k)
+      {
+        face.Low += cornerHash[shape.Corner[f][k]].Low;
+        face.High += cornerHash[shape.Corner[f][k]].High;
+      }
+      faceHash[f] = face;
+      sum.Low ^= face.Low;
+      sum.High ^= face.High;
+    }
+    for (int a = 1; a < faces; ++a)
+    {
+      for (int b = 0; b < a; ++b)
+      {
+        if (faceHash[a] == faceHash[b])
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
 } // namespace
 
 bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const ParallelFor& parallelFor)
@@ -85,8 +183,7 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           refuse = true;
           return Hash128();
         }
-        const auto p = static_cast<std::uint64_t>(id);
-        return Hash128{ Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
+        return PointHash(static_cast<std::uint64_t>(id));
       };
       // Each face of a stream whose ids `hashAt(id)` turns into hashes.
       const auto addFaces = [&](const std::int64_t* faceStream, const auto& hashAt)
@@ -117,6 +214,29 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
       const std::size_t end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
       for (std::size_t c = block * CellsPerBlock; c < end && !refuse; ++c)
       {
+        // A run of cells of one shape, their corners one after the other: without a call per
+        // cell (hexahedra and tetrahedra with their sizes fixed at compile time).
+        const void* ids = nullptr;
+        std::size_t count = 0;
+        int perCell = 0;
+        RunShape shape;
+        if (const std::int64_t* local = cells.GetCornerRun(c, end - c, ids, count, perCell))
+        {
+          if (count >= 1 && shape.Decode(local, perCell))
+          {
+            const bool hexahedra = perCell == 8 && shape.Faces == 6 &&
+              std::all_of(shape.Size, shape.Size + 6, [](int n) { return n == 4; });
+            const bool tetrahedra = perCell == 4 && shape.Faces == 4 &&
+              std::all_of(shape.Size, shape.Size + 4, [](int n) { return n == 3; });
+            refuse = hexahedra
+              ? AddRun<8, 6, 4>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum)
+              : tetrahedra
+              ? AddRun<4, 4, 3>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum)
+              : AddRun<0, 0, 0>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum);
+            c += count - 1;
+            continue;
+          }
+        }
         if (const std::int64_t* local = cells.GetCornerFaces(c, corners))
         {
           // A standard shape: each corner's hash once.
