@@ -131,22 +131,29 @@ NodeRoles AssignRoles(
   };
 
   const std::size_t n = static_cast<std::size_t>(mesh.GetMergedMesh()->GetNumberOfPoints());
-  std::vector<int> rank(n, None);
-  std::vector<std::int32_t> body(n, 0);
-  std::vector<std::int32_t> slipEntry(n, -1); // the slip entry of a node, or -2 on two planes
+  // Per node: its role's rank, and only where there are several bodies or slip entries, its body
+  // and its slip entry (the arrays are as large as the merged mesh: not made for nothing).
+  std::vector<std::uint8_t> rank(n, None);
+  std::vector<std::int32_t> body(selection.Moving.size() > 1 ? n : 0, 0);
+  // The slip entry of a node, or -2 on two planes.
+  std::vector<std::int32_t> slipEntry(selection.Slip.empty() ? 0 : n, -1);
   const auto mark = [&](std::size_t l, int role, std::int32_t bodyId, std::int32_t entry)
   {
-    for (vtkIdType node : leaves[l].NodeOf)
+    for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
     {
-      const auto i = static_cast<std::size_t>(node);
+      const auto i = static_cast<std::size_t>(leaves[l].Node(point));
       if (role == SlipRank)
       {
         slipEntry[i] = slipEntry[i] == -1 || slipEntry[i] == entry ? entry : -2;
       }
-      if (role > rank[i] || (role == MovingRank && rank[i] == MovingRank && body[i] == 0))
+      if (role > rank[i] ||
+        (role == MovingRank && rank[i] == MovingRank && !body.empty() && body[i] == 0))
       {
-        rank[i] = role;
-        body[i] = bodyId;
+        rank[i] = static_cast<std::uint8_t>(role);
+        if (!body.empty())
+        {
+          body[i] = bodyId;
+        }
       }
     }
   };
@@ -186,9 +193,14 @@ NodeRoles AssignRoles(
     }
     const auto onPlane = [&](double plane)
     {
-      return std::all_of(leaves[l].NodeOf.begin(), leaves[l].NodeOf.end(),
-        [&](vtkIdType node)
-        { return xyz[3 * static_cast<std::size_t>(node) + layers.Axis] == plane; });
+      for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
+      {
+        if (xyz[3 * static_cast<std::size_t>(leaves[l].Node(point)) + layers.Axis] != plane)
+        {
+          return false;
+        }
+      }
+      return true;
     };
     const bool inPlane = layers.Found() && (onPlane(layers.Low) || onPlane(layers.High));
     if (!inPlane)
@@ -198,30 +210,32 @@ NodeRoles AssignRoles(
   }
 
   NodeRoles roles;
-  roles.Kinds.assign(n, dgmf::NodeKind::Interior);
+  roles.Kinds.resize(n);
   roles.SlipNodes.resize(selection.Slip.size());
   roles.SlipNames = selection.Slip;
-  for (std::size_t i = 0; i < n; ++i)
+  const auto kindOf = [&](std::size_t i)
   {
-    if (rank[i] == SlipRank && slipEntry[i] == -2)
-    {
-      rank[i] = StaticRank; // on two slip planes: it cannot slide in both
-    }
     switch (rank[i])
     {
       case MovingRank:
-        roles.Kinds[i] = dgmf::NodeKind::MovingBoundary;
-        break;
+        return dgmf::NodeKind::MovingBoundary;
       case StaticRank:
-        roles.Kinds[i] = dgmf::NodeKind::StaticBoundary;
-        break;
+        return dgmf::NodeKind::StaticBoundary;
       case SlipRank:
-        roles.Kinds[i] = dgmf::NodeKind::SlipBoundary;
-        roles.SlipNodes[static_cast<std::size_t>(slipEntry[i])].push_back(
-          static_cast<std::int32_t>(i));
-        break;
+        // On two slip planes, a node cannot slide in both: static.
+        return slipEntry[i] == -2 ? dgmf::NodeKind::StaticBoundary : dgmf::NodeKind::SlipBoundary;
       default:
-        break;
+        return dgmf::NodeKind::Interior;
+    }
+  };
+  dgmf::ForEachIndex(MakeSMPParallelFor(), n, std::size_t(1) << 16,
+    [&](std::size_t i) { roles.Kinds[i] = kindOf(i); });
+  for (std::size_t i = 0; i < (selection.Slip.empty() ? 0 : n); ++i)
+  {
+    if (roles.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+    {
+      roles.SlipNodes[static_cast<std::size_t>(slipEntry[i])].push_back(
+        static_cast<std::int32_t>(i));
     }
   }
   if (selection.Moving.size() > 1)

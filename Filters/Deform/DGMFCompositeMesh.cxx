@@ -6,6 +6,7 @@
 #include "DGMFSMPTools.h"
 
 #include "dgmf/CoincidentPoints.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkArrayDispatch.h"
@@ -30,6 +31,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <string>
 
 namespace dgmf_vtk
@@ -73,13 +75,89 @@ std::map<unsigned int, std::string> PartitionNames(vtkCompositeDataSet* input)
   }
   return names;
 }
-/// The tuples `nodeOf[i]` of `values`, in a new array of the same type and name.
-vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* values, const std::vector<vtkIdType>& nodeOf)
+/**
+ * The merged node of every point, numbered in the order the nodes are first met, from each
+ * point's first coincident point (`first`, FirstCoincidentPoints); `nodes` gets their number. In
+ * fixed blocks on the threads: the first points of each block counted, numbered from the counts
+ * before, then every other point given its first point's node.
+ */
+dgmf::UninitializedVector<vtkIdType> NumberNodes(
+  const std::vector<std::int64_t>& first, vtkIdType& nodes, const dgmf::ParallelFor& parallelFor)
+{
+  constexpr std::size_t block = std::size_t(1) << 16;
+  const std::size_t total = first.size();
+  const std::size_t blocks = (total + block - 1) / block;
+  std::vector<vtkIdType> before(blocks + 1, 0);
+  dgmf::ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
+    {
+      vtkIdType count = 0;
+      for (std::size_t i = b * block; i < std::min(total, (b + 1) * block); ++i)
+      {
+        count += static_cast<std::size_t>(first[i]) == i ? 1 : 0;
+      }
+      before[b + 1] = count;
+    });
+  std::partial_sum(before.begin(), before.end(), before.begin());
+  nodes = before.back();
+  dgmf::UninitializedVector<vtkIdType> nodeOfPoint(total);
+  dgmf::ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
+    {
+      vtkIdType next = before[b];
+      for (std::size_t i = b * block; i < std::min(total, (b + 1) * block); ++i)
+      {
+        if (static_cast<std::size_t>(first[i]) == i)
+        {
+          nodeOfPoint[i] = next++;
+        }
+      }
+    });
+  dgmf::ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
+    {
+      for (std::size_t i = b * block; i < std::min(total, (b + 1) * block); ++i)
+      {
+        const auto f = static_cast<std::size_t>(first[i]);
+        if (f != i)
+        {
+          nodeOfPoint[i] = nodeOfPoint[f]; // a first point, numbered above
+        }
+      }
+    });
+  return nodeOfPoint;
+}
+
+/// Whether nodes[i] == i for every i < n (fixed blocks on the threads).
+bool IsIdentity(const vtkIdType* nodes, vtkIdType n, const dgmf::ParallelFor& parallelFor)
+{
+  constexpr vtkIdType block = vtkIdType(1) << 16;
+  const auto blocks = static_cast<std::size_t>((n + block - 1) / block);
+  std::vector<std::uint8_t> identity(blocks, 1);
+  dgmf::ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
+    {
+      const auto begin = static_cast<vtkIdType>(b) * block;
+      for (vtkIdType i = begin; i < std::min(n, begin + block); ++i)
+      {
+        if (nodes[i] != i)
+        {
+          identity[b] = 0;
+          return;
+        }
+      }
+    });
+  return std::all_of(identity.begin(), identity.end(), [](std::uint8_t same) { return same != 0; });
+}
+
+/// The tuples of `values` at the leaf's nodes (leaf.Node(i)), in a new array of the same type and
+/// name.
+vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* values, const CompositeMesh::Leaf& leaf)
 {
   vtkSmartPointer<vtkDataArray> gathered = vtk::TakeSmartPointer(values->NewInstance());
   gathered->SetName(values->GetName());
   gathered->SetNumberOfComponents(values->GetNumberOfComponents());
-  const auto n = static_cast<vtkIdType>(nodeOf.size());
+  const vtkIdType n = leaf.NumberOfPoints;
   AllocateTuples(gathered, n);
   auto* from = vtkDoubleArray::SafeDownCast(values);
   auto* to = vtkDoubleArray::SafeDownCast(gathered);
@@ -90,14 +168,14 @@ vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* values, const std::vector<v
     double* target = to->GetPointer(0);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      std::memcpy(target + m * i, source + m * nodeOf[static_cast<std::size_t>(i)],
-        static_cast<std::size_t>(m) * sizeof(double));
+      std::memcpy(
+        target + m * i, source + m * leaf.Node(i), static_cast<std::size_t>(m) * sizeof(double));
     }
     return gathered;
   }
   for (vtkIdType i = 0; i < n; ++i)
   {
-    gathered->SetTuple(i, nodeOf[static_cast<std::size_t>(i)], values);
+    gathered->SetTuple(i, leaf.Node(i), values);
   }
   return gathered;
 }
@@ -120,7 +198,7 @@ vtkSmartPointer<vtkDataArray> Range(vtkDataArray* values, vtkIdType first, vtkId
  */
 struct MergeNodeValues
 {
-  const std::vector<vtkIdType>& NodeOf;
+  const CompositeMesh::Leaf& Leaf;
   double* Values;
   bool IsMarker;
 
@@ -131,7 +209,7 @@ struct MergeNodeValues
     const int m = source->GetNumberOfComponents();
     for (vtkIdType i = 0; i < tuples.size(); ++i)
     {
-      double* target = this->Values + this->NodeOf[static_cast<std::size_t>(i)] * m;
+      double* target = this->Values + this->Leaf.Node(i) * m;
       const auto tuple = tuples[i];
       if (this->IsMarker)
       {
@@ -218,25 +296,20 @@ CompositeMesh::CompositeMesh(
 
   // 2. Points at the same place are one node, numbered in the order they are first met.
   const std::vector<std::int64_t> first = dgmf::FirstCoincidentPoints(pieces, parallelFor);
-  std::vector<vtkIdType> nodeOfPoint(total);
   vtkIdType nodes = 0;
-  for (std::size_t i = 0; i < total; ++i)
-  {
-    const auto f = static_cast<std::size_t>(first[i]);
-    nodeOfPoint[i] = f == i ? nodes++ : nodeOfPoint[f];
-  }
+  dgmf::UninitializedVector<vtkIdType> nodeOfPoint = NumberNodes(first, nodes, parallelFor);
   for (std::size_t l = 0; l < blocks.size(); ++l)
   {
     Leaf& leaf = this->Leaves[l];
-    leaf.NodeOf.assign(nodeOfPoint.begin() + static_cast<std::ptrdiff_t>(firstPoint[l]),
-      nodeOfPoint.begin() + static_cast<std::ptrdiff_t>(firstPoint[l + 1]));
-    leaf.SameNumbering = true;
-    for (std::size_t i = 0; i < leaf.NodeOf.size() && leaf.SameNumbering; ++i)
+    const vtkIdType* nodeOf = nodeOfPoint.data() + firstPoint[l];
+    leaf.NumberOfPoints = static_cast<vtkIdType>(firstPoint[l + 1] - firstPoint[l]);
+    leaf.SameNumbering = IsIdentity(nodeOf, leaf.NumberOfPoints, parallelFor);
+    if (!leaf.SameNumbering)
     {
-      leaf.SameNumbering = leaf.NodeOf[i] == static_cast<vtkIdType>(i);
+      leaf.NodeOf.assign(nodeOf, nodeOf + leaf.NumberOfPoints);
     }
   }
-  nodeOfPoint = std::vector<vtkIdType>();
+  nodeOfPoint = dgmf::UninitializedVector<vtkIdType>();
 
   // 3. The merged points: those of a leaf that has them all in their order (a CFD reader's
   //    volume, as a rule), shared; else the points where their nodes are first met.
@@ -294,7 +367,7 @@ CompositeMesh::CompositeMesh(
       }
       if (source->GetNumberOfComponents() == merged->GetNumberOfComponents())
       {
-        MergeNodeValues worker{ this->Leaves[l].NodeOf, merged->GetPointer(0), name == markerName };
+        MergeNodeValues worker{ this->Leaves[l], merged->GetPointer(0), name == markerName };
         if (!vtkArrayDispatch::Dispatch::Execute(source, worker))
         {
           worker(source); // an array type outside the dispatch list
@@ -313,7 +386,7 @@ CompositeMesh::CompositeMesh(
   {
     Leaf& leaf = this->Leaves[l];
     leaf.FirstCell = cells.NumberOfCells;
-    leaf.CellDimension = cells.Append(blocks[l], leaf.NodeOf, leaf.SameNumbering);
+    leaf.CellDimension = cells.Append(blocks[l], leaf);
     leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
   }
   cells.SetOn(this->Merged);
@@ -354,7 +427,7 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     auto* source = vtkPointSet::SafeDownCast(block);
     vtkSmartPointer<vtkPointSet> copy = vtk::TakeSmartPointer(source->NewInstance());
     copy->ShallowCopy(source);
-    const auto n = static_cast<vtkIdType>(leaf.NodeOf.size());
+    const vtkIdType n = leaf.NumberOfPoints;
     // A leaf whose points are the merged grid's, in its order (the volume of a CFD reader's
     // output, as a rule), shares the deformed points and arrays; the others get copies.
     const bool allPoints = leaf.SameNumbering && n == deformed->GetNumberOfPoints();
@@ -366,14 +439,14 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     else
     {
       vtkNew<vtkPoints> points;
-      points->SetData(Gathered(deformed->GetPoints()->GetData(), leaf.NodeOf));
+      points->SetData(Gathered(deformed->GetPoints()->GetData(), leaf));
       copy->SetPoints(points);
     }
     for (const std::string& name : pointArrays)
     {
       if (vtkDataArray* result = deformed->GetPointData()->GetArray(name.c_str()))
       {
-        copy->GetPointData()->AddArray(allPoints ? result : Gathered(result, leaf.NodeOf).Get());
+        copy->GetPointData()->AddArray(allPoints ? result : Gathered(result, leaf).Get());
       }
     }
     for (const std::string& name : cellArrays)

@@ -62,12 +62,22 @@ public:
   /// A leaf of the input merged into the grid.
   struct Leaf
   {
-    unsigned int FlatIndex;        ///< the leaf's flat index in the input
-    std::string Name;              ///< its block name (vtkCompositeDataSet::NAME), or ""
-    std::vector<vtkIdType> NodeOf; ///< merged node of each of the leaf's points
-    vtkIdType FirstCell, Cells;    ///< the leaf's cells in the merged grid
-    int CellDimension;             ///< largest dimension of its cells (0 without cells)
-    bool SameNumbering;            ///< NodeOf[i] == i for every point
+    unsigned int FlatIndex; ///< the leaf's flat index in the input
+    std::string Name;       ///< its block name (vtkCompositeDataSet::NAME), or ""
+    /// Merged node of each of the leaf's points; empty when SameNumbering (point i is node i:
+    /// a CFD volume, as a rule, whose identity map would take 8 bytes a node). Read it through
+    /// Node().
+    std::vector<vtkIdType> NodeOf;
+    vtkIdType NumberOfPoints;   ///< the leaf's points
+    vtkIdType FirstCell, Cells; ///< the leaf's cells in the merged grid
+    int CellDimension;          ///< largest dimension of its cells (0 without cells)
+    bool SameNumbering;         ///< point i is merged node i, for every point
+
+    /// The merged node of the leaf's point `i`.
+    vtkIdType Node(vtkIdType i) const
+    {
+      return this->SameNumbering ? i : this->NodeOf[static_cast<std::size_t>(i)];
+    }
   };
 
   /// The merged leaves, in the input's order.

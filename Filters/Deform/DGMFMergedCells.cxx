@@ -70,8 +70,7 @@ MergedCells::MergedCells(vtkIdType cells, vtkIdType ids)
   this->Offsets->SetValue(0, 0);
 }
 
-int MergedCells::Append(
-  vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering)
+int MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
   if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
@@ -79,10 +78,10 @@ int MergedCells::Append(
     const std::array<bool, 256> present = CellTypesPresent(grid);
     if (!present[VTK_POLYHEDRON])
     {
-      return this->AppendGrid(grid, nodeOf, sameNumbering, present);
+      return this->AppendGrid(grid, leaf, present);
     }
   }
-  return this->AppendCellByCell(block, nodeOf);
+  return this->AppendCellByCell(block, leaf);
 }
 
 void MergedCells::SetOn(vtkUnstructuredGrid* grid)
@@ -105,8 +104,8 @@ void MergedCells::SetOn(vtkUnstructuredGrid* grid)
   grid->SetCells(this->Types, cells, idArray(this->FaceLocations), idArray(this->Faces));
 }
 
-int MergedCells::AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
-  bool sameNumbering, const std::array<bool, 256>& present)
+int MergedCells::AppendGrid(
+  vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf, const std::array<bool, 256>& present)
 {
   const vtkIdType cells = grid->GetNumberOfCells();
   vtkCellArray* source = grid->GetCells();
@@ -117,12 +116,12 @@ int MergedCells::AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdTy
   vtkIdType* connectivity = this->Connectivity->GetPointer(this->NumberOfIds);
   const vtkIdType base = this->NumberOfIds;
   const auto shift = [base](vtkIdType offset) { return base + offset; };
-  const auto renumber = [&nodeOf](vtkIdType id) { return nodeOf[static_cast<std::size_t>(id)]; };
+  const auto renumber = [&leaf](vtkIdType id) { return leaf.Node(id); };
   const auto same = [](vtkIdType id) { return id; }; // a plain copy (the volume, as a rule)
   if (source->IsStorage64Bit())
   {
     CopyMapped(source->GetOffsetsArray64(), 0, cells + 1, offsets, shift);
-    if (sameNumbering)
+    if (leaf.SameNumbering)
     {
       CopyMapped(source->GetConnectivityArray64(), 0, ids, connectivity, same);
     }
@@ -149,7 +148,7 @@ int MergedCells::AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdTy
   return dimension;
 }
 
-int MergedCells::AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf)
+int MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
 {
   int dimension = 0;
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
@@ -178,7 +177,7 @@ int MergedCells::AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdTyp
     }
     for (vtkIdType k = 0; k < count; ++k)
     {
-      connectivity[this->NumberOfIds++] = nodeOf[static_cast<std::size_t>(points[k])];
+      connectivity[this->NumberOfIds++] = leaf.Node(points[k]);
     }
     const int type = block->GetCellType(c);
     types[this->NumberOfCells++] = static_cast<unsigned char>(type);
@@ -199,7 +198,7 @@ int MergedCells::AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdTyp
         this->Faces.push_back(faceCount);
         for (vtkIdType m = 0; m < faceCount; ++m, ++k)
         {
-          this->Faces.push_back(nodeOf[static_cast<std::size_t>(stream[k])]);
+          this->Faces.push_back(leaf.Node(stream[k]));
         }
       }
     }

@@ -6,6 +6,8 @@
 #ifndef DGMFMergedCells_h
 #define DGMFMergedCells_h
 
+#include "DGMFCompositeMesh.h"
+
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkType.h"
@@ -34,9 +36,9 @@ public:
   /// Room for `cells` cells of `ids` point ids in all (CountCells over the blocks).
   MergedCells(vtkIdType cells, vtkIdType ids);
 
-  /// Appends the cells of `block`, their points renumbered by `nodeOf` (`sameNumbering`: nodeOf
-  /// is the identity); returns the largest dimension of its cells.
-  int Append(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf, bool sameNumbering);
+  /// Appends the cells of `block`, their points renumbered to the merged nodes of `leaf`
+  /// (CompositeMesh::Leaf::Node); returns the largest dimension of its cells.
+  int Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 
   /// Gives `grid` the cells.
   void SetOn(vtkUnstructuredGrid* grid);
@@ -46,9 +48,9 @@ public:
 
 private:
   /// A grid without polyhedra: its types, offsets and connectivity array by array.
-  int AppendGrid(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& nodeOf,
-    bool sameNumbering, const std::array<bool, 256>& present);
-  int AppendCellByCell(vtkPointSet* block, const std::vector<vtkIdType>& nodeOf);
+  int AppendGrid(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf,
+    const std::array<bool, 256>& present);
+  int AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 
   vtkNew<vtkUnsignedCharArray> Types;
   vtkNew<vtkIdTypeArray> Offsets;

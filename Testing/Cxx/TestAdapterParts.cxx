@@ -472,7 +472,7 @@ TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChan
   right->GetPoints()->Modified();
   const dgmf_vtk::CompositeMesh& moved = cache.Get(blocks, "", "BoundaryMarker");
   EXPECT_FALSE(cache.WasReused());
-  const vtkIdType node = moved.GetLeaves()[1].NodeOf[5];
+  const vtkIdType node = moved.GetLeaves()[1].Node(5);
   EXPECT_EQ(moved.GetMergedMesh()->GetPoint(node)[1], 1.5);
 
   // A marker value changed in place, another selected array, a block replaced: merged again.
