@@ -420,7 +420,8 @@ int main(int argc, char* argv[])
           dgmf_bench::CommandTimes times;
           try
           {
-            times = dgmf_bench::TimeWholeCommand(mesh, command, work.string(), threadCount);
+            times =
+              dgmf_bench::TimeWholeCommand(mesh, command, work.string(), threadCount, repeats);
           }
           catch (const std::exception& e)
           {

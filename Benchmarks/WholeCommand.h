@@ -24,12 +24,16 @@ struct CommandTimes
 
 /**
  * Writes `mesh` to `directory`/mesh.vtu (appended raw, LZ4: the command's own default; not
- * timed), then runs `command` (dgmf-deform) on it with the benchmark's motion and `threads`
- * threads, writing `directory`/deformed.vtu, and returns its times. Throws std::runtime_error when
- * the command fails or prints no timings.
+ * timed), then runs `command` (dgmf-deform) on it `repeats` times with the benchmark's motion and
+ * `threads` threads, writing `directory`/deformed.vtu, and returns the times of the run whose wall
+ * time is the median. Throws std::runtime_error when the command fails or prints no timings.
+ *
+ * One run alone is not representative on a virtual machine: the first command after the
+ * benchmark has freed gigabytes took twice as long on this project's VM (its page faults, 5.4
+ * s of system time against 2.2 s in the next run), the host providing the freed memory again.
  */
-CommandTimes TimeWholeCommand(
-  vtkUnstructuredGrid* mesh, const std::string& command, const std::string& directory, int threads);
+CommandTimes TimeWholeCommand(vtkUnstructuredGrid* mesh, const std::string& command,
+  const std::string& directory, int threads, int repeats);
 
 } // namespace dgmf_bench
 
