@@ -163,7 +163,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   if (hintStride == 0 &&
     !IsNumberingCoherent(*this->Graph, points, this->Kinds.data(), numberOfNodes))
   {
-    const std::vector<std::int32_t> order =
+    const UninitializedVector<std::int32_t> order =
       SpatialLocationOrder(*this->Graph, points, this->Kinds.data(), numberOfNodes, parallelFor);
     // Each block gathers its nodes' coordinates, is located as one contiguous run, and scatters
     // its results: the nodes' own arrays are read and written with independent accesses, which
@@ -200,7 +200,16 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           }
           const auto node = static_cast<std::size_t>(nodes[k]);
           this->NodeElement[node] = element[k];
-          std::copy_n(w.data() + m * k, m, this->Weights.data() + m * node);
+          // Written out: a copy of a run-time length is a memmove call per node.
+          const double* from = w.data() + m * k;
+          double* to = this->Weights.data() + m * node;
+          to[0] = from[0];
+          to[1] = from[1];
+          to[2] = from[2];
+          if (m == 4)
+          {
+            to[3] = from[3];
+          }
         }
       });
     for (const NodeLocationCounts& count : counts)

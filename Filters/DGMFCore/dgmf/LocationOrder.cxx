@@ -117,12 +117,14 @@ struct GridPosition
  * blocks of keys in parallel, then each block writes its keys from its own offsets, so the result
  * does not depend on the threads.
  */
-void RadixSort(std::vector<std::uint64_t>& keys, int low, int high, const ParallelFor& parallelFor)
+void RadixSort(
+  UninitializedVector<std::uint64_t>& keys, int low, int high, const ParallelFor& parallelFor)
 {
   const std::size_t blocks =
     std::max<std::size_t>(1, std::min<std::size_t>(64, keys.size() / KeyBlock));
   const std::size_t perBlock = (keys.size() + blocks - 1) / blocks;
-  std::vector<std::uint64_t> scratch(keys.size());
+  // Not zeroed: every pass writes all of it (its pages are first touched there, on the threads).
+  UninitializedVector<std::uint64_t> scratch(keys.size());
   std::vector<std::size_t> offsets;
   for (int first = low; first < high; first += DigitBits)
   {
@@ -192,8 +194,9 @@ bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const
   return 2 * near >= pairs;
 }
 
-std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
-  const NodeKind* kinds, std::size_t numberOfNodes, const ParallelFor& parallelFor)
+UninitializedVector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph,
+  const double* points, const NodeKind* kinds, std::size_t numberOfNodes,
+  const ParallelFor& parallelFor)
 {
   const Grid grid = graph.GetSeedGridGeometry();
   const int dimension = graph.GetDimension();
@@ -228,7 +231,7 @@ std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const
       offsets[b + 1] = interior;
     });
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-  std::vector<std::uint64_t> keys(offsets.back());
+  UninitializedVector<std::uint64_t> keys(offsets.back()); // every key written below
   ForEachBlock(parallelFor, blocks,
     [&](std::size_t b)
     {
@@ -246,7 +249,7 @@ std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const
       }
     });
   RadixSort(keys, SubShift, RankShift + rankBits, parallelFor);
-  std::vector<std::int32_t> order(keys.size());
+  UninitializedVector<std::int32_t> order(keys.size());
   ForEachIndex(parallelFor, keys.size(), KeyBlock,
     [&](std::size_t k) { order[k] = static_cast<std::int32_t>(keys[k] & NodeMask); });
   return order;

@@ -7,6 +7,7 @@
 #define dgmf_LocationOrder_h
 
 #include "dgmf/DelaunayGraph.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
 
@@ -39,8 +40,9 @@ constexpr std::size_t CoherenceSamples = 4096;
  * order; a radix sort of the keys, O(numberOfNodes + cells log cells). The order depends only on
  * the graph and the points.
  */
-std::vector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph, const double* points,
-  const NodeKind* kinds, std::size_t numberOfNodes, const ParallelFor& parallelFor);
+UninitializedVector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph,
+  const double* points, const NodeKind* kinds, std::size_t numberOfNodes,
+  const ParallelFor& parallelFor);
 
 } // namespace dgmf
 
