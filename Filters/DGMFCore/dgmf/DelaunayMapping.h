@@ -35,8 +35,10 @@ namespace dgmf
  * seed element, with CGAL as the exact fallback. A numbering without spatial coherence
  * (IsNumberingCoherent) is located in a spatial order instead (SpatialLocationOrder). The runs of a
  * block walk in turn so that their cache misses overlap. With a hint stride of at least a block,
- * the nodes go in waves of one stride, each cut into WavePieces blocks. Because blocks, runs and
- * waves are fixed, the result does not depend on the number of threads.
+ * the nodes go in waves of one stride, each cut into WavePieces blocks; a node's stride neighbour
+ * is at its place in the wave before, so the same piece of every wave (a column) is one task, with
+ * no wait between the waves. Because blocks, runs and waves are fixed, the result does not depend
+ * on the number of threads.
  *
  * Coincident boundary nodes share one graph vertex. Such a vertex is moving when any of its nodes
  * is moving; its shape deformation (DGMF2) is that of its first moving node. Each node keeps its
