@@ -49,7 +49,7 @@ std::uint64_t HashBlockBytes(const unsigned char* p, std::size_t bytes, std::uin
 }
 } // namespace
 
-std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
+std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed, bool onThreads)
 {
   const auto* p = static_cast<const unsigned char*>(data);
   if (bytes <= HashBlock)
@@ -59,7 +59,7 @@ std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed)
   // Fixed blocks, so the hash does not depend on the threads.
   const std::size_t blocks = (bytes + HashBlock - 1) / HashBlock;
   std::vector<std::uint64_t> hashes(blocks);
-  dgmf::ForEachBlock(MakeSMPParallelFor(), blocks,
+  dgmf::ForEachBlock(onThreads ? MakeSMPParallelFor() : dgmf::ParallelFor(dgmf::SerialFor), blocks,
     [&](std::size_t block)
     {
       const std::size_t begin = block * HashBlock;

@@ -19,12 +19,18 @@ class vtkUnstructuredGrid;
 namespace dgmf_vtk
 {
 
+/// HashBytes' seed when none is given.
+constexpr std::uint64_t DefaultHashSeed = 0x9e3779b97f4a7c15ull;
+
 /// A fast 64-bit hash of raw memory (not cryptographic: it tells equal content from changed).
 /// Four independent lanes of 8-byte words, so the multiplications overlap (200 MB in ~20 ms on
 /// one thread), in blocks of 4 MB hashed on the vtkSMPTools threads and combined in order (the
 /// same value for any number of threads).
+/// `onThreads` false: on the calling thread only (for a caller that is itself one of the
+/// threads' tasks: VTK 9.2 runs nested loops on new threads, beside the other tasks). The same
+/// value either way.
 std::uint64_t HashBytes(
-  const void* data, std::size_t bytes, std::uint64_t seed = 0x9e3779b97f4a7c15ull);
+  const void* data, std::size_t bytes, std::uint64_t seed = DefaultHashSeed, bool onThreads = true);
 
 /// HashBytes of an array's values, seeded with its value type.
 std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0);

@@ -14,9 +14,11 @@ namespace dgmf_vtk
 
 namespace
 {
-std::uint64_t HashPoints(const dgmf::DeformationProblem& problem)
+/// `onThreads` false inside a side job (already one of the threads' tasks).
+std::uint64_t HashPoints(const dgmf::DeformationProblem& problem, bool onThreads)
 {
-  return HashBytes(problem.Points, 3 * problem.NumberOfNodes * sizeof(double));
+  return HashBytes(
+    problem.Points, 3 * problem.NumberOfNodes * sizeof(double), DefaultHashSeed, onThreads);
 }
 } // namespace
 
@@ -27,7 +29,7 @@ bool MappingCache::Matches(const dgmf::DeformationProblem& problem, vtkDataArray
     this->Mapping->GetNumberOfNodes() == n &&
     std::memcmp(problem.Kinds, this->Mapping->GetNodeKinds().data(), n * sizeof(dgmf::NodeKind)) ==
     0 &&
-    this->Points.Matches(pointsArray, [&]() { return HashPoints(problem); });
+    this->Points.Matches(pointsArray, [&]() { return HashPoints(problem, true); });
 }
 
 const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem& problem,
@@ -40,7 +42,7 @@ const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem&
   // the list: a single job of 0.02 s at 8.26M nodes, it left a thread idle when it came last.
   std::uint64_t pointsHash = 0;
   dgmf::DelaunayGraph::SideJobs jobs;
-  jobs.emplace_back([&pointsHash, &problem]() { pointsHash = HashPoints(problem); });
+  jobs.emplace_back([&pointsHash, &problem]() { pointsHash = HashPoints(problem, false); });
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
   this->Mapping = std::make_unique<dgmf::DelaunayMapping>(problem.Dimension, problem.Points,
     problem.NumberOfNodes, problem.Kinds, parallelFor, hintStride, jobs);
