@@ -326,31 +326,49 @@ int vtkDGMFDeformFilter::RequestData(
   // global.
   const dgmf_vtk::CompositeMesh* composite = nullptr;
   vtkNew<vtkUnstructuredGrid> mergedOutput;
+  vtkNew<vtkUnstructuredGrid> noMesh; // a process whose merge failed takes part with it
+  if (merged)
+  {
+    output = mergedOutput;
+  }
   int status = 0;
   try
   {
     dgmf_vtk::RunWithThreads(this->NumberOfThreads,
       [&]()
       {
+        std::string mergeFailure;
         if (merged)
         {
-          // Kept while the blocks are unchanged: a new motion does not merge them again.
-          const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
-          composite = &this->Internal->Cache->Composite.Get(
-            compositeInput, arrays.Displacement, arrays.Marker);
-          if (composite->GetNumberOfSkippedBlocks() > 0)
+          // Kept while the blocks are unchanged: a new motion does not merge them again. In a
+          // distributed run a failure here must still reach the other processes' agreement.
+          try
+          {
+            const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
+            composite = &this->Internal->Cache->Composite.Get(
+              compositeInput, arrays.Displacement, arrays.Marker);
+          }
+          catch (const std::bad_alloc&)
+          {
+            mergeFailure = "Out of memory while merging the input's blocks (" +
+              std::to_string(compositeInput->GetNumberOfPoints()) + " points).";
+          }
+          catch (const std::exception& e)
+          {
+            mergeFailure = e.what();
+          }
+          if (composite && composite->GetNumberOfSkippedBlocks() > 0)
           {
             vtkWarningMacro(<< composite->GetNumberOfSkippedBlocks()
                             << " blocks without explicit points (e.g. image data) are passed "
                                "unchanged.");
           }
-          input = composite->GetMergedMesh();
-          output = mergedOutput;
+          input = composite ? composite->GetMergedMesh() : noMesh.Get();
           // The last output's blocks share the filter's output points: released, those can be
           // reused.
           compositeOutput->Initialize();
         }
-        status = this->Execute(input, output, composite);
+        status = this->Execute(input, output, composite, mergeFailure);
       });
   }
   catch (const dgmf::Aborted& e)
@@ -359,11 +377,8 @@ int vtkDGMFDeformFilter::RequestData(
   }
   catch (const std::bad_alloc&)
   {
-    // The merge itself may be what failed: then the counts are the blocks'.
-    const vtkIdType points =
-      input ? input->GetNumberOfPoints() : compositeInput->GetNumberOfPoints();
-    const vtkIdType cells = input ? input->GetNumberOfCells() : compositeInput->GetNumberOfCells();
-    vtkErrorMacro("Out of memory while deforming " << points << " points (" << cells << " cells).");
+    vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
+                                                   << input->GetNumberOfCells() << " cells).");
   }
   catch (const std::system_error& e) // a thread that cannot be started
   {
@@ -397,8 +412,8 @@ int vtkDGMFDeformFilter::RequestData(
   return status;
 }
 
-int vtkDGMFDeformFilter::Execute(
-  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, const dgmf_vtk::CompositeMesh* composite)
+int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
+  const dgmf_vtk::CompositeMesh* composite, const std::string& failure)
 {
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds =
@@ -420,8 +435,10 @@ int vtkDGMFDeformFilter::Execute(
     options.Dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
   }
   dgmf_vtk::InputNodes nodes;
-  const std::string error = dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
-    this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
+  const std::string error = !failure.empty()
+    ? failure
+    : dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
+        this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {

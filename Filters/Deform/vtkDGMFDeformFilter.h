@@ -598,8 +598,10 @@ private:
   vtkDGMFDeformFilter(const vtkDGMFDeformFilter&) = delete;
   void operator=(const vtkDGMFDeformFilter&) = delete;
 
+  /// Steps 2-4 on the merged or given grid; `failure`, when not empty, is an error of the merge
+  /// (this process then fails, and in a distributed run every process with it).
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
-    const dgmf_vtk::CompositeMesh* composite);
+    const dgmf_vtk::CompositeMesh* composite, const std::string& failure);
 
   struct Internals; ///< the caches (graph, r and f, boundary, output points) and body motions
   std::unique_ptr<Internals> Internal;

@@ -372,7 +372,7 @@ TEST(FaceParity, RunsOfOneShapeGiveTheAnswerOfTheCellByCellReading)
     closed.Streams = patches.Streams; // the cells (as runs too), then their patches
     const auto answers = [&](const RunCells& cells)
     {
-      const StreamCells& streams = cells; // the same cells without runs
+      const StreamCells streams = cells; // the same cells, sliced: without runs
       const bool expected = dgmf::FacesPairUp(streams, points, dgmf::SerialFor);
       EXPECT_EQ(dgmf::FacesPairUp(cells, points, dgmf::SerialFor), expected);
       EXPECT_EQ(dgmf::FacesPairUp(cells, points, dgmf_test::TwoThreadFor), expected);
@@ -391,12 +391,25 @@ TEST(FaceParity, RunsOfOneShapeGiveTheAnswerOfTheCellByCellReading)
   }
 }
 
+TEST(FaceParity, AnIdOutOfRangeInARunIsRefused)
+{
+  // Two hexahedra on the same 8 points: every face in pairs. With 7 points only, point 7 is out of
+  // range: only the range check can make the answer "no".
+  RunCells cells;
+  cells.Add({ 0, 1, 2, 3, 4, 5, 6, 7 });
+  cells.Add({ 0, 1, 2, 3, 4, 5, 6, 7 });
+  EXPECT_TRUE(dgmf::FacesPairUp(cells, 8, dgmf::SerialFor));
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 7, dgmf::SerialFor));
+  cells.Corners[3] = cells.Corners[11] = -1; // both cells, so their faces still pair
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 8, dgmf::SerialFor));
+}
+
 TEST(FaceParity, ACollapsedCellInARunIsNotClosed)
 {
   // A hexahedron whose top is its bottom: its two caps are twin faces.
   RunCells cells;
   cells.Add({ 0, 1, 2, 3, 0, 1, 2, 3 });
   EXPECT_FALSE(dgmf::FacesPairUp(cells, 4, dgmf::SerialFor));
-  const StreamCells& streams = cells;
+  const StreamCells streams = cells; // sliced: without runs
   EXPECT_FALSE(dgmf::FacesPairUp(streams, 4, dgmf::SerialFor));
 }

@@ -303,10 +303,12 @@ TEST(ExtrudedLayers, TheFirstPassGivesTheSameAnswerOnTwoThreadsOverManyBlocks)
   lowered[3 * (n - 2) + 2] = -0.75;
   EXPECT_FALSE(find(lowered, dgmf::SerialFor).Found());
   EXPECT_FALSE(find(lowered, two).Found());
-  // A NaN coordinate: ignored by the extremes, except as the first node's (its axis is out).
+  // A NaN coordinate: ignored by the extremes (its plane then has a node fewer than the other:
+  // not paired), and as the first node's it keeps its axis out.
   std::vector<double> nan = points;
   nan[3 * 70000 + 2] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(find(nan, dgmf::SerialFor).Found(), find(nan, two).Found());
+  EXPECT_FALSE(find(nan, dgmf::SerialFor).Found());
+  EXPECT_FALSE(find(nan, two).Found());
   nan = points;
   nan[2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(find(nan, dgmf::SerialFor).Found());

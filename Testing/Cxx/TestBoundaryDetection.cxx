@@ -461,3 +461,79 @@ TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFac
   quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ten);
   EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(quadratic));
 }
+
+TEST(BoundaryDetection, RunsOfHexahedraGiveTheAnswerOfTheCellByCellReading)
+{
+  // 26^3 = 17,576 cells (two blocks of the parity's pass) in VTK's 64-bit storage, read in runs
+  // of one shape (FaceCells::GetCornerRun): hexahedra, every seventh cell a voxel instead (its
+  // corners in VTK's voxel order: a run stops there), and one hexahedron given a ninth point id
+  // (a run stops there too; the cell is read as its first 8). The same grid in 32-bit storage is
+  // read cell by cell: the answers must agree. The box's boundary quads are the patches.
+  const int n = 26;
+  const auto id = [n](int i, int j, int k)
+  { return static_cast<vtkIdType>(i + (n + 1) * (j + (n + 1) * k)); };
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        points->InsertNextPoint(i, j, k);
+  const auto boxWithPatches = [&](int skippedPatch)
+  {
+    auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    mesh->SetPoints(points);
+    int cell = 0;
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i, ++cell)
+        {
+          const vtkIdType c[9] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+            id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+            id(i, j + 1, k + 1), id(i, j, k) };
+          if (cell % 7 == 3)
+          {
+            const vtkIdType voxel[8] = { c[0], c[1], c[3], c[2], c[4], c[5], c[7], c[6] };
+            mesh->InsertNextCell(VTK_VOXEL, 8, voxel);
+          }
+          else
+          {
+            mesh->InsertNextCell(VTK_HEXAHEDRON, cell == 9001 ? 9 : 8, c);
+          }
+        }
+    // The six sides' quads.
+    int patch = 0;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (const int side : { 0, n })
+        {
+          const vtkIdType quads[3][4] = { { id(side, a, b), id(side, a + 1, b),
+                                            id(side, a + 1, b + 1), id(side, a, b + 1) },
+            { id(a, side, b), id(a + 1, side, b), id(a + 1, side, b + 1), id(a, side, b + 1) },
+            { id(a, b, side), id(a + 1, b, side), id(a + 1, b + 1, side), id(a, b + 1, side) } };
+          for (const auto& quad : quads)
+          {
+            if (patch++ != skippedPatch)
+            {
+              mesh->InsertNextCell(VTK_QUAD, 4, quad);
+            }
+          }
+        }
+    return mesh;
+  };
+  for (const int skipped : { -1, 1234 }) // no patch left out, or one of the 4,056
+  {
+    auto mesh = boxWithPatches(skipped);
+    ASSERT_TRUE(mesh->GetCells()->IsStorage64Bit());
+    auto narrow = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    narrow->DeepCopy(mesh);
+    ASSERT_TRUE(narrow->GetCells()->ConvertTo32BitStorage());
+    for (int threads : { 1, 2 })
+    {
+      dgmf_vtk::RunWithThreads(threads,
+        [&]()
+        {
+          EXPECT_EQ(dgmf_vtk::PolygonsCloseTheMesh(mesh), skipped < 0) << "skipped " << skipped;
+          EXPECT_EQ(dgmf_vtk::PolygonsCloseTheMesh(narrow), skipped < 0) << "skipped " << skipped;
+        });
+    }
+  }
+}

@@ -96,9 +96,9 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           std::to_string(bad / 3) + ").");
       }
     });
-  // The node arrays are allocated here without being written, and their pages faulted in parts
-  // (FirstTouch: every weight is written later, boundary nodes' below; the elements need their
-  // "not located" mark).
+  // The node arrays are allocated here without being written (so a failed allocation is thrown
+  // here, before the points' check), and their pages faulted in parts (FirstTouch: every weight
+  // is written later, boundary nodes' below; the elements need their "not located" mark).
   this->Weights.resize(numberOfNodes * static_cast<std::size_t>(n));
   this->NodeElement.resize(numberOfNodes);
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
