@@ -200,16 +200,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
           }
           const auto node = static_cast<std::size_t>(nodes[k]);
           this->NodeElement[node] = element[k];
-          // Written out: a copy of a run-time length is a memmove call per node.
-          const double* from = w.data() + m * k;
-          double* to = this->Weights.data() + m * node;
-          to[0] = from[0];
-          to[1] = from[1];
-          to[2] = from[2];
-          if (m == 4)
-          {
-            to[3] = from[3];
-          }
+          StoreWeights(w.data() + m * k, n, this->Weights.data() + m * node);
         }
       });
     for (const NodeLocationCounts& count : counts)

@@ -219,9 +219,9 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
         const void* ids = nullptr;
         std::size_t count = 0;
         int perCell = 0;
-        RunShape shape;
         if (const std::int64_t* local = cells.GetCornerRun(c, end - c, ids, count, perCell))
         {
+          RunShape shape;
           if (count >= 1 && shape.Decode(local, perCell))
           {
             const bool hexahedra = perCell == 8 && shape.Faces == 6 &&

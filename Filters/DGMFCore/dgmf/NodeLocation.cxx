@@ -104,16 +104,7 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   auto finish = [&](Lane& lane, std::int32_t element, const double* w, bool outside)
   {
     nodeElement[lane.Node] = element;
-    // Written out for 3 or 4 values: a copy of a run-time length was a memmove call per node
-    // (a fifth of the location's samples).
-    double* out = weights + lane.Node * static_cast<std::size_t>(n);
-    out[0] = w[0];
-    out[1] = w[1];
-    out[2] = w[2];
-    if (n == 4)
-    {
-      out[3] = w[3];
-    }
+    StoreWeights(w, n, weights + lane.Node * static_cast<std::size_t>(n));
     counts.Outside += outside ? 1 : 0;
     strideScore += lane.From == Start::Stride ? 1 : 0;
     counts.StrideHits += lane.From == Start::Stride ? 1 : 0;

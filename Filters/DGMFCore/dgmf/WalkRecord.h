@@ -172,6 +172,21 @@ inline void ClampWeights(double* w, int n)
   }
 }
 
+/**
+ * Copies a node's `n` (3 or 4) weights: written out, since a copy of a run-time length is a
+ * memmove call per node (a fifth of the location's samples).
+ */
+inline void StoreWeights(const double* w, int n, double* out)
+{
+  out[0] = w[0];
+  out[1] = w[1];
+  out[2] = w[2];
+  if (n == 4)
+  {
+    out[3] = w[3];
+  }
+}
+
 } // namespace dgmf
 
 #endif
