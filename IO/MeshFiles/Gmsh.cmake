@@ -1,6 +1,8 @@
-# gmsh .msh files through gmsh's own library (Debian: libgmsh-dev): GmshFile.cxx and its private
-# session helper. gmsh.h is needed by these sources only; libgmsh is linked into every consumer
-# of the static DGMFMeshFiles (CMake carries a static library's link dependencies as LINK_ONLY).
+# gmsh .msh files through gmsh's own library (Debian: libgmsh-dev). The gmsh calls are a module of
+# their own, libDGMFGmshFile.so (GmshModel.cxx, GmshSession.cxx), which DGMFMeshFiles opens with
+# dlopen when a .msh file is first read or written (GmshModule.h): libgmsh and its ~70 libraries
+# cost every process that links them 0.12 - 0.15 s at start-up. So no program, library or plugin
+# of this project links libgmsh (the test DGMF.NoProgramLinksGmsh checks it).
 find_path(DGMF_GMSH_INCLUDE_DIR gmsh.h DOC "Directory of gmsh's C++ API header gmsh.h")
 find_library(DGMF_GMSH_LIBRARY NAMES gmsh DOC "gmsh's library (libgmsh.so)")
 if(NOT DGMF_GMSH_INCLUDE_DIR OR NOT DGMF_GMSH_LIBRARY)
@@ -9,6 +11,27 @@ if(NOT DGMF_GMSH_INCLUDE_DIR OR NOT DGMF_GMSH_LIBRARY)
 endif()
 target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshFile.cxx"
+  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshModule.cxx"
+  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshHeader.cxx")
+target_link_libraries(DGMFMeshFiles PRIVATE ${CMAKE_DL_LIBS})
+
+add_library(DGMFGmshFile MODULE
+  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshModel.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshSession.cxx")
-target_include_directories(DGMFMeshFiles SYSTEM PRIVATE "${DGMF_GMSH_INCLUDE_DIR}")
-target_link_libraries(DGMFMeshFiles PRIVATE "${DGMF_GMSH_LIBRARY}")
+target_include_directories(DGMFGmshFile SYSTEM PRIVATE "${DGMF_GMSH_INCLUDE_DIR}")
+target_link_libraries(DGMFGmshFile PRIVATE DGMFMeshFiles "${DGMF_GMSH_LIBRARY}")
+target_compile_options(DGMFGmshFile PRIVATE $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra>)
+# Only the entry points are visible (GmshModel.cxx).
+set_target_properties(DGMFGmshFile PROPERTIES CXX_VISIBILITY_PRESET hidden
+  VISIBILITY_INLINES_HIDDEN ON)
+# Where the loader looks in the build tree, after the directory of the code that loads it.
+target_compile_definitions(DGMFMeshFiles PRIVATE
+  "DGMF_GMSH_MODULE_BUILD_PATH=\"$<TARGET_FILE:DGMFGmshFile>\"")
+# Installed beside the library that loads it: DGMF::IO, in the plugin's directory when the
+# ParaView plugin is built.
+if(DGMF_BUILD_PARAVIEW_PLUGIN AND NOT DGMF_CORE_ONLY)
+  set(dgmf_gmsh_module_destination "${CMAKE_INSTALL_LIBDIR}/dgmf-plugins/DGMFPlugin")
+else()
+  set(dgmf_gmsh_module_destination "${CMAKE_INSTALL_LIBDIR}")
+endif()
+install(TARGETS DGMFGmshFile LIBRARY DESTINATION "${dgmf_gmsh_module_destination}")

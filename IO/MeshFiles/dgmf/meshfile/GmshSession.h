@@ -1,11 +1,12 @@
 /**
  * @file GmshSession.h
- * @brief Private to GmshFile.cxx: one serialized use of gmsh's library (initialized once per
- * process, silent, errors collected instead of thrown), and the check of a .msh file's header
- * before gmsh sees the file.
+ * @brief Private to the gmsh module (GmshModel.cxx, GmshModule.h): one serialized use of gmsh's
+ * library (initialized once per process, silent, errors collected instead of thrown).
  */
 #ifndef dgmf_meshfile_GmshSession_h
 #define dgmf_meshfile_GmshSession_h
+
+#include "dgmf/meshfile/MshHeader.h"
 
 #include <filesystem>
 #include <mutex>
@@ -16,21 +17,6 @@ namespace dgmf
 {
 namespace meshfile
 {
-
-/// What a .msh file's $MeshFormat section says.
-struct MshFormat
-{
-  double Version = 0.0; ///< 2.0, 2.1, 2.2, 4.0 or 4.1
-  bool Binary = false;
-};
-
-/**
- * Reads the first two lines of `path` and checks them: "$MeshFormat", then "<version> <0|1> 8"
- * with a version 2.x or 4.x. Throws FileError naming the file otherwise. gmsh parses a file with
- * a .msh name but another first line as a .geo script (which can run commands), so no file goes
- * to gmsh without this check.
- */
-MshFormat CheckMshHeader(const std::string& path);
 
 /**
  * One use of gmsh's library, under a process-wide lock (gmsh's state is global). The first
