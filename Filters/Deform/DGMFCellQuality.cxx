@@ -103,43 +103,63 @@ void GatherCorners(
   }
 }
 
+/// The 8 corners of a hexahedron (ids `pts` in VTK's order, read in the metric's `order`) from
+/// `points` into slot `slot` of `groups` (dgmf::HexGroupIndex's layout).
+void GatherHexCornersIntoGroups(
+  const vtkIdType* pts, const int* order, const double* points, double* groups, int slot)
+{
+  double* group = groups + static_cast<std::size_t>(slot / 4) * dgmf::kHexGroupDoubles;
+  const auto lane = static_cast<std::size_t>(slot % 4);
+  for (int k = 0; k < 8; ++k)
+  {
+    const double* p = points + 3 * static_cast<std::size_t>(pts[order[k]]);
+    group[dgmf::HexGroupIndex(k, 0, lane)] = p[0];
+    group[dgmf::HexGroupIndex(k, 1, lane)] = p[1];
+    group[dgmf::HexGroupIndex(k, 2, lane)] = p[2];
+  }
+}
+
 /**
- * Hexahedra gathered from a block of cells and evaluated together (dgmf::ComputeHexSizeSkew, four
- * at a time): their deformed corners, and their original corners only when the reference sizes
- * are to be computed.
+ * Hexahedra gathered from a block of cells and evaluated together
+ * (dgmf::ComputeHexSizeSkewInGroups, four at a time): their deformed corners, and their original
+ * corners only when the reference sizes are to be computed, written straight into the metric's
+ * vector layout.
  */
 struct HexBatch
 {
   static constexpr int Capacity = 64;
   std::size_t Cells[Capacity];
-  double Original[Capacity][24];
-  double Deformed[Capacity][24];
-  const double* OriginalCorners[Capacity];
-  const double* DeformedCorners[Capacity];
+  double Original[Capacity / 4 * dgmf::kHexGroupDoubles];
+  double Deformed[Capacity / 4 * dgmf::kHexGroupDoubles];
   double Reference[Capacity];
   dgmf::CellQuality Quality[Capacity];
   int Count = 0;
-
-  HexBatch()
-  {
-    for (int i = 0; i < Capacity; ++i)
-    {
-      this->OriginalCorners[i] = this->Original[i];
-      this->DeformedCorners[i] = this->Deformed[i];
-    }
-  }
 
   /// Adds cell `c` (corner ids `pts` in VTK's order, read in the metric's `order`); true when full.
   bool Add(std::size_t c, const vtkIdType* pts, const int* order, const double* originalPoints,
     const double* deformedPoints, bool withOriginal)
   {
-    GatherCorners(8, pts, order, deformedPoints, this->Deformed[this->Count]);
+    GatherHexCornersIntoGroups(pts, order, deformedPoints, this->Deformed, this->Count);
     if (withOriginal)
     {
-      GatherCorners(8, pts, order, originalPoints, this->Original[this->Count]);
+      GatherHexCornersIntoGroups(pts, order, originalPoints, this->Original, this->Count);
     }
     this->Cells[this->Count++] = c;
     return this->Count == Capacity;
+  }
+
+  /// The deformed corners of slot `slot` as one cell's 8 x 3 coordinates.
+  void DeformedCorners(int slot, double* corners) const
+  {
+    const double* group =
+      this->Deformed + static_cast<std::size_t>(slot / 4) * dgmf::kHexGroupDoubles;
+    for (int k = 0; k < 8; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        corners[3 * k + c] = group[dgmf::HexGroupIndex(k, c, static_cast<std::size_t>(slot % 4))];
+      }
+    }
   }
 };
 } // namespace
@@ -211,7 +231,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         }
         else
         {
-          dgmf::ComputeHexReferenceSizes(count, b.OriginalCorners, b.Reference);
+          dgmf::ComputeHexReferenceSizesInGroups(count, b.Original, b.Reference);
           if (references.Sizes)
           {
             for (std::size_t i = 0; i < count; ++i)
@@ -220,7 +240,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
             }
           }
         }
-        dgmf::ComputeHexSizeSkew(count, b.Reference, b.DeformedCorners, b.Quality);
+        dgmf::ComputeHexSizeSkewInGroups(count, b.Reference, b.Deformed, b.Quality);
         for (std::size_t i = 0; i < count; ++i)
         {
           if (b.Quality[i].InputInvalid) // non-convex before the deformation: through its faces
@@ -231,8 +251,9 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
             const int* order;
             CellShapeOf(types[b.Cells[i]], shape, order);
             cells->GetCellAtId(static_cast<vtkIdType>(b.Cells[i]), npts, pts, scratch);
-            GatherCorners(8, pts, order, originalPoints, b.Original[i]);
-            b.Quality[i] = dgmf::JudgeInvalidInputCell(shape, b.Original[i], b.Deformed[i]);
+            GatherCorners(8, pts, order, originalPoints, original);
+            b.DeformedCorners(static_cast<int>(i), deformed);
+            b.Quality[i] = dgmf::JudgeInvalidInputCell(shape, original, deformed);
           }
           write(b.Cells[i], b.Quality[i]);
         }

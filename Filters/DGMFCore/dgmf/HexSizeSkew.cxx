@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace dgmf
@@ -140,21 +141,79 @@ using FourVec3 = Vec3Of<Four>;
 
 using FourHexEdges = HexEdgesOf<Four>;
 
-/// The edges of the four hexahedra whose corners are at `points[0..3]`.
-inline void ComputeHexEdges(const double* const* points, FourHexEdges& edges)
+/// The edges of the four hexahedra of `group` (SizeSkewQuality.h's layout): one vector load per
+/// coordinate of a corner.
+inline void ComputeHexEdges(const double* group, FourHexEdges& edges)
 {
-  const double* a = points[0];
-  const double* b = points[1];
-  const double* c = points[2];
-  const double* d = points[3];
   ComputeHexEdges(
-    [a, b, c, d](int i) -> FourVec3
+    [group](int i) -> FourVec3
     {
-      return { Four{ a[3 * i], b[3 * i], c[3 * i], d[3 * i] },
-        Four{ a[3 * i + 1], b[3 * i + 1], c[3 * i + 1], d[3 * i + 1] },
-        Four{ a[3 * i + 2], b[3 * i + 2], c[3 * i + 2], d[3 * i + 2] } };
+      Four x, y, z;
+      std::memcpy(&x, group + HexGroupIndex(i, 0, 0), sizeof x);
+      std::memcpy(&y, group + HexGroupIndex(i, 1, 0), sizeof y);
+      std::memcpy(&z, group + HexGroupIndex(i, 2, 0), sizeof z);
+      return { x, y, z };
     },
     edges);
+}
+
+/// Lane `lane` of `group` as one cell's 8 x 3 coordinates.
+inline void LaneCorners(const double* group, std::size_t lane, double* corners)
+{
+  for (int k = 0; k < 8; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      corners[3 * k + c] = group[HexGroupIndex(k, c, lane)];
+    }
+  }
+}
+
+/**
+ * The group of cells `first` .. `first` + 3 (a multiple of 4) of `count`: the last group's missing
+ * lanes are filled with its last cell in `scratch` (their results are computed and not written).
+ */
+inline const double* CompleteGroup(
+  const double* groups, std::size_t first, std::size_t count, double (&scratch)[kHexGroupDoubles])
+{
+  const double* group = groups + first / 4 * kHexGroupDoubles;
+  const std::size_t lanes = std::min<std::size_t>(4, count - first);
+  if (lanes == 4)
+  {
+    return group;
+  }
+  for (std::size_t v = 0; v < kHexGroupDoubles / 4; ++v)
+  {
+    for (std::size_t l = 0; l < 4; ++l)
+    {
+      scratch[4 * v + l] = group[4 * v + std::min(l, lanes - 1)];
+    }
+  }
+  return scratch;
+}
+
+/// Cells given by pointers (8 x 3 coordinates each) into groups, 64 at a time, for `evaluate`.
+template <typename Evaluate>
+inline void InGroupsOf64(std::size_t count, const double* const* cells, Evaluate evaluate)
+{
+  constexpr std::size_t kBlock = 64;
+  double groups[kBlock / 4 * kHexGroupDoubles];
+  for (std::size_t first = 0; first < count; first += kBlock)
+  {
+    const std::size_t n = std::min(kBlock, count - first);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      double* group = groups + i / 4 * kHexGroupDoubles;
+      for (int k = 0; k < 8; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          group[HexGroupIndex(k, c, i % 4)] = cells[first + i][3 * k + c];
+        }
+      }
+    }
+    evaluate(first, n, groups);
+  }
 }
 
 /// InverseCubeRootInRange of four values (the bit-level guess lane by lane, the Newton steps
@@ -164,16 +223,6 @@ inline Four InverseCubeRootInRange(Four x)
   return InverseCubeRootNewton(x,
     Four{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]), InverseCubeRootGuess(x[2]),
       InverseCubeRootGuess(x[3]) });
-}
-
-/// The cells of the group of four starting at `first`, of `count`: the last group repeats its last
-/// cell (its lanes are computed twice and written once).
-inline void GroupOfFour(std::size_t first, std::size_t count, std::size_t (&cells)[4])
-{
-  for (std::size_t l = 0; l < 4; ++l)
-  {
-    cells[l] = std::min(first + l, count - 1);
-  }
 }
 
 } // namespace
@@ -188,99 +237,119 @@ CellQuality HexSizeSkew(const double* original, const double* deformed)
 using namespace sizeskew;
 
 DGMF_SIMD_AVX2_CLONES
-void ComputeHexReferenceSizes(
-  std::size_t count, const double* const* original, double* referenceSizes)
+void ComputeHexReferenceSizesInGroups(
+  std::size_t count, const double* originalGroups, double* referenceSizes)
 {
-  // The loop's body is written here, not in a lambda: the AVX2 clone compiles what it inlines.
+  // The loop's body is written here, not in a function of its own: the AVX2 clone compiles what
+  // it inlines.
+  double scratch[kHexGroupDoubles];
   for (std::size_t first = 0; first < count; first += 4)
   {
-    std::size_t cells[4];
-    GroupOfFour(first, count, cells);
+    const double* group = CompleteGroup(originalGroups, first, count, scratch);
+    FourHexEdges edges;
+    ComputeHexEdges(group, edges);
+    Four sum = { 0.0, 0.0, 0.0, 0.0 };
+    // The extremes lane by lane (minima and maxima are exact: the one-cell path's values).
+    Four smallest, largest;
+    for (int corner = 0; corner < 8; ++corner)
     {
-      const double* const points[4] = { original[cells[0]], original[cells[1]], original[cells[2]],
-        original[cells[3]] };
-      FourHexEdges edges;
-      ComputeHexEdges(points, edges);
-      Four sum = { 0.0, 0.0, 0.0, 0.0 };
-      // The extremes lane by lane (minima and maxima are exact: the one-cell path's values).
-      Four smallest, largest;
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const Four alpha = HexCornerDeterminant(edges, corner);
-        sum += alpha;
-        smallest = corner == 0 ? alpha : simd::Min(smallest, alpha);
-        largest = corner == 0 ? alpha : simd::Max(largest, alpha);
-      }
-      Four longestEdge2 = edges.Length2[0];
-      for (int e = 1; e < 12; ++e)
-      {
-        longestEdge2 = simd::Max(longestEdge2, edges.Length2[e]);
-      }
-      for (int l = 0; l < 4; ++l)
-      {
-        referenceSizes[cells[l]] =
-          CheckedHexReference(sum[l], smallest[l], largest[l], longestEdge2[l]);
-      }
+      const Four alpha = HexCornerDeterminant(edges, corner);
+      sum += alpha;
+      smallest = corner == 0 ? alpha : simd::Min(smallest, alpha);
+      largest = corner == 0 ? alpha : simd::Max(largest, alpha);
+    }
+    Four longestEdge2 = edges.Length2[0];
+    for (int e = 1; e < 12; ++e)
+    {
+      longestEdge2 = simd::Max(longestEdge2, edges.Length2[e]);
+    }
+    const std::size_t lanes = std::min<std::size_t>(4, count - first);
+    for (std::size_t l = 0; l < lanes; ++l)
+    {
+      referenceSizes[first + l] =
+        CheckedHexReference(sum[l], smallest[l], largest[l], longestEdge2[l]);
     }
   }
 }
 
 DGMF_SIMD_AVX2_CLONES
-void ComputeHexSizeSkew(std::size_t count, const double* referenceSizes,
-  const double* const* deformed, CellQuality* quality)
+void ComputeHexSizeSkewInGroups(std::size_t count, const double* referenceSizes,
+  const double* deformedGroups, CellQuality* quality)
 {
+  double scratch[kHexGroupDoubles];
   for (std::size_t first = 0; first < count; first += 4)
   {
-    std::size_t cells[4];
-    GroupOfFour(first, count, cells);
+    const double* group = CompleteGroup(deformedGroups, first, count, scratch);
+    const std::size_t lanes = std::min<std::size_t>(4, count - first);
+    Four reference;
+    for (std::size_t l = 0; l < 4; ++l)
     {
-      const double* const points[4] = { deformed[cells[0]], deformed[cells[1]], deformed[cells[2]],
-        deformed[cells[3]] };
-      const Four reference = { referenceSizes[cells[0]], referenceSizes[cells[1]],
-        referenceSizes[cells[2]], referenceSizes[cells[3]] };
-      Four orientation;
-      for (int l = 0; l < 4; ++l)
+      reference[l] = referenceSizes[first + std::min(l, lanes - 1)];
+    }
+    Four orientation;
+    for (int l = 0; l < 4; ++l)
+    {
+      orientation[l] = reference[l] > 0.0 ? 1.0 : -1.0;
+    }
+    FourHexEdges edges;
+    ComputeHexEdges(group, edges);
+    Four deformedSum = { 0.0, 0.0, 0.0, 0.0 };
+    Four numerator[8], argument[8];
+    // The smallest Jacobian and the range of the cube roots' arguments, lane by lane: a NaN
+    // that Min or Max drops leaves a NaN in deformedSum or inverseSum, checked below.
+    Four smallestAlpha, smallestArgument, largestArgument;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const Four alpha = orientation * HexCornerDeterminant(edges, corner);
+      deformedSum += alpha;
+      const int* e = kHexCornerEdges[corner];
+      numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
+      argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
+      smallestAlpha = corner == 0 ? alpha : simd::Min(smallestAlpha, alpha);
+      smallestArgument = corner == 0 ? argument[0] : simd::Min(smallestArgument, argument[corner]);
+      largestArgument = corner == 0 ? argument[0] : simd::Max(largestArgument, argument[corner]);
+    }
+    Four inverseSum = { 0.0, 0.0, 0.0, 0.0 };
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
+    }
+    const Four tau = deformedSum / (orientation * reference);
+    for (std::size_t l = 0; l < lanes; ++l)
+    {
+      // A lane out of the fast path (no reference, inverted, a cube root out of range) is
+      // evaluated on its own: the same operations where both apply, so the same bits.
+      const bool usable = smallestAlpha[l] > 0.0 && smallestArgument[l] >= kCubeRootLow &&
+        largestArgument[l] <= kCubeRootHigh && !std::isnan(deformedSum[l]) &&
+        !std::isnan(inverseSum[l]) && !std::isnan(reference[l]);
+      if (usable)
       {
-        orientation[l] = reference[l] > 0.0 ? 1.0 : -1.0;
+        quality[first + l] = Valid(SizeFactor(tau[l]) * 8.0 / inverseSum[l]);
       }
-      FourHexEdges edges;
-      ComputeHexEdges(points, edges);
-      Four deformedSum = { 0.0, 0.0, 0.0, 0.0 };
-      Four numerator[8], argument[8];
-      // The smallest Jacobian and the range of the cube roots' arguments, lane by lane: a NaN
-      // that Min or Max drops leaves a NaN in deformedSum or inverseSum, checked below.
-      Four smallestAlpha, smallestArgument, largestArgument;
-      for (int corner = 0; corner < 8; ++corner)
+      else
       {
-        const Four alpha = orientation * HexCornerDeterminant(edges, corner);
-        deformedSum += alpha;
-        const int* e = kHexCornerEdges[corner];
-        numerator[corner] = edges.Length2[e[0]] * edges.Length2[e[1]] * edges.Length2[e[2]];
-        argument[corner] = numerator[corner] * numerator[corner] * (alpha * alpha);
-        smallestAlpha = corner == 0 ? alpha : simd::Min(smallestAlpha, alpha);
-        smallestArgument =
-          corner == 0 ? argument[0] : simd::Min(smallestArgument, argument[corner]);
-        largestArgument = corner == 0 ? argument[0] : simd::Max(largestArgument, argument[corner]);
-      }
-      Four inverseSum = { 0.0, 0.0, 0.0, 0.0 };
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        inverseSum += 1.0 * numerator[corner] * InverseCubeRootInRange(argument[corner]);
-      }
-      const Four tau = deformedSum / (orientation * reference);
-      for (int l = 0; l < 4; ++l)
-      {
-        // A lane out of the fast path (no reference, inverted, a cube root out of range) is
-        // evaluated on its own: the same operations where both apply, so the same bits.
-        const bool usable = smallestAlpha[l] > 0.0 && smallestArgument[l] >= kCubeRootLow &&
-          largestArgument[l] <= kCubeRootHigh && !std::isnan(deformedSum[l]) &&
-          !std::isnan(inverseSum[l]);
-        quality[cells[l]] = usable && !std::isnan(reference[l])
-          ? Valid(SizeFactor(tau[l]) * 8.0 / inverseSum[l])
-          : HexSizeSkewFromReference(reference[l], points[l]);
+        double corners[24];
+        LaneCorners(group, l, corners);
+        quality[first + l] = HexSizeSkewFromReference(reference[l], corners);
       }
     }
   }
+}
+
+void ComputeHexReferenceSizes(
+  std::size_t count, const double* const* original, double* referenceSizes)
+{
+  InGroupsOf64(count, original,
+    [referenceSizes](std::size_t first, std::size_t n, const double* groups)
+    { ComputeHexReferenceSizesInGroups(n, groups, referenceSizes + first); });
+}
+
+void ComputeHexSizeSkew(std::size_t count, const double* referenceSizes,
+  const double* const* deformed, CellQuality* quality)
+{
+  InGroupsOf64(count, deformed,
+    [referenceSizes, quality](std::size_t first, std::size_t n, const double* groups)
+    { ComputeHexSizeSkewInGroups(n, referenceSizes + first, groups, quality + first); });
 }
 
 double ComputeHexReferenceSize(const double* original)
