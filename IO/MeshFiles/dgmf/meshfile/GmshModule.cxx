@@ -79,7 +79,8 @@ Loaded Load()
     if (!handle)
     {
       const char* error = ::dlerror();
-      loaded.Failure += (loaded.Failure.empty() ? "" : "; ") + std::string(error ? error : candidate);
+      loaded.Failure +=
+        (loaded.Failure.empty() ? "" : "; ") + std::string(error ? error : candidate);
       continue;
     }
     using VersionFunction = int (*)();
