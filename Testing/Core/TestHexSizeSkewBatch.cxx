@@ -115,6 +115,60 @@ TEST(HexSizeSkewBatch, FourAtATimeGiveTheBitsOfOneAtATime)
   }
 }
 
+TEST(HexSizeSkewBatch, GroupsGiveTheBitsOfOneAtATimeAndReadOnlyTheirCells)
+{
+  // Cells in the vectors' layout, written by the literal formula (which pins the layout), every
+  // lane past the cells NaN, the arrays of exactly the cells' size (AddressSanitizer sees an
+  // over-read), sentinels after the outputs: partial last groups of 1, 2 and 3 lanes, with
+  // inverted, non-convex and tiny cells at every lane (Cells' patterns by 5, 7, 61, 89, 97).
+  for (std::size_t count : { std::size_t(1), std::size_t(2), std::size_t(3), std::size_t(5),
+         std::size_t(6), std::size_t(7), std::size_t(63), std::size_t(65), std::size_t(4003) })
+  {
+    const Cells cells(count);
+    const std::size_t groups = (count + 3) / 4;
+    std::vector<double> original(groups * dgmf::kHexGroupDoubles, std::nan(""));
+    std::vector<double> deformed(groups * dgmf::kHexGroupDoubles, std::nan(""));
+    for (std::size_t t = 0; t < count; ++t)
+    {
+      for (int k = 0; k < 8; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          const std::size_t at = t / 4 * 96 + static_cast<std::size_t>(3 * k + c) * 4 + t % 4;
+          ASSERT_EQ(at, t / 4 * dgmf::kHexGroupDoubles + dgmf::HexGroupIndex(k, c, t % 4));
+          original[at] = cells.Original[t][3 * k + c];
+          deformed[at] = cells.Deformed[t][3 * k + c];
+        }
+      }
+    }
+    constexpr double kSentinel = 12345.0;
+    std::vector<double> references(count + 4, kSentinel);
+    dgmf::ComputeHexReferenceSizesInGroups(count, original.data(), references.data());
+    const std::vector<double> exactReferences(references.begin(), references.begin() + count);
+    std::vector<CellQuality> quality(count + 4, CellQuality{ kSentinel, true, true });
+    dgmf::ComputeHexSizeSkewInGroups(
+      count, exactReferences.data(), deformed.data(), quality.data());
+    for (std::size_t t = 0; t < count; ++t)
+    {
+      const double reference = dgmf::ComputeHexReferenceSize(cells.Original[t].data());
+      ASSERT_TRUE(
+        SameBits(references[t], reference) || (std::isnan(references[t]) && std::isnan(reference)))
+        << "cell " << t << " of " << count;
+      const CellQuality single = dgmf::ComputeSizeSkew(
+        CellShape::Hexahedron, cells.Original[t].data(), cells.Deformed[t].data());
+      ASSERT_TRUE(SameBits(quality[t].SizeSkew, single.SizeSkew))
+        << "cell " << t << " of " << count;
+      ASSERT_EQ(quality[t].Inverted, single.Inverted) << "cell " << t << " of " << count;
+      ASSERT_EQ(quality[t].InputInvalid, single.InputInvalid) << "cell " << t << " of " << count;
+    }
+    for (std::size_t t = count; t < count + 4; ++t)
+    {
+      EXPECT_EQ(references[t], kSentinel) << "written past the cells, " << count;
+      EXPECT_EQ(quality[t].SizeSkew, kSentinel) << "written past the cells, " << count;
+    }
+  }
+}
+
 TEST(HexSizeSkewBatch, TheReferenceSizeIsTheSignedSumOfTheCornerJacobians)
 {
   // A 2 x 3 x 4 box: every corner Jacobian is 24, so the size is 8 x 24, negative when mirrored.

@@ -146,6 +146,44 @@ TEST(FaceQualityFilters, CellsInvalidInTheInputAreCountedApartFromCellsTheMotion
   EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
 }
 
+TEST(FaceQualityFilters, ADentedCellPastTheFirstGroupOfFourIsJudgedThroughItsFaces)
+{
+  // 7 separate unit cubes, the sixth (cell 5: the second lane of the second group of four that the
+  // metric evaluates together) dented as above: the deformed corners of that lane are taken out
+  // of the group for the faces' judgement.
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkUnstructuredGrid> cubes;
+  cubes->SetPoints(points);
+  constexpr double corner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+  for (int i = 0; i < 7; ++i)
+  {
+    vtkIdType hex[8];
+    for (int k = 0; k < 8; ++k)
+    {
+      hex[k] = points->InsertNextPoint(2.0 * i + corner[k][0], corner[k][1], corner[k][2]);
+    }
+    cubes->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  }
+  // Corner 5 of cube 5 (x = 11, y = 0, z = 1) moved inside, as the dent of TwoCubes.
+  const vtkIdType dent = 8 * 5 + 5;
+  cubes->GetPoints()->SetPoint(dent, 10.6, 0.6, 0.3);
+  vtkNew<vtkSizeSkewQualityFilter> quality;
+  vtkUnstructuredGrid* same = Measure(quality, cubes, cubes);
+  EXPECT_EQ(Field(same, "InputInvalidCellCount"), 1.0);
+  EXPECT_EQ(Field(same, "InvertedCellCount"), 0.0);
+  EXPECT_EQ(same->GetCellData()->GetArray("InputInvalid")->GetTuple1(5), 1.0);
+  EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(5), 1.0, 1e-12);
+  vtkNew<vtkUnstructuredGrid> through;
+  through->DeepCopy(cubes);
+  through->GetPoints()->SetPoint(dent, 10.6, 0.6, -0.5);
+  vtkUnstructuredGrid* inverted = Measure(quality, through, cubes);
+  EXPECT_EQ(Field(inverted, "InvertedCellCount"), 1.0);
+  EXPECT_EQ(inverted->GetCellData()->GetArray("Inverted")->GetTuple1(5), 1.0);
+  EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
+}
+
 namespace
 {
 /// A box of n^3 hexahedra, its points jittered (every cell different), with a BoundaryMarker:

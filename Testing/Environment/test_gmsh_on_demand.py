@@ -11,8 +11,9 @@ Checks:
 - dgmf-deform on a gmsh .msh file (made here by gmsh's Python API: a box around a sphere, groups
   "wing" and "farfield") loads it, deforms the mesh by name and writes the .msh back with every
   node;
-- DGMF_GMSH_MODULE naming a missing module: the .msh run fails with exit code 1, a message that
-  says gmsh's library cannot be loaded, and no output file;
+- DGMF_GMSH_MODULE naming a missing module, or (--not-a-module) a shared library that is not this
+  build's module: the .msh run fails with exit code 1, a message that says gmsh's library cannot
+  be loaded (and why), and no output file;
 - with --launchers (an install tree's bin): the installed plugin reads the .msh in dgmf-pvpython,
   through the module installed beside it (the loader's log shows it opened from under the install
   prefix, not from the build tree).
@@ -86,6 +87,7 @@ def main():
     parser.add_argument("--work", required=True)
     parser.add_argument("--not-linked", nargs="+", required=True)
     parser.add_argument("--launchers")
+    parser.add_argument("--not-a-module")
     args = parser.parse_args()
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
@@ -130,6 +132,15 @@ def main():
             result.returncode, os.path.exists(missing_out), result.stderr[-2000:]))
     print("without the module: exit 1, nothing written: %s" % result.stderr.strip().splitlines()[-1])
 
+    if args.not_a_module:
+        result = run([args.deform, msh, missing_out, "--moving", "wing", "--rotate", "0", "0", "5"],
+                      {"DGMF_GMSH_MODULE": args.not_a_module})
+        if result.returncode != 1 or os.path.exists(missing_out) or \
+                "not a gmsh module of this program" not in result.stderr:
+            fail("another library as the module: exit %d, output %s, message:\n%s" % (
+                result.returncode, os.path.exists(missing_out), result.stderr[-2000:]))
+        print("another library as the module: refused, nothing written")
+
     if args.launchers:
         script = os.path.join(args.work, "read_msh.py")
         with open(script, "w") as out:
@@ -146,7 +157,7 @@ def main():
                 result.stdout:
             fail("the installed plugin on the .msh: exit %d\n%s\n%s" % (
                 result.returncode, result.stdout[-2000:], result.stderr[-2000:]))
-        if not modules or not all(m.startswith(prefix) for m in modules):
+        if not modules or not all(os.path.abspath(m).startswith(prefix + os.sep) for m in modules):
             fail("the installed plugin loaded the gmsh module from %s, not under %s" % (
                 modules, prefix))
         print("the installed plugin read the .msh (%d points) with %s" % (nodes, modules[0]))

@@ -7,6 +7,7 @@ target_include_directories(DGMFGmshTests PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}"
   "${DGMF_GMSH_INCLUDE_DIR}")
 target_link_libraries(DGMFGmshTests PRIVATE DGMFMeshFiles "${DGMF_GMSH_LIBRARY}" GTest::gtest
   GTest::gtest_main)
+add_dependencies(DGMFGmshTests DGMFGmshFile) # the module that reads and writes the files
 # gmsh runs in forked children that leave with _exit (LibraryIsolation.h): LeakSanitizer checks the
 # test process only, and no suppression is needed. Under ASan the hostile-file tests print the
 # reports of children that gmsh crashes (allocation-size-too-big, a bad free): expected, each one

@@ -197,7 +197,7 @@ template <typename Evaluate>
 inline void InGroupsOf64(std::size_t count, const double* const* cells, Evaluate evaluate)
 {
   constexpr std::size_t kBlock = 64;
-  double groups[kBlock / 4 * kHexGroupDoubles];
+  alignas(64) double groups[kBlock / 4 * kHexGroupDoubles];
   for (std::size_t first = 0; first < count; first += kBlock)
   {
     const std::size_t n = std::min(kBlock, count - first);
@@ -242,7 +242,7 @@ void ComputeHexReferenceSizesInGroups(
 {
   // The loop's body is written here, not in a function of its own: the AVX2 clone compiles what
   // it inlines.
-  double scratch[kHexGroupDoubles];
+  alignas(64) double scratch[kHexGroupDoubles];
   for (std::size_t first = 0; first < count; first += 4)
   {
     const double* group = CompleteGroup(originalGroups, first, count, scratch);
@@ -276,7 +276,7 @@ DGMF_SIMD_AVX2_CLONES
 void ComputeHexSizeSkewInGroups(std::size_t count, const double* referenceSizes,
   const double* deformedGroups, CellQuality* quality)
 {
-  double scratch[kHexGroupDoubles];
+  alignas(64) double scratch[kHexGroupDoubles];
   for (std::size_t first = 0; first < count; first += 4)
   {
     const double* group = CompleteGroup(deformedGroups, first, count, scratch);

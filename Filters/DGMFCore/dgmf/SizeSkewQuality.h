@@ -105,7 +105,7 @@ void ComputeHexSizeSkew(std::size_t count, const double* referenceSizes,
  * 4g .. 4g + 3, and coordinate `c` of corner `k` of the group's cell `lane` is at
  * g * kHexGroupDoubles + HexGroupIndex(k, c, lane). Callers that gather corners (the filter) write
  * them there directly, so that the metric loads each coordinate of four cells as one vector
- * instead of inserting four values (28 instead of 39 ns per hexahedron in cache: speed.md).
+ * instead of inserting four values (31 instead of 39 - 40 ns per hexahedron in cache: speed.md).
  */
 constexpr std::size_t kHexGroupDoubles = 96;
 

@@ -19,7 +19,7 @@ NamedMesh ReadGmsh(const std::string& path)
 {
   const MshFormat format = CheckMshHeader(path);
   // Loaded here, before the fork: the child only calls it.
-  const GmshModule& gmsh = LoadGmshModule(path);
+  const GmshModule gmsh = LoadGmshModule(path);
   const std::string answer = RunIsolated(path, "gmsh", TimeAllowed(path), 0,
     [&]()
     {
@@ -68,7 +68,7 @@ void WriteGmshWithPoints(
     }
   }
   const MshFormat format = CheckMshHeader(source);
-  const GmshModule& gmsh = LoadGmshModule(source);
+  const GmshModule gmsh = LoadGmshModule(source);
   const fs::path temporary = TemporaryBeside(target);
   try
   {

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <numeric>
 #include <set>
+#include <type_traits>
 #include <unordered_map>
 
 namespace dgmf
@@ -534,9 +535,9 @@ bool ReportingFailure(const std::string& file, std::string& message, Body body)
 // The module's entry points (GmshModule.h), found by name with dlsym.
 #define DGMF_GMSH_MODULE_ENTRY extern "C" __attribute__((visibility("default")))
 
-DGMF_GMSH_MODULE_ENTRY int dgmf_meshfile_gmsh_interface_version()
+DGMF_GMSH_MODULE_ENTRY const char* dgmf_meshfile_gmsh_build_identity()
 {
-  return dgmf::meshfile::kGmshModuleInterfaceVersion;
+  return dgmf::meshfile::kGmshModuleIdentity;
 }
 
 DGMF_GMSH_MODULE_ENTRY bool dgmf_meshfile_gmsh_read(
@@ -553,3 +554,9 @@ DGMF_GMSH_MODULE_ENTRY bool dgmf_meshfile_gmsh_write(const std::string& source,
   return dgmf::meshfile::ReportingFailure(source, message,
     [&]() { dgmf::meshfile::WriteGmshModel(source, target, format, points, count); });
 }
+
+// The entry points have the types the loader casts them to.
+static_assert(
+  std::is_same_v<decltype(&dgmf_meshfile_gmsh_read), decltype(dgmf::meshfile::GmshModule::Read)>);
+static_assert(
+  std::is_same_v<decltype(&dgmf_meshfile_gmsh_write), decltype(dgmf::meshfile::GmshModule::Write)>);

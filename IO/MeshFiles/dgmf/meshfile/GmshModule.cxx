@@ -6,8 +6,10 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace dgmf
@@ -18,17 +20,36 @@ namespace
 {
 constexpr const char* kModuleName = "libDGMFGmshFile.so";
 
-/// The directory of the library or program holding this code, or empty.
+/// The directory of the library or program holding this code, or empty. Asked with a function of
+/// this file's own (an exported one may resolve to another library's copy).
 std::filesystem::path DirectoryOfThisCode()
 {
   Dl_info info{};
-  if (::dladdr(reinterpret_cast<const void*>(&LoadGmshModule), &info) == 0 || !info.dli_fname)
+  if (::dladdr(reinterpret_cast<const void*>(&DirectoryOfThisCode), &info) == 0 ||
+    !info.dli_fname || !*info.dli_fname)
   {
     return std::filesystem::path();
   }
-  std::error_code ignored;
-  const std::filesystem::path self = std::filesystem::canonical(info.dli_fname, ignored);
-  return ignored ? std::filesystem::path() : self.parent_path();
+  std::error_code error;
+  // A program's own code gives argv[0], which may be a bare name found through PATH.
+  const std::filesystem::path self = std::strchr(info.dli_fname, '/')
+    ? std::filesystem::canonical(info.dli_fname, error)
+    : std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? std::filesystem::path() : self.parent_path();
+}
+
+/// True when `directory` is inside `root` (both canonical).
+bool IsInside(const std::filesystem::path& directory, const std::filesystem::path& root)
+{
+  auto d = directory.begin();
+  for (auto r = root.begin(); r != root.end(); ++r, ++d)
+  {
+    if (d == directory.end() || *d != *r)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 /// Where the module is looked for, in order (GmshModule.h).
@@ -48,74 +69,105 @@ std::vector<std::string> Candidates()
   {
     candidates.push_back((here / kModuleName).string());
   }
-#ifdef DGMF_GMSH_MODULE_BUILD_PATH
-  candidates.emplace_back(DGMF_GMSH_MODULE_BUILD_PATH);
+#if defined(DGMF_GMSH_MODULE_BUILD_PATH) && defined(DGMF_BUILD_DIRECTORY)
+  // The build tree's module, for the build tree's programs only: an installed copy never falls
+  // back to a build tree.
+  std::error_code error;
+  const std::filesystem::path build = std::filesystem::canonical(DGMF_BUILD_DIRECTORY, error);
+  if (!here.empty() && !error && IsInside(here, build))
+  {
+    candidates.emplace_back(DGMF_GMSH_MODULE_BUILD_PATH);
+  }
 #endif
   candidates.emplace_back(kModuleName);
   return candidates;
 }
 
-struct Loaded
+/// The module `handle`'s entry points, or a reason why it is not this build's module.
+std::optional<GmshModule> EntryPoints(void* handle, const std::string& candidate, std::string& why)
 {
-  GmshModule Module{ nullptr, nullptr };
-  std::string Failure; // why no module loaded, empty when one did
-};
+  using IdentityFunction = const char* (*)();
+  const auto identity =
+    reinterpret_cast<IdentityFunction>(::dlsym(handle, kGmshModuleIdentitySymbol));
+  if (!identity)
+  {
+    why =
+      candidate + " has no " + kGmshModuleIdentitySymbol + ": not a gmsh module of this program";
+    return std::nullopt;
+  }
+  if (std::strcmp(identity(), kGmshModuleIdentity) != 0)
+  {
+    why = candidate + " is the gmsh module of another build (" + identity() + ", this one " +
+      kGmshModuleIdentity + ")";
+    return std::nullopt;
+  }
+  const GmshModule module{ reinterpret_cast<decltype(GmshModule::Read)>(
+                             ::dlsym(handle, kGmshModuleReadSymbol)),
+    reinterpret_cast<decltype(GmshModule::Write)>(::dlsym(handle, kGmshModuleWriteSymbol)) };
+  if (!module.Read || !module.Write)
+  {
+    why = candidate + " lacks " + (module.Read ? kGmshModuleWriteSymbol : kGmshModuleReadSymbol);
+    return std::nullopt;
+  }
+  return module;
+}
 
-/// The first candidate that opens and has the entry points of this interface's version.
-Loaded Load()
+/// The first candidate that opens and is this build's module; else `failure` says why none.
+std::optional<GmshModule> Load(std::string& failure)
 {
-  Loaded loaded;
   std::string absent;
   for (const std::string& candidate : Candidates())
   {
+    std::error_code error;
     const bool byName = candidate.find('/') == std::string::npos;
-    if (!byName && !std::filesystem::exists(candidate))
+    if (!byName && !std::filesystem::exists(candidate, error))
     {
       absent += (absent.empty() ? "" : ", ") + candidate;
       continue;
     }
     // RTLD_LOCAL: gmsh's symbols stay out of the process's global scope.
     void* handle = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    std::string why;
     if (!handle)
     {
-      const char* error = ::dlerror();
-      loaded.Failure +=
-        (loaded.Failure.empty() ? "" : "; ") + std::string(error ? error : candidate);
-      continue;
+      const char* message = ::dlerror();
+      why = message ? message : candidate + ": cannot be opened";
     }
-    using VersionFunction = int (*)();
-    const auto version =
-      reinterpret_cast<VersionFunction>(::dlsym(handle, kGmshModuleVersionSymbol));
-    GmshModule module{ reinterpret_cast<decltype(GmshModule::Read)>(
-                         ::dlsym(handle, kGmshModuleReadSymbol)),
-      reinterpret_cast<decltype(GmshModule::Write)>(::dlsym(handle, kGmshModuleWriteSymbol)) };
-    if (!version || version() != kGmshModuleInterfaceVersion || !module.Read || !module.Write)
+    else if (std::optional<GmshModule> module = EntryPoints(handle, candidate, why))
     {
-      loaded.Failure += (loaded.Failure.empty() ? "" : "; ") + candidate +
-        " is not a gmsh module of this version of the program";
-      ::dlclose(handle);
-      continue;
+      return module; // kept open for the process's life
     }
-    loaded.Module = module; // kept open for the process's life
-    loaded.Failure.clear();
-    return loaded;
+    else
+    {
+      ::dlclose(handle);
+    }
+    failure += (failure.empty() ? "" : "; ") + why;
   }
   if (!absent.empty())
   {
-    loaded.Failure += (loaded.Failure.empty() ? "" : "; ") + std::string("no file ") + absent;
+    failure += (failure.empty() ? "" : "; ") + std::string("no file ") + absent;
   }
-  return loaded;
+  return std::nullopt;
 }
 } // namespace
 
-const GmshModule& LoadGmshModule(const std::string& file)
+GmshModule LoadGmshModule(const std::string& file)
 {
-  static const Loaded loaded = Load();
-  if (!loaded.Module.Read)
+  // Only a success is kept: a failure (a missing libgmsh, a wrong DGMF_GMSH_MODULE) is tried
+  // again on the next file, so that a long session recovers once it is fixed.
+  static std::mutex mutex;
+  static std::optional<GmshModule> loaded;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (!loaded)
   {
-    throw FileError(file + ": gmsh's library cannot be loaded: " + loaded.Failure);
+    std::string failure;
+    loaded = Load(failure);
+    if (!loaded)
+    {
+      throw FileError(file + ": gmsh's library cannot be loaded: " + failure);
+    }
   }
-  return loaded.Module;
+  return *loaded;
 }
 
 } // namespace meshfile

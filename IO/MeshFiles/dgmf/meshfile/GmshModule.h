@@ -1,13 +1,14 @@
 /**
  * @file GmshModule.h
  * @brief gmsh's library, loaded when a .msh file is first read or written, not when a program
- * starts. libgmsh (with OpenCASCADE, FLTK and their 70 libraries) took 0.12 - 0.15 s to load in
- * every process that linked it, dgmf-deform on a .vtu and ParaView loading the plugin included
+ * starts. libgmsh (with OpenCASCADE, FLTK and about 70 libraries in all) took 0.1 - 0.15 s to load
+ * in every process that linked it, dgmf-deform on a .vtu and ParaView loading the plugin included
  * (Documentation/speed.md, "Starting without gmsh"). The gmsh calls are in a module of their own,
  * libDGMFGmshFile.so (GmshModel.cxx, GmshSession.cxx), opened with dlopen: the file the
- * environment variable DGMF_GMSH_MODULE names if it is set (and only it), else first beside the
- * library or program that holds this code (an install tree: beside libDGMFIO.so), then at its
- * place in the build tree, then by the dynamic loader's search (LD_LIBRARY_PATH).
+ * environment variable DGMF_GMSH_MODULE names if it is set and not empty (and only it), else
+ * first beside the library or program that holds this code (an install tree: beside
+ * libDGMFIO.so), then, for code inside the build tree, at the module's place in the build tree,
+ * then by the dynamic loader's search (LD_LIBRARY_PATH).
  */
 #ifndef dgmf_meshfile_GmshModule_h
 #define dgmf_meshfile_GmshModule_h
@@ -33,18 +34,26 @@ struct GmshModule
     const double* points, std::size_t count, std::string& message);
 };
 
-/// The entry points' names and the interface's version, which the loader checks.
+/// The entry points' names.
 constexpr const char* kGmshModuleReadSymbol = "dgmf_meshfile_gmsh_read";
 constexpr const char* kGmshModuleWriteSymbol = "dgmf_meshfile_gmsh_write";
-constexpr const char* kGmshModuleVersionSymbol = "dgmf_meshfile_gmsh_interface_version";
-constexpr int kGmshModuleInterfaceVersion = 1;
+constexpr const char* kGmshModuleIdentitySymbol = "dgmf_meshfile_gmsh_build_identity";
+
+/// This build's identity (made once per build tree by CMake): a module of another build, whose
+/// NamedMesh or entry points may differ, is refused.
+#ifdef DGMF_GMSH_MODULE_IDENTITY
+constexpr const char* kGmshModuleIdentity = DGMF_GMSH_MODULE_IDENTITY;
+#else
+constexpr const char* kGmshModuleIdentity = "unknown";
+#endif
 
 /**
- * The gmsh module, loaded on the first call (thread-safe) and kept for the process's life. Throws
- * FileError("<file>: gmsh's library cannot be loaded: <where it looked and why>") when no module
- * loads; `file` only names the file in that message.
+ * The gmsh module's entry points, loaded on the first call (thread-safe) and kept for the
+ * process's life. Throws FileError("<file>: gmsh's library cannot be loaded: <where it looked and
+ * why>") when no module loads (tried again on the next call); `file` only names the file in that
+ * message.
  */
-const GmshModule& LoadGmshModule(const std::string& file);
+GmshModule LoadGmshModule(const std::string& file);
 
 } // namespace meshfile
 } // namespace dgmf
