@@ -57,8 +57,8 @@ int main()
   };
   const double pointerReference =
     best([&]() { dgmf::ComputeHexReferenceSizes(count, pointers.data(), references.data()); });
-  const double pointerDeformed = best([&]()
-    { dgmf::ComputeHexSizeSkew(count, references.data(), pointers.data(), quality.data()); });
+  const double pointerDeformed = best(
+    [&]() { dgmf::ComputeHexSizeSkew(count, references.data(), pointers.data(), quality.data()); });
   const double pointerMean = mean();
   const double groupReference = best(
     [&]() { dgmf::ComputeHexReferenceSizesInGroups(count, groups.data(), references.data()); });
