@@ -19,6 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -125,32 +127,48 @@ TEST(FaceQualityFilters, APolyhedronGetsASizeSkewAndTheSameNonOrthogonalityAsAHe
   }
 }
 
-TEST(FaceQualityFilters, CellsInvalidInTheInputAreCountedApartFromCellsTheMotionInverts)
+namespace
 {
-  // The second cube dented (corner 6 below its mid-plane): OpenFOAM accepts it, the corner
-  // metric calls it inverted.
-  vtkSmartPointer<vtkUnstructuredGrid> dented = TwoCubes(false);
-  dented->GetPoints()->SetPoint(10, 1.6, 0.6, 0.3);
+/**
+ * Cell `cell` of `mesh` dented by moving point `dent` inside it (`inside`: OpenFOAM accepts the
+ * cell, the corner metric calls it inverted) is counted invalid in the input, not inverted, with
+ * the size-skew of an unchanged cell; the dent pushed through the cell's bottom (`through`)
+ * inverts it, and it stays counted invalid in the input.
+ */
+void ExpectDentedCellJudgedThroughItsFaces(vtkUnstructuredGrid* mesh, vtkIdType cell,
+  vtkIdType dent, const std::array<double, 3>& inside, const std::array<double, 3>& through)
+{
+  vtkNew<vtkUnstructuredGrid> dented;
+  dented->DeepCopy(mesh);
+  dented->GetPoints()->SetPoint(dent, inside.data());
   vtkNew<vtkSizeSkewQualityFilter> quality;
   vtkUnstructuredGrid* same = Measure(quality, dented, dented);
   EXPECT_EQ(Field(same, "InputInvalidCellCount"), 1.0);
   EXPECT_EQ(Field(same, "InvertedCellCount"), 0.0);
-  EXPECT_EQ(same->GetCellData()->GetArray("InputInvalid")->GetTuple1(1), 1.0);
-  EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(1), 1.0, 1e-12);
-  // The dent pushed through the bottom: made invalid by the deformation.
-  vtkNew<vtkUnstructuredGrid> through;
-  through->DeepCopy(dented);
-  through->GetPoints()->SetPoint(10, 1.6, 0.6, -0.5);
-  vtkUnstructuredGrid* inverted = Measure(quality, through, dented);
+  EXPECT_EQ(same->GetCellData()->GetArray("InputInvalid")->GetTuple1(cell), 1.0);
+  EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(cell), 1.0, 1e-12);
+  vtkNew<vtkUnstructuredGrid> pushed;
+  pushed->DeepCopy(dented);
+  pushed->GetPoints()->SetPoint(dent, through.data());
+  vtkUnstructuredGrid* inverted = Measure(quality, pushed, dented);
   EXPECT_EQ(Field(inverted, "InvertedCellCount"), 1.0);
+  EXPECT_EQ(inverted->GetCellData()->GetArray("Inverted")->GetTuple1(cell), 1.0);
   EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
+}
+} // namespace
+
+TEST(FaceQualityFilters, CellsInvalidInTheInputAreCountedApartFromCellsTheMotionInverts)
+{
+  // The second cube dented (corner 6 below its mid-plane).
+  ExpectDentedCellJudgedThroughItsFaces(
+    TwoCubes(false), 1, 10, { 1.6, 0.6, 0.3 }, { 1.6, 0.6, -0.5 });
 }
 
 TEST(FaceQualityFilters, ADentedCellPastTheFirstGroupOfFourIsJudgedThroughItsFaces)
 {
   // 7 separate unit cubes, the sixth (cell 5: the second lane of the second group of four that the
-  // metric evaluates together) dented as above: the deformed corners of that lane are taken out
-  // of the group for the faces' judgement.
+  // metric evaluates together) dented the same way: the deformed corners of that lane are taken
+  // out of the group for the faces' judgement.
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkUnstructuredGrid> cubes;
@@ -166,22 +184,9 @@ TEST(FaceQualityFilters, ADentedCellPastTheFirstGroupOfFourIsJudgedThroughItsFac
     }
     cubes->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
   }
-  // Corner 5 of cube 5 (x = 11, y = 0, z = 1) moved inside, as the dent of TwoCubes.
-  const vtkIdType dent = 8 * 5 + 5;
-  cubes->GetPoints()->SetPoint(dent, 10.6, 0.6, 0.3);
-  vtkNew<vtkSizeSkewQualityFilter> quality;
-  vtkUnstructuredGrid* same = Measure(quality, cubes, cubes);
-  EXPECT_EQ(Field(same, "InputInvalidCellCount"), 1.0);
-  EXPECT_EQ(Field(same, "InvertedCellCount"), 0.0);
-  EXPECT_EQ(same->GetCellData()->GetArray("InputInvalid")->GetTuple1(5), 1.0);
-  EXPECT_NEAR(same->GetCellData()->GetArray("SizeSkew")->GetTuple1(5), 1.0, 1e-12);
-  vtkNew<vtkUnstructuredGrid> through;
-  through->DeepCopy(cubes);
-  through->GetPoints()->SetPoint(dent, 10.6, 0.6, -0.5);
-  vtkUnstructuredGrid* inverted = Measure(quality, through, cubes);
-  EXPECT_EQ(Field(inverted, "InvertedCellCount"), 1.0);
-  EXPECT_EQ(inverted->GetCellData()->GetArray("Inverted")->GetTuple1(5), 1.0);
-  EXPECT_EQ(Field(inverted, "InputInvalidCellCount"), 1.0);
+  // Corner 5 of cube 5 (x = 11, y = 0, z = 1), as the dent of TwoCubes.
+  ExpectDentedCellJudgedThroughItsFaces(
+    cubes, 5, 8 * 5 + 5, { 10.6, 0.6, 0.3 }, { 10.6, 0.6, -0.5 });
 }
 
 namespace
