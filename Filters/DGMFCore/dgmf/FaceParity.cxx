@@ -35,12 +35,13 @@ struct Hash128
   }
 };
 
-/// Whether two of `hashes` are equal (a cell with two faces of the same points).
-bool HasTwinFaces(std::vector<Hash128>& hashes)
+/// Whether two of the `count` `hashes` are equal (a cell with two faces of the same points); may
+/// reorder them.
+inline bool HasTwinFaces(Hash128* hashes, std::size_t count)
 {
-  if (hashes.size() <= 8)
+  if (count <= 8)
   {
-    for (std::size_t a = 1; a < hashes.size(); ++a)
+    for (std::size_t a = 1; a < count; ++a)
     {
       for (std::size_t b = 0; b < a; ++b)
       {
@@ -52,8 +53,8 @@ bool HasTwinFaces(std::vector<Hash128>& hashes)
     }
     return false;
   }
-  std::sort(hashes.begin(), hashes.end());
-  return std::adjacent_find(hashes.begin(), hashes.end()) != hashes.end();
+  std::sort(hashes, hashes + count);
+  return std::adjacent_find(hashes, hashes + count) != hashes + count;
 }
 
 /// A point id's 128-bit mix.
@@ -139,15 +140,9 @@ bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int c
       sum.Low ^= face.Low;
       sum.High ^= face.High;
     }
-    for (int a = 1; a < faces; ++a)
+    if (HasTwinFaces(faceHash, static_cast<std::size_t>(faces)))
     {
-      for (int b = 0; b < a; ++b)
-      {
-        if (faceHash[a] == faceHash[b])
-        {
-          return true;
-        }
-      }
+      return true;
     }
   }
   return false;
@@ -209,7 +204,7 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           sum.Low ^= face.Low;
           sum.High ^= face.High;
         }
-        refuse = refuse || HasTwinFaces(faces);
+        refuse = refuse || HasTwinFaces(faces.data(), faces.size());
       };
       const std::size_t end = std::min(numberOfCells, (block + 1) * CellsPerBlock);
       for (std::size_t c = block * CellsPerBlock; c < end && !refuse; ++c)
