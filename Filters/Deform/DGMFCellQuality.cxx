@@ -103,22 +103,6 @@ void GatherCorners(
   }
 }
 
-/// The 8 corners of a hexahedron (ids `pts` in VTK's order, read in the metric's `order`) from
-/// `points` into slot `slot` of `groups` (dgmf::HexGroupIndex's layout).
-void GatherHexCornersIntoGroups(
-  const vtkIdType* pts, const int* order, const double* points, double* groups, int slot)
-{
-  double* group = groups + static_cast<std::size_t>(slot / 4) * dgmf::kHexGroupDoubles;
-  const auto lane = static_cast<std::size_t>(slot % 4);
-  for (int k = 0; k < 8; ++k)
-  {
-    const double* p = points + 3 * static_cast<std::size_t>(pts[order[k]]);
-    group[dgmf::HexGroupIndex(k, 0, lane)] = p[0];
-    group[dgmf::HexGroupIndex(k, 1, lane)] = p[1];
-    group[dgmf::HexGroupIndex(k, 2, lane)] = p[2];
-  }
-}
-
 /**
  * Hexahedra gathered from a block of cells and evaluated together
  * (dgmf::ComputeHexSizeSkewInGroups, four at a time): their deformed corners, and their original
@@ -139,27 +123,18 @@ struct HexBatch
   bool Add(std::size_t c, const vtkIdType* pts, const int* order, const double* originalPoints,
     const double* deformedPoints, bool withOriginal)
   {
-    GatherHexCornersIntoGroups(pts, order, deformedPoints, this->Deformed, this->Count);
-    if (withOriginal)
+    const auto slot = static_cast<std::size_t>(this->Count);
+    for (int k = 0; k < 8; ++k)
     {
-      GatherHexCornersIntoGroups(pts, order, originalPoints, this->Original, this->Count);
+      const auto point = 3 * static_cast<std::size_t>(pts[order[k]]);
+      dgmf::StoreHexGroupCorner(this->Deformed, slot, k, deformedPoints + point);
+      if (withOriginal)
+      {
+        dgmf::StoreHexGroupCorner(this->Original, slot, k, originalPoints + point);
+      }
     }
     this->Cells[this->Count++] = c;
     return this->Count == Capacity;
-  }
-
-  /// The deformed corners of slot `slot` as one cell's 8 x 3 coordinates.
-  void DeformedCorners(int slot, double* corners) const
-  {
-    const double* group =
-      this->Deformed + static_cast<std::size_t>(slot / 4) * dgmf::kHexGroupDoubles;
-    for (int k = 0; k < 8; ++k)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        corners[3 * k + c] = group[dgmf::HexGroupIndex(k, c, static_cast<std::size_t>(slot % 4))];
-      }
-    }
   }
 };
 } // namespace
@@ -253,7 +228,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
             CellShapeOf(types[b.Cells[i]], shape, order);
             cells->GetCellAtId(static_cast<vtkIdType>(b.Cells[i]), npts, pts, scratch);
             GatherCorners(8, pts, order, originalPoints, original);
-            b.DeformedCorners(static_cast<int>(i), deformed);
+            dgmf::LoadHexGroupCell(b.Deformed, i, deformed);
             b.Quality[i] = dgmf::JudgeInvalidInputCell(shape, original, deformed);
           }
           write(b.Cells[i], b.Quality[i]);

@@ -157,18 +157,6 @@ inline void ComputeHexEdges(const double* group, FourHexEdges& edges)
     edges);
 }
 
-/// Lane `lane` of `group` as one cell's 8 x 3 coordinates.
-inline void LaneCorners(const double* group, std::size_t lane, double* corners)
-{
-  for (int k = 0; k < 8; ++k)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      corners[3 * k + c] = group[HexGroupIndex(k, c, lane)];
-    }
-  }
-}
-
 /**
  * The group of cells `first` .. `first` + 3 (a multiple of 4) of `count`: the last group's missing
  * lanes are filled with its last cell in `scratch` (their results are computed and not written).
@@ -203,13 +191,9 @@ inline void InGroupsOf64(std::size_t count, const double* const* cells, Evaluate
     const std::size_t n = std::min(kBlock, count - first);
     for (std::size_t i = 0; i < n; ++i)
     {
-      double* group = groups + i / 4 * kHexGroupDoubles;
       for (int k = 0; k < 8; ++k)
       {
-        for (int c = 0; c < 3; ++c)
-        {
-          group[HexGroupIndex(k, c, i % 4)] = cells[first + i][3 * k + c];
-        }
+        StoreHexGroupCorner(groups, i, k, cells[first + i] + 3 * k);
       }
     }
     evaluate(first, n, groups);
@@ -329,7 +313,7 @@ void ComputeHexSizeSkewInGroups(std::size_t count, const double* referenceSizes,
       else
       {
         double corners[24];
-        LaneCorners(group, l, corners);
+        LoadHexGroupCell(group, l, corners);
         quality[first + l] = HexSizeSkewFromReference(reference[l], corners);
       }
     }

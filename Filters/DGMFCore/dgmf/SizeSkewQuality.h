@@ -115,6 +115,29 @@ constexpr std::size_t HexGroupIndex(int corner, int coordinate, std::size_t lane
   return static_cast<std::size_t>(3 * corner + coordinate) * 4 + lane;
 }
 
+/// Stores the 3 coordinates `point` as corner `corner` of cell `cell` of `groups`.
+inline void StoreHexGroupCorner(double* groups, std::size_t cell, int corner, const double* point)
+{
+  double* group = groups + cell / 4 * kHexGroupDoubles;
+  for (int c = 0; c < 3; ++c)
+  {
+    group[HexGroupIndex(corner, c, cell % 4)] = point[c];
+  }
+}
+
+/// Cell `cell` of `groups` as one cell's 8 x 3 coordinates.
+inline void LoadHexGroupCell(const double* groups, std::size_t cell, double* corners)
+{
+  const double* group = groups + cell / 4 * kHexGroupDoubles;
+  for (int k = 0; k < 8; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      corners[3 * k + c] = group[HexGroupIndex(k, c, cell % 4)];
+    }
+  }
+}
+
 /**
  * ComputeHexReferenceSizes of `count` hexahedra given in groups: the same bits.
  * @param originalGroups (count + 3) / 4 groups; the last group's lanes past `count` are not read
