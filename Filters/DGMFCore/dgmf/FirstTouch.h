@@ -18,11 +18,12 @@ namespace dgmf
 {
 
 /**
- * Faults in the pages of [begin, begin + bytes) for writing, by one store per page; the range's
- * values are unspecified afterwards (zero on fresh memory): for arrays whose every value is
- * written later. Much cheaper than zeroing the array after the kernel did (std::vector's
- * value-initialisation, memset). Linux's madvise(MADV_POPULATE_WRITE), a fifth cheaper alone,
- * was measured slower beside CGAL's insertion (it holds the address space's lock).
+ * Faults in the pages of [begin, begin + bytes) for writing: with Linux's
+ * madvise(MADV_POPULATE_WRITE) (5.14 and later), one call for the range, else one store per page.
+ * The range's values are unspecified afterwards (zero on fresh memory): for arrays whose every
+ * value is written later. Much cheaper than zeroing the array after the kernel did (std::vector's
+ * value-initialisation, memset). Call it on parts of a few MB: the call holds the address space's
+ * lock for reading, so other threads' allocations wait for one part at most.
  */
 void FirstTouch(void* begin, std::size_t bytes);
 
