@@ -6,6 +6,7 @@
 
 #include "dgmf/CellFaces.h"
 #include "dgmf/DecomposedSizeSkew.h"
+#include "dgmf/FirstTouch.h"
 
 #include "vtkPoints.h"
 
@@ -146,7 +147,11 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
 {
   const vtkIdType numberOfCells = mesh->GetNumberOfCells();
   // An array kept from the last execution with as many values is written in place (its pages
-  // are mapped already: every value is written below).
+  // are mapped already: every value is written below). New memory, and the hexahedra's reference
+  // sizes when they are to be computed, is faulted in first, in parts on the threads: the
+  // kernel's MADV_POPULATE_WRITE costs less than the page faults of the writes would
+  // (dgmf::FirstTouch).
+  std::vector<dgmf::FirstTouchPart> newMemory;
   for (vtkDataArray* array :
     std::initializer_list<vtkDataArray*>{ sizeSkew, inverted, inputInvalid })
   {
@@ -155,8 +160,19 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
     {
       array->SetNumberOfComponents(1);
       AllocateTuples(array, numberOfCells);
+      dgmf::AppendFirstTouchParts(array->GetVoidPointer(0),
+        static_cast<std::size_t>(numberOfCells) *
+          static_cast<std::size_t>(array->GetDataTypeSize()),
+        newMemory);
     }
   }
+  if (references.Sizes && !references.Known)
+  {
+    dgmf::AppendFirstTouchParts(
+      references.Sizes, static_cast<std::size_t>(numberOfCells) * sizeof(double), newMemory);
+  }
+  dgmf::ForEachBlock(parallelFor, newMemory.size(),
+    [&](std::size_t part) { dgmf::FirstTouch(newMemory[part].Begin, newMemory[part].Bytes); });
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
   unsigned char* invalid = inputInvalid->GetPointer(0);

@@ -62,19 +62,18 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
     return *this->Mapping;
   }
   const std::vector<vtkDoubleArray*> arrays = beforeBuild();
-  // The arrays' first touch in parts of 8 MB, so that both threads share it once the graph's
-  // insertion is done: their pages faulted in, no values written (the mapping writes them all).
-  constexpr std::size_t part = std::size_t(1) << 20; // doubles
-  dgmf::DelaunayGraph::SideJobs touches;
+  // The arrays' first touch in parts, so that both threads share it once the graph's insertion
+  // is done: their pages faulted in, no values written (the mapping writes them all).
+  std::vector<dgmf::FirstTouchPart> parts;
   for (vtkDoubleArray* array : arrays)
   {
-    const auto size = static_cast<std::size_t>(array->GetDataSize());
-    for (std::size_t begin = 0; begin < size; begin += part)
-    {
-      double* values = array->GetPointer(0) + begin;
-      const std::size_t count = std::min(part, size - begin);
-      touches.emplace_back([values, count]() { dgmf::FirstTouch(values, count * sizeof(double)); });
-    }
+    dgmf::AppendFirstTouchParts(
+      array->GetPointer(0), static_cast<std::size_t>(array->GetDataSize()) * sizeof(double), parts);
+  }
+  dgmf::DelaunayGraph::SideJobs touches;
+  for (const dgmf::FirstTouchPart& part : parts)
+  {
+    touches.emplace_back([part]() { dgmf::FirstTouch(part.Begin, part.Bytes); });
   }
   const dgmf::DelaunayMapping& built =
     this->Build(problem, pointsArray, hintStride(), touches, parallelFor);

@@ -61,6 +61,30 @@ TEST(FirstTouch, MakesEveryPageOfItsRangeResidentAndNoOther)
 }
 #endif
 
+TEST(FirstTouch, PartsCoverTheRangeOnceInPiecesOfAtMostThePartSize)
+{
+  // Sizes below, at and around multiples of the part size; parts are appended to what is there.
+  const std::size_t part = dgmf::FirstTouchPartBytes;
+  for (const std::size_t bytes :
+    { std::size_t{ 0 }, std::size_t{ 1 }, part - 1, part, part + 1, 3 * part, 3 * part + 17 })
+  {
+    std::vector<dgmf::FirstTouchPart> parts{ { nullptr, 5 } };
+    char* begin = reinterpret_cast<char*>(std::uintptr_t{ 1 } << 20);
+    dgmf::AppendFirstTouchParts(begin, bytes, parts);
+    ASSERT_EQ(parts.front().Bytes, 5u);
+    ASSERT_EQ(parts.size() - 1, (bytes + part - 1) / part) << bytes << " bytes";
+    char* next = begin;
+    for (std::size_t k = 1; k < parts.size(); ++k)
+    {
+      EXPECT_EQ(parts[k].Begin, next) << bytes << " bytes, part " << k;
+      EXPECT_GT(parts[k].Bytes, 0u);
+      EXPECT_LE(parts[k].Bytes, part);
+      next += parts[k].Bytes;
+    }
+    EXPECT_EQ(next, begin + bytes);
+  }
+}
+
 TEST(FirstTouch, AnUninitializedVectorKeepsTheValuesItIsGiven)
 {
   dgmf::UninitializedVector<double> values(5, 2.5);

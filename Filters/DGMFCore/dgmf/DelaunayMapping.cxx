@@ -24,9 +24,6 @@ constexpr std::size_t GatherAhead = 16;
 /// Nodes per block of the boundary nodes' search.
 constexpr std::size_t KindBlock = std::size_t(1) << 16;
 
-/// Values (8 MB of doubles) per first-touch job beside the graph's insertion: parts small
-/// enough for both threads to share the end of the work evenly.
-constexpr std::size_t SideJobPart = std::size_t(1) << 20;
 } // namespace
 
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
@@ -102,15 +99,16 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   this->Weights.resize(numberOfNodes * static_cast<std::size_t>(n));
   this->NodeElement.resize(numberOfNodes);
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
-  for (std::size_t begin = 0; begin < this->Weights.size(); begin += SideJobPart)
+  std::vector<FirstTouchPart> weightParts;
+  AppendFirstTouchParts(this->Weights.data(), this->Weights.size() * sizeof(double), weightParts);
+  for (const FirstTouchPart& part : weightParts)
   {
-    const std::size_t count = std::min(SideJobPart, this->Weights.size() - begin);
-    jobs.emplace_back(
-      [this, begin, count]() { FirstTouch(this->Weights.data() + begin, count * sizeof(double)); });
+    jobs.emplace_back([part]() { FirstTouch(part.Begin, part.Bytes); });
   }
-  for (std::size_t begin = 0; begin < numberOfNodes; begin += 2 * SideJobPart)
+  const std::size_t elementPart = FirstTouchPartBytes / sizeof(std::int32_t);
+  for (std::size_t begin = 0; begin < numberOfNodes; begin += elementPart)
   {
-    const std::size_t count = std::min(2 * SideJobPart, numberOfNodes - begin);
+    const std::size_t count = std::min(elementPart, numberOfNodes - begin);
     jobs.emplace_back(
       [this, begin, count]() { std::fill_n(this->NodeElement.data() + begin, count, NotLocated); });
   }

@@ -1,5 +1,6 @@
 #include "dgmf/FirstTouch.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 
@@ -73,6 +74,15 @@ void FirstTouch(void* begin, std::size_t bytes)
   for (std::size_t offset = toNextPage; offset < bytes; offset += Page)
   {
     bytesOf[offset] = 0;
+  }
+}
+
+void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouchPart>& parts)
+{
+  for (std::size_t offset = 0; offset < bytes; offset += FirstTouchPartBytes)
+  {
+    parts.push_back(
+      { static_cast<char*>(begin) + offset, std::min(FirstTouchPartBytes, bytes - offset) });
   }
 }
 

@@ -27,6 +27,20 @@ namespace dgmf
  */
 void FirstTouch(void* begin, std::size_t bytes);
 
+/// The size of the parts in which large arrays are first touched by several threads: small
+/// enough for two threads to share the end of the work evenly, large enough to cost one call each.
+constexpr std::size_t FirstTouchPartBytes = std::size_t(8) << 20;
+
+/// A part of a range of memory to first touch.
+struct FirstTouchPart
+{
+  void* Begin;
+  std::size_t Bytes;
+};
+
+/// Appends [begin, begin + bytes) to `parts`, cut into parts of at most FirstTouchPartBytes.
+void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouchPart>& parts);
+
 /**
  * An allocator whose default construction leaves trivial values uninitialised: a
  * std::vector<T, DefaultInitAllocator<T>> resized to n elements neither writes nor touches them
