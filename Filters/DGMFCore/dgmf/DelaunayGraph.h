@@ -200,7 +200,10 @@ private:
   double SeedInverseSize = 1.0;
   std::int64_t SeedCells[3] = { 1, 1, 1 };
   std::vector<std::int32_t> SeedGrid;
-  /// CGAL's triangulation of the perturbed points (3 coordinates each).
+  /// An empty CGAL triangulation with storage for the elements of `count` points.
+  void ReserveTriangulation(std::size_t count);
+  /// CGAL's triangulation (made by ReserveTriangulation) of the perturbed points (3 coordinates
+  /// each).
   void InsertPoints(const std::vector<double>& moved, std::size_t count);
   /// The vertices' numbers, the elements' order, records and seed grid, and the flat elements.
   void BuildElements(

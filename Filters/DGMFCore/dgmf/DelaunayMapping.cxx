@@ -98,19 +98,22 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   // is written later, boundary nodes' below; the elements need their "not located" mark).
   this->Weights.resize(numberOfNodes * static_cast<std::size_t>(n));
   this->NodeElement.resize(numberOfNodes);
-  jobs.insert(jobs.end(), alongside.begin(), alongside.end());
-  std::vector<FirstTouchPart> weightParts;
-  AppendFirstTouchParts(this->Weights.data(), this->Weights.size() * sizeof(double), weightParts);
-  for (const FirstTouchPart& part : weightParts)
-  {
-    jobs.emplace_back([part]() { FirstTouch(part.Begin, part.Bytes); });
-  }
+  // The elements' marks (stores) before the caller's jobs and the weights' first touch (the
+  // kernel's MADV_POPULATE_WRITE, which holds the address space's lock in turns): CGAL allocates
+  // its large arrays (perturbation, insertion order) in the meantime, without waiting for it.
   const std::size_t elementPart = FirstTouchPartBytes / sizeof(std::int32_t);
   for (std::size_t begin = 0; begin < numberOfNodes; begin += elementPart)
   {
     const std::size_t count = std::min(elementPart, numberOfNodes - begin);
     jobs.emplace_back(
       [this, begin, count]() { std::fill_n(this->NodeElement.data() + begin, count, NotLocated); });
+  }
+  jobs.insert(jobs.end(), alongside.begin(), alongside.end());
+  std::vector<FirstTouchPart> weightParts;
+  AppendFirstTouchParts(this->Weights.data(), this->Weights.size() * sizeof(double), weightParts);
+  for (const FirstTouchPart& part : weightParts)
+  {
+    jobs.emplace_back([part]() { FirstTouch(part.Begin, part.Bytes); });
   }
   this->Graph = std::make_unique<DelaunayGraph>(
     dimension, boundaryXYZ.data(), this->BoundaryNodes.size(), parallelFor, jobs);
