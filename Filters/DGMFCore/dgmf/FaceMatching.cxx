@@ -255,6 +255,16 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
       sink.KeepPairs = keepPairs;
       std::vector<std::uint8_t> paired;
       const std::size_t end = std::min(numberOfPoints, (block + 1) * PointsPerBlock);
+      if (keepPairs && end > block * PointsPerBlock)
+      {
+        // At most one pair per two of the block's records: no growth (copies and their page
+        // faults: a tenth of the first run's faults at 8.2M hexahedra).
+        const std::size_t begin = block * PointsPerBlock;
+        const std::uint64_t first =
+          begin == 0 ? 0 : next[begin - 1].load(std::memory_order_relaxed);
+        sink.Pairs.reserve(
+          static_cast<std::size_t>(next[end - 1].load(std::memory_order_relaxed) - first) / 2);
+      }
       for (std::size_t p = block * PointsPerBlock; p < end; ++p)
       {
         const std::uint64_t first = p == 0 ? 0 : next[p - 1].load(std::memory_order_relaxed);

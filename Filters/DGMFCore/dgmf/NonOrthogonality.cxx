@@ -2,10 +2,13 @@
 
 #include "dgmf/CellFaces.h"
 #include "dgmf/CellGeometry.h"
+#include "dgmf/FirstTouch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <tuple>
 
 namespace dgmf
@@ -23,12 +26,47 @@ struct FaceGeometry
   Vec3 Area;
 };
 
+/// A polygon of N corners (N > 3) by OpenFOAM's decomposition about its mean point; the same
+/// operations in the same order for any N, each corner loaded once.
+template <int N>
+FaceGeometry PolygonOf(const Vec3* p)
+{
+  Vec3 mean{ 0.0, 0.0, 0.0 };
+  for (int k = 0; k < N; ++k)
+  {
+    mean = mean + p[k];
+  }
+  mean = (1.0 / static_cast<double>(N)) * mean;
+  Vec3 sumN{ 0.0, 0.0, 0.0 }, sumAc{ 0.0, 0.0, 0.0 };
+  double sumA = 0.0;
+  for (int k = 0; k < N; ++k)
+  {
+    const Vec3& next = p[(k + 1) % N];
+    const Vec3 normal = Cross(next - p[k], mean - p[k]);
+    const double a = Norm(normal);
+    sumN = sumN + normal;
+    sumA += a;
+    sumAc = sumAc + a * (p[k] + next + mean);
+  }
+  if (sumA < RootVSmall)
+  {
+    return { mean, { 0.0, 0.0, 0.0 } };
+  }
+  return { (1.0 / (3.0 * sumA)) * sumAc, 0.5 * sumN };
+}
+
 FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t n)
 {
   if (n == 3)
   {
     const Vec3 p0 = Load(points, ids[0]), p1 = Load(points, ids[1]), p2 = Load(points, ids[2]);
     return { (1.0 / 3.0) * (p0 + p1 + p2), 0.5 * Cross(p1 - p0, p2 - p0) };
+  }
+  if (n == 4) // the quadrilaterals of hexahedra, wedges and pyramids: unrolled
+  {
+    const Vec3 p[4] = { Load(points, ids[0]), Load(points, ids[1]), Load(points, ids[2]),
+      Load(points, ids[3]) };
+    return PolygonOf<4>(p);
   }
   Vec3 mean{ 0.0, 0.0, 0.0 };
   for (std::int64_t k = 0; k < n; ++k)
@@ -86,8 +124,8 @@ Vec3 CellCentreOf(
 }
 
 /// The centres of all cells, and the signed volumes (3 x) their faces give.
-void CellCentres(const FaceCells& cells, const double* points, std::vector<double>& centres,
-  std::vector<double>& volumes, const ParallelFor& parallelFor)
+void CellCentres(const FaceCells& cells, const double* points, UninitializedVector<double>& centres,
+  UninitializedVector<double>& volumes, const ParallelFor& parallelFor)
 {
   const std::size_t numberOfCells = cells.GetNumberOfCells();
   centres.resize(3 * numberOfCells);
@@ -105,24 +143,60 @@ void CellCentres(const FaceCells& cells, const double* points, std::vector<doubl
     });
 }
 
-/// The angles of the internal faces, degrees, and their maximum per cell and overall.
+/// The angle, in degrees, of a face whose cosine (clamped to [-1, 1]) is `cosine`. It decreases
+/// as the cosine grows, so a cell's largest angle is the angle of its smallest cosine.
+double AngleOf(double cosine)
+{
+  return std::acos(cosine) * 180.0 / Pi;
+}
+
+/// Lowers a cell's smallest cosine so far to `cosine` if that is smaller (from any thread).
+void LowerCosine(std::atomic<double>& slot, double cosine)
+{
+  double current = slot.load(std::memory_order_relaxed);
+  while (
+    cosine < current && !slot.compare_exchange_weak(current, cosine, std::memory_order_relaxed))
+  {
+  }
+}
+
+/// The largest angle of the internal faces, degrees, per cell and overall. Each face's cosine
+/// lowers its two cells' smallest cosine (the faces come by owner, so the owner's is kept until
+/// the owner changes); the angles are taken per cell at the end: one arc cosine a cell instead of
+/// one a face, and no array of the faces' angles.
 NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces,
   const std::vector<std::int8_t>& cellSign, const double* points,
-  const std::vector<double>& centres, const ParallelFor& parallelFor)
+  const UninitializedVector<double>& centres, const ParallelFor& parallelFor)
 {
-  std::vector<double> angles(faces.Size(), 0.0);
+  const std::size_t numberOfCells = cells.GetNumberOfCells();
+  constexpr double NoFace = 2.0;
+  const std::unique_ptr<std::atomic<double>[]> smallest(new std::atomic<double>[numberOfCells]);
+  parallelFor(0, numberOfCells, 1 << 16,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t c = begin; c < end; ++c)
+      {
+        smallest[c].store(NoFace, std::memory_order_relaxed);
+      }
+    });
   parallelFor(0, faces.Size(), 4096,
     [&](std::size_t begin, std::size_t end)
     {
       std::vector<std::int64_t> stream;
       std::int64_t streamCell = -1;
+      double ownerSmallest = NoFace;
       for (std::size_t f = begin; f < end; ++f)
       {
         const std::int64_t owner = faces.Owner[f], neighbour = faces.Neighbour[f];
         if (owner != streamCell) // the faces come by owner (FindInternalFaces)
         {
+          if (streamCell >= 0)
+          {
+            LowerCosine(smallest[static_cast<std::size_t>(streamCell)], ownerSmallest);
+          }
           cells.GetFaces(static_cast<std::size_t>(owner), stream);
           streamCell = owner;
+          ownerSmallest = NoFace;
         }
         std::int64_t n = 0;
         const std::int64_t* ids = FaceOfStream(stream.data(), faces.Face[f], n);
@@ -130,19 +204,35 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
         const Vec3 d = Load(centres.data(), neighbour) - Load(centres.data(), owner);
         const double cosine = cellSign[static_cast<std::size_t>(owner)] * Dot(d, face.Area) /
           (Norm(d) * Norm(face.Area) + RootVSmall);
-        angles[f] = std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180.0 / Pi;
+        const double clamped = std::max(-1.0, std::min(1.0, cosine)); // NaN: 1, an angle of 0
+        ownerSmallest = std::min(ownerSmallest, clamped);
+        LowerCosine(smallest[static_cast<std::size_t>(neighbour)], clamped);
+      }
+      if (streamCell >= 0)
+      {
+        LowerCosine(smallest[static_cast<std::size_t>(streamCell)], ownerSmallest);
       }
     });
   NonOrthogonalityResult result;
-  result.CellMaximum.assign(cells.GetNumberOfCells(), 0.0);
-  for (std::size_t f = 0; f < faces.Size(); ++f)
-  {
-    result.Maximum = std::max(result.Maximum, angles[f]);
-    for (std::int64_t cell : { faces.Owner[f], faces.Neighbour[f] })
+  result.CellMaximum.resize(numberOfCells);
+  const std::size_t blocks = (numberOfCells + (1 << 16) - 1) >> 16;
+  std::vector<double> blockMaximum(blocks, 0.0);
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t b)
     {
-      double& cellMaximum = result.CellMaximum[static_cast<std::size_t>(cell)];
-      cellMaximum = std::max(cellMaximum, angles[f]);
-    }
+      const std::size_t end = std::min(numberOfCells, (b + 1) << 16);
+      double maximum = 0.0;
+      for (std::size_t c = b << 16; c < end; ++c)
+      {
+        const double cosine = smallest[c].load(std::memory_order_relaxed);
+        result.CellMaximum[c] = cosine == NoFace ? 0.0 : AngleOf(cosine);
+        maximum = std::max(maximum, result.CellMaximum[c]);
+      }
+      blockMaximum[b] = maximum;
+    });
+  for (const double maximum : blockMaximum)
+  {
+    result.Maximum = std::max(result.Maximum, maximum);
   }
   return result;
 }
@@ -152,7 +242,7 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
 InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
   const double* original, const ParallelFor& parallelFor)
 {
-  std::vector<double> centres, volumes;
+  UninitializedVector<double> centres, volumes;
   CellCentres(cells, original, centres, volumes, parallelFor);
   InputOrientation orientation;
   orientation.CellSign.resize(volumes.size());
@@ -168,7 +258,7 @@ InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
 NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells, const InternalFaces& faces,
   const InputOrientation& orientation, const double* points, const ParallelFor& parallelFor)
 {
-  std::vector<double> centres, volumes;
+  UninitializedVector<double> centres, volumes;
   CellCentres(cells, points, centres, volumes, parallelFor);
   return Angles(cells, faces, orientation.CellSign, points, centres, parallelFor);
 }
