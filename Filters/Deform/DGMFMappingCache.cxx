@@ -71,10 +71,7 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
       array->GetPointer(0), static_cast<std::size_t>(array->GetDataSize()) * sizeof(double), parts);
   }
   dgmf::DelaunayGraph::SideJobs touches;
-  for (const dgmf::FirstTouchPart& part : parts)
-  {
-    touches.emplace_back([part]() { dgmf::FirstTouch(part.Begin, part.Bytes); });
-  }
+  dgmf::AppendFirstTouchJobs(parts, touches);
   const dgmf::DelaunayMapping& built =
     this->Build(problem, pointsArray, hintStride(), touches, parallelFor);
   if (built.GetNumberOfConflictingNodes() > 0)

@@ -320,6 +320,14 @@ void ReserveStorage(Elements& elements, Vertices& vertices, double perPoint, std
 }
 } // namespace
 
+void AppendFirstTouchJobs(const std::vector<FirstTouchPart>& parts, DelaunayGraph::SideJobs& jobs)
+{
+  for (const FirstTouchPart& part : parts)
+  {
+    jobs.emplace_back([part]() { FirstTouch(part.Begin, part.Bytes); });
+  }
+}
+
 void DelaunayGraph::ReserveTriangulation(std::size_t count)
 {
   if (this->Dimension == 2)

@@ -211,6 +211,9 @@ private:
   void BuildSeedGrid(const ParallelFor& parallelFor);
 };
 
+/// Appends to `jobs` one side job per part of `parts`: its first touch (FirstTouch).
+void AppendFirstTouchJobs(const std::vector<FirstTouchPart>& parts, DelaunayGraph::SideJobs& jobs);
+
 } // namespace dgmf
 
 #endif

@@ -111,10 +111,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
   std::vector<FirstTouchPart> weightParts;
   AppendFirstTouchParts(this->Weights.data(), this->Weights.size() * sizeof(double), weightParts);
-  for (const FirstTouchPart& part : weightParts)
-  {
-    jobs.emplace_back([part]() { FirstTouch(part.Begin, part.Bytes); });
-  }
+  AppendFirstTouchJobs(weightParts, jobs);
   this->Graph = std::make_unique<DelaunayGraph>(
     dimension, boundaryXYZ.data(), this->BoundaryNodes.size(), parallelFor, jobs);
   boundaryXYZ = std::vector<double>();

@@ -26,22 +26,24 @@ struct FaceGeometry
   Vec3 Area;
 };
 
-/// A polygon of N corners (N > 3) by OpenFOAM's decomposition about its mean point; the same
-/// operations in the same order for any N, each corner loaded once.
-template <int N>
-FaceGeometry PolygonOf(const Vec3* p)
+/// A polygon of `count` corners (more than 3) by OpenFOAM's decomposition about its mean point.
+/// N > 0 fixes the count at compile time (the loops unrolled); 0 takes `count`. The same
+/// operations in the same order either way.
+template <std::int64_t N>
+FaceGeometry PolygonOf(const Vec3* p, std::int64_t count)
 {
+  const std::int64_t n = N > 0 ? N : count;
   Vec3 mean{ 0.0, 0.0, 0.0 };
-  for (int k = 0; k < N; ++k)
+  for (std::int64_t k = 0; k < n; ++k)
   {
     mean = mean + p[k];
   }
-  mean = (1.0 / static_cast<double>(N)) * mean;
+  mean = (1.0 / static_cast<double>(n)) * mean;
   Vec3 sumN{ 0.0, 0.0, 0.0 }, sumAc{ 0.0, 0.0, 0.0 };
   double sumA = 0.0;
-  for (int k = 0; k < N; ++k)
+  for (std::int64_t k = 0; k < n; ++k)
   {
-    const Vec3& next = p[(k + 1) % N];
+    const Vec3& next = p[(k + 1) % n];
     const Vec3 normal = Cross(next - p[k], mean - p[k]);
     const double a = Norm(normal);
     sumN = sumN + normal;
@@ -66,30 +68,15 @@ FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t 
   {
     const Vec3 p[4] = { Load(points, ids[0]), Load(points, ids[1]), Load(points, ids[2]),
       Load(points, ids[3]) };
-    return PolygonOf<4>(p);
+    return PolygonOf<4>(p, 4);
   }
-  Vec3 mean{ 0.0, 0.0, 0.0 };
+  thread_local std::vector<Vec3> corners; // polyhedra's faces: any number of corners
+  corners.resize(static_cast<std::size_t>(std::max<std::int64_t>(n, 0)));
   for (std::int64_t k = 0; k < n; ++k)
   {
-    mean = mean + Load(points, ids[k]);
+    corners[static_cast<std::size_t>(k)] = Load(points, ids[k]);
   }
-  mean = (1.0 / static_cast<double>(n)) * mean;
-  Vec3 sumN{ 0.0, 0.0, 0.0 }, sumAc{ 0.0, 0.0, 0.0 };
-  double sumA = 0.0;
-  for (std::int64_t k = 0; k < n; ++k)
-  {
-    const Vec3 p = Load(points, ids[k]), next = Load(points, ids[(k + 1) % n]);
-    const Vec3 normal = Cross(next - p, mean - p);
-    const double a = Norm(normal);
-    sumN = sumN + normal;
-    sumA += a;
-    sumAc = sumAc + a * (p + next + mean);
-  }
-  if (sumA < RootVSmall)
-  {
-    return { mean, { 0.0, 0.0, 0.0 } };
-  }
-  return { (1.0 / (3.0 * sumA)) * sumAc, 0.5 * sumN };
+  return PolygonOf<0>(corners.data(), n);
 }
 
 /// The centre of a cell as OpenFOAM computes it (primitiveMeshCellCentresAndVols), with the
