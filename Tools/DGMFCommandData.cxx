@@ -253,8 +253,9 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
       : compression == "lzma" ? xml->SetCompressorTypeToLZMA()
       : compression == "none" ? xml->SetCompressorTypeToNone()
                               : xml->SetCompressorTypeToLZ4();
-    // VTK compresses block after block on one thread: 4 blocks per thread at once, same bytes.
-    xml->CompressAhead(4 * vtkSMPTools::GetEstimatedNumberOfThreads());
+    // VTK compresses block after block on its one thread, between its writes: the next 8 MiB
+    // of blocks are compressed on worker threads while it writes (same bytes).
+    xml->CompressAhead(vtkSMPTools::GetEstimatedNumberOfThreads());
     // What was read compressed and did not change (the cells, as a rule) is written with the
     // blocks it was read from, in their block size, instead of being compressed again.
     xml->PreferReadBlockSize(written);

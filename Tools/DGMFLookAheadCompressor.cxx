@@ -2,12 +2,14 @@
 
 #include "DGMFCompressorClasses.h"
 
-#include "vtkSMPTools.h"
-
 #include <algorithm>
+#include <condition_variable>
 #include <cstdint>
 #include <cstring>
-#include <map>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -17,8 +19,15 @@ namespace dgmf_cli
 namespace
 {
 
-/// VTK's compressor `Base`, compressing ahead. No vtkTypeMacro: the class name stays Base's,
-/// which the writer records in the file for its readers.
+/**
+ * VTK's compressor `Base`, compressing ahead on worker threads while VTK's writer writes. No
+ * vtkTypeMacro: the class name stays Base's, which the writer records in the file for its readers.
+ *
+ * The blocks of the array VTK is writing are queued in order, a window of them ahead of the block
+ * VTK asks for; the workers take them from the queue and compress them while the caller's thread
+ * writes the blocks before. Only the caller's thread changes the queue's ends; every block is
+ * compressed by Base itself, so the bytes are Base's.
+ */
 template <class Base>
 class LookAhead final
   : public Base
@@ -32,7 +41,11 @@ public:
     return compressor;
   }
 
-  void SetLookAhead(int blocks) { this->Blocks = std::max(1, blocks); }
+  void SetWorkers(int threads, std::size_t windowBytes)
+  {
+    this->Workers = std::max(1, threads);
+    this->WindowBytes = windowBytes;
+  }
 
   void RegisterRange(const void* begin, std::size_t bytes) override
   {
@@ -56,9 +69,9 @@ public:
 
   void ClearRanges() override
   {
+    this->StopWorkers(); // no worker reads the ranges' memory after this
     this->Ranges.clear();
     this->Compressed.clear();
-    this->Cache.clear();
   }
 
   std::size_t GetBlocksHandedAsRead() const override { return this->HandedAsRead; }
@@ -68,7 +81,7 @@ public:
 
 protected:
   LookAhead() = default;
-  ~LookAhead() override = default;
+  ~LookAhead() override { this->StopWorkers(); }
 
   size_t CompressBuffer(
     unsigned char const* data, size_t size, unsigned char* compressed, size_t space) override
@@ -93,28 +106,21 @@ protected:
         return block.second;
       }
     }
-    const auto cached = this->Cache.find(data);
-    if (cached != this->Cache.end() && cached->second.Size == size &&
-      cached->second.Bytes.size() <= space)
+    std::shared_ptr<Block> block = this->Take(data, size);
+    if (!block)
     {
-      const std::vector<unsigned char>& bytes = cached->second.Bytes;
-      std::copy(bytes.begin(), bytes.end(), compressed);
-      const size_t length = bytes.size();
-      this->Cache.erase(cached);
-      ++this->Hits;
-      return length;
+      return this->Base::CompressBuffer(data, size, compressed, space);
     }
-    ++this->Misses;
-    this->Cache.clear(); // VTK has moved on: what is left ahead will not be asked for
-    for (const Range& range : this->Ranges)
     {
-      if (size > 0 && at >= reinterpret_cast<std::uintptr_t>(range.Begin) &&
-        at + size <= reinterpret_cast<std::uintptr_t>(range.End))
-      {
-        return this->CompressAhead(range, data, size, compressed, space);
-      }
+      std::unique_lock<std::mutex> lock(this->Mutex);
+      this->BlockDone.wait(lock, [&block]() { return block->Done; });
     }
-    return this->Base::CompressBuffer(data, size, compressed, space);
+    if (!block->Ready || block->Bytes.size() > space)
+    {
+      return this->Base::CompressBuffer(data, size, compressed, space); // as VTK would
+    }
+    std::copy(block->Bytes.begin(), block->Bytes.end(), compressed);
+    return block->Bytes.size();
   }
 
 private:
@@ -130,85 +136,191 @@ private:
     std::size_t BlockSize;
     std::vector<std::pair<const unsigned char*, std::size_t>> Blocks;
   };
+  /// A block queued ahead: its values, and once Done its compressed bytes.
   struct Block
   {
+    const unsigned char* Data = nullptr;
     std::size_t Size = 0; ///< uncompressed size
     std::vector<unsigned char> Bytes;
+    bool Done = false;  ///< a worker has finished it (under Mutex)
     bool Ready = false; ///< compressed (a failure is left to the caller's thread, as VTK would)
   };
 
-  /// Compresses the block at `data` and up to Blocks - 1 blocks after it in `range`, in parallel;
-  /// returns the first as CompressBuffer does and keeps the others.
-  size_t CompressAhead(const Range& range, unsigned char const* data, size_t size,
-    unsigned char* compressed, size_t space)
+  /**
+   * The queued block for the `size` bytes at `data`, null when they lie in no registered range.
+   * A block that is not the next one queued (VTK has moved to another array) drops the queue and
+   * starts a new one there. Keeps a window of blocks queued after it.
+   */
+  std::shared_ptr<Block> Take(const unsigned char* data, std::size_t size)
   {
-    const std::size_t left = static_cast<std::size_t>(range.End - data);
-    const std::size_t count =
-      std::min<std::size_t>(static_cast<std::size_t>(this->Blocks), (left + size - 1) / size);
-    std::vector<Block> blocks(count);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1,
-      [&](vtkIdType begin, vtkIdType end)
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    if (this->Ahead.empty() || this->Ahead.front()->Data != data ||
+      this->Ahead.front()->Size != size)
+    {
+      ++this->Misses;
+      this->Ahead.clear();
+      this->Queue.clear(); // blocks a worker holds are finished and dropped
+      const auto at = reinterpret_cast<std::uintptr_t>(data);
+      const Range* inside = nullptr;
+      for (const Range& range : this->Ranges)
       {
-        for (vtkIdType k = begin; k < end; ++k)
+        if (size > 0 && at >= reinterpret_cast<std::uintptr_t>(range.Begin) &&
+          at + size <= reinterpret_cast<std::uintptr_t>(range.End))
         {
-          Block& block = blocks[static_cast<std::size_t>(k)];
-          const unsigned char* start = data + static_cast<std::size_t>(k) * size;
-          block.Size = std::min<std::size_t>(size, static_cast<std::size_t>(range.End - start));
-          try
-          {
-            block.Bytes.resize(this->GetMaximumCompressionSpace(block.Size));
-            const size_t length =
-              this->Base::CompressBuffer(start, block.Size, block.Bytes.data(), block.Bytes.size());
-            block.Bytes.resize(length);
-            block.Ready = length > 0;
-          }
-          catch (...)
-          {
-            block.Ready = false; // compressed again on the caller's thread when asked for
-          }
+          inside = &range;
         }
-      });
-    for (std::size_t k = 1; k < count; ++k)
-    {
-      if (blocks[k].Ready)
-      {
-        this->Cache[data + k * size] = std::move(blocks[k]);
       }
+      if (!inside)
+      {
+        return nullptr;
+      }
+      this->Next = data;
+      this->End = inside->End;
+      this->Size = size;
+      this->StartWorkers();
+      if (this->Threads.empty())
+      {
+        return nullptr;
+      }
+      this->Refill(true);
     }
-    if (!blocks[0].Ready || blocks[0].Bytes.size() > space)
+    else
     {
-      return this->Base::CompressBuffer(data, size, compressed, space);
+      ++this->Hits;
     }
-    std::copy(blocks[0].Bytes.begin(), blocks[0].Bytes.end(), compressed);
-    return blocks[0].Bytes.size();
+    std::shared_ptr<Block> block = std::move(this->Ahead.front());
+    this->Ahead.pop_front();
+    this->Refill(false);
+    return block;
   }
 
-  int Blocks = 1;
+  /// Queues blocks up to the window (when half of it is left, or `now`), and wakes the workers.
+  void Refill(bool now)
+  {
+    const std::size_t window = std::max<std::size_t>(1, this->WindowBytes / this->Size);
+    if (this->Next == this->End || (!now && 2 * this->Ahead.size() > window))
+    {
+      return;
+    }
+    while (this->Ahead.size() < window && this->Next != this->End)
+    {
+      auto block = std::make_shared<Block>();
+      block->Data = this->Next;
+      block->Size =
+        std::min<std::size_t>(this->Size, static_cast<std::size_t>(this->End - this->Next));
+      this->Next += block->Size;
+      this->Ahead.push_back(block);
+      this->Queue.push_back(std::move(block));
+    }
+    this->WorkQueued.notify_all();
+  }
+
+  /// Starts the workers if they are not running (under Mutex).
+  void StartWorkers()
+  {
+    if (!this->Threads.empty())
+    {
+      return;
+    }
+    this->Stopping = false;
+    try
+    {
+      for (int k = 0; k < this->Workers; ++k)
+      {
+        this->Threads.emplace_back([this]() { this->Work(); });
+      }
+    }
+    catch (...) // no thread to be had: the blocks the others cannot take are compressed on the spot
+    {
+    }
+  }
+
+  /// Drops the queue, lets the workers finish the blocks they hold, and joins them.
+  void StopWorkers()
+  {
+    {
+      const std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Stopping = true;
+      this->Queue.clear();
+      this->Ahead.clear();
+      this->WorkQueued.notify_all();
+    }
+    for (std::thread& thread : this->Threads)
+    {
+      thread.join();
+    }
+    this->Threads.clear();
+  }
+
+  /// A worker: compresses the queued blocks in order until stopped.
+  void Work()
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    for (;;)
+    {
+      this->WorkQueued.wait(lock, [this]() { return this->Stopping || !this->Queue.empty(); });
+      if (this->Stopping)
+      {
+        return;
+      }
+      std::shared_ptr<Block> block = std::move(this->Queue.front());
+      this->Queue.pop_front();
+      lock.unlock();
+      try
+      {
+        block->Bytes.resize(this->GetMaximumCompressionSpace(block->Size));
+        const size_t length = this->Base::CompressBuffer(
+          block->Data, block->Size, block->Bytes.data(), block->Bytes.size());
+        block->Bytes.resize(length);
+        block->Ready = length > 0;
+      }
+      catch (...)
+      {
+        block->Ready = false; // compressed again on the caller's thread
+      }
+      lock.lock();
+      block->Done = true;
+      this->BlockDone.notify_all();
+    }
+  }
+
+  int Workers = 1;
+  std::size_t WindowBytes = std::size_t(8) << 20;
   std::vector<Range> Ranges;
   std::vector<CompressedRange> Compressed;
-  std::map<const unsigned char*, Block> Cache;
   std::size_t HandedAsRead = 0;
   std::size_t Hits = 0;
   std::size_t Misses = 0;
+
+  // The queue, under Mutex: the blocks ahead in order (Ahead), those no worker has taken
+  // (Queue), where the next block starts, the range's end and the block size.
+  std::mutex Mutex;
+  std::condition_variable WorkQueued, BlockDone;
+  std::deque<std::shared_ptr<Block>> Ahead, Queue;
+  const unsigned char* Next = nullptr;
+  const unsigned char* End = nullptr;
+  std::size_t Size = 1;
+  bool Stopping = false;
+  std::vector<std::thread> Threads;
 };
 
 template <class Base>
-vtkSmartPointer<vtkDataCompressor> Make(int lookAhead)
+vtkSmartPointer<vtkDataCompressor> Make(int threads, std::size_t windowBytes)
 {
   vtkSmartPointer<LookAhead<Base>> compressor =
     vtkSmartPointer<LookAhead<Base>>::Take(LookAhead<Base>::New());
-  compressor->SetLookAhead(lookAhead);
+  compressor->SetWorkers(threads, windowBytes);
   return compressor;
 }
 
 } // namespace
 
 vtkSmartPointer<vtkDataCompressor> NewLookAheadCompressor(
-  const std::string& className, int lookAhead)
+  const std::string& className, int threads, std::size_t windowBytes)
 {
   return WithCompressorClass(className,
-    [lookAhead](auto* vtkClass)
-    { return Make<std::remove_pointer_t<decltype(vtkClass)>>(lookAhead); });
+    [threads, windowBytes](auto* vtkClass)
+    { return Make<std::remove_pointer_t<decltype(vtkClass)>>(threads, windowBytes); });
 }
 
 } // namespace dgmf_cli

@@ -169,7 +169,7 @@ bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
   return true;
 }
 
-void DGMFVTUWriter::CompressAhead(int blocks)
+void DGMFVTUWriter::CompressAhead(int threads, std::size_t windowBytes)
 {
   vtkDataCompressor* current = this->GetCompressor();
   if (!current)
@@ -177,7 +177,7 @@ void DGMFVTUWriter::CompressAhead(int blocks)
     return;
   }
   vtkSmartPointer<vtkDataCompressor> ahead =
-    NewLookAheadCompressor(current->GetClassName(), blocks);
+    NewLookAheadCompressor(current->GetClassName(), threads, windowBytes);
   if (ahead)
   {
     ahead->SetCompressionLevel(current->GetCompressionLevel());

@@ -19,6 +19,8 @@
 #include "vtkWeakPointer.h"       // for the added ghost arrays
 #include "vtkXMLUnstructuredGridWriter.h"
 
+#include <cstddef>
+
 class vtkDataArray;
 
 namespace dgmf_cli
@@ -28,7 +30,7 @@ namespace dgmf_cli
  * @class DGMFVTUWriter
  * @brief vtkXMLUnstructuredGridWriter with the array ranges computed in parallel (appended mode),
  * with SkipCellTypeScan the file version chosen without VTK's serial cell-type scan, and with
- * CompressAhead the blocks compressed in parallel.
+ * CompressAhead the blocks compressed on worker threads while VTK writes.
  *
  * Writes the same bytes as vtkXMLUnstructuredGridWriter with the same settings (tested).
  */
@@ -59,10 +61,11 @@ public:
 
   /**
    * Replaces the compressor set (LZ4, zlib or LZMA, with its level) by the same class compressing
-   * up to `blocks` blocks of an array at once in parallel (DGMFLookAheadCompressor.h): the same
-   * bytes. Call after choosing the compressor type; nothing happens for another compressor.
+   * an array's next blocks on `threads` worker threads while VTK writes, up to `windowBytes`
+   * ahead (default 8 MiB; DGMFLookAheadCompressor.h): the same bytes. Call after choosing the
+   * compressor type; nothing happens for another compressor.
    */
-  void CompressAhead(int blocks);
+  void CompressAhead(int threads, std::size_t windowBytes = std::size_t(8) << 20);
 
   /**
    * Takes the block size of the arrays of `grid` that were read with their compressed blocks

@@ -116,7 +116,8 @@ vtkSmartPointer<vtkUnstructuredGrid> MixedGrid(bool quadratic)
 }
 
 /// The .vtu `writer` writes for `grid` (to a string), with the given mode and compressor, and,
-/// for a DGMFVTUWriter with `ahead` > 0, the compressor's blocks compressed that many at once.
+/// for a DGMFVTUWriter with `ahead` > 0, the compressor's blocks compressed on two worker
+/// threads, a window of `ahead` blocks ahead.
 std::string Written(vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* grid, bool appended,
   int compressor, int ahead = 0, int blockSize = 1 << 12)
 {
@@ -128,7 +129,7 @@ std::string Written(vtkXMLUnstructuredGridWriter* writer, vtkUnstructuredGrid* g
   writer->SetBlockSize(blockSize);
   if (auto* ours = dgmf_cli::DGMFVTUWriter::SafeDownCast(writer); ours && ahead > 0)
   {
-    ours->CompressAhead(ahead);
+    ours->CompressAhead(2, static_cast<std::size_t>(ahead) * static_cast<std::size_t>(blockSize));
   }
   EXPECT_EQ(writer->Write(), 1);
   EXPECT_EQ(writer->GetErrorCode(), 0u);
@@ -190,8 +191,9 @@ TEST(VTUWriter, WritesTheBytesOfVtksWriterForLinearCells)
   }
 }
 
-// Blocks compressed ahead in parallel: VTK's bytes with each of its compressors, appended and
-// inline, windows of 2 and 5 blocks (the arrays' last blocks are shorter).
+// Blocks compressed ahead on worker threads: VTK's bytes with each of its compressors, appended
+// and inline, windows of 1, 2, 5 and 1000 blocks (the arrays' last blocks are shorter; 1000 is
+// more than any array has).
 TEST(VTUWriter, CompressingAheadWritesTheBytesOfVtksWriter)
 {
   for (const bool appended : { true, false })
@@ -199,12 +201,36 @@ TEST(VTUWriter, CompressingAheadWritesTheBytesOfVtksWriter)
     for (const int compressor :
       { vtkXMLWriterBase::LZ4, vtkXMLWriterBase::ZLIB, vtkXMLWriterBase::LZMA })
     {
-      for (const int ahead : { 2, 5 })
+      for (const int ahead : { 1, 2, 5, 1000 })
       {
         ExpectSameBytes([]() { return MixedGrid(false); }, true, appended, compressor, ahead);
       }
     }
   }
+}
+
+// One writer writing again: the workers stopped at the end of the first file start again for
+// the second, whose bytes are VTK's too.
+TEST(VTUWriter, CompressingAheadWritesAgainWithTheSameWriter)
+{
+  vtkNew<vtkXMLUnstructuredGridWriter> stock;
+  const std::string expected = Written(stock, MixedGrid(false), true, vtkXMLWriterBase::LZ4);
+  vtkNew<dgmf_cli::DGMFVTUWriter> ours;
+  vtkNew<vtkUnstructuredGrid> first;
+  first->ShallowCopy(MixedGrid(false));
+  ours->SkipCellTypeScan(first);
+  EXPECT_TRUE(Written(ours, first, true, vtkXMLWriterBase::LZ4, 3) == expected);
+  vtkDataCompressor* compressor = ours->GetCompressor();
+  auto* lookAhead = dynamic_cast<dgmf_cli::LookAheadCompressor*>(compressor);
+  ASSERT_NE(lookAhead, nullptr);
+  vtkNew<vtkUnstructuredGrid> second;
+  second->ShallowCopy(MixedGrid(false));
+  ours->SkipCellTypeScan(second);
+  ours->SetInputData(second);
+  EXPECT_EQ(ours->Write(), 1);
+  EXPECT_EQ(ours->GetCompressor(), compressor);
+  EXPECT_TRUE(ours->GetOutputString() == expected);
+  EXPECT_GT(lookAhead->GetCacheHits(), 2 * lookAhead->GetCacheMisses());
 }
 
 // Quadratic cells and a grid's own ghost arrays: VTK's own choice of version, no shortcut.
