@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -251,6 +254,54 @@ TEST(DelaunayGraph, TwoThreadsBuildTheSameGraphAsOne)
     const std::size_t inverted = serial.CountInvertedElements(fold.data());
     EXPECT_GT(inverted, serial.GetNumberOfElements() / 4);
     EXPECT_EQ(parallel.CountInvertedElements(fold.data(), dgmf_test::TwoThreadFor), inverted);
+  }
+}
+
+namespace
+{
+/// Element `e` of `graph` (built from `xyz`) as the sorted coordinates of its corners' points.
+std::vector<std::array<double, 3>> CornersOf(
+  const dgmf::DelaunayGraph& graph, const std::vector<double>& xyz, std::int32_t e)
+{
+  std::vector<std::array<double, 3>> corners;
+  for (int k = 0; k < graph.GetVerticesPerElement(); ++k)
+  {
+    const auto point = static_cast<std::size_t>(
+      graph.GetPointOfVertex()[static_cast<std::size_t>(graph.GetElement(e)[k])]);
+    corners.push_back({ xyz[3 * point], xyz[3 * point + 1], xyz[3 * point + 2] });
+  }
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+} // namespace
+
+// The elements' numbering is a function of the points, not of the order CGAL inserts and stores
+// them (which follows the input's order, and the storage reserved): the same points in another
+// order give element e the same corners, for every e.
+TEST(DelaunayGraph, TheElementsNumberingDoesNotDependOnThePointsOrder)
+{
+  for (const int dimension : { 2, 3 })
+  {
+    const std::vector<double> xyz = DegenerateCloud(dimension);
+    const std::size_t count = xyz.size() / 3;
+    std::vector<std::size_t> order(count);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::shuffle(order.begin(), order.end(), std::mt19937(11));
+    std::vector<double> shuffled(xyz.size());
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      std::copy(
+        xyz.begin() + 3 * order[i], xyz.begin() + 3 * order[i] + 3, shuffled.begin() + 3 * i);
+    }
+    const dgmf::DelaunayGraph graph(dimension, xyz.data(), count);
+    const dgmf::DelaunayGraph other(dimension, shuffled.data(), count);
+    ASSERT_EQ(other.GetNumberOfElements(), graph.GetNumberOfElements());
+    ASSERT_GT(graph.GetNumberOfElements(), 1000u);
+    for (std::int32_t e = 0; e < static_cast<std::int32_t>(graph.GetNumberOfElements()); ++e)
+    {
+      ASSERT_EQ(CornersOf(other, shuffled, e), CornersOf(graph, xyz, e))
+        << "element " << e << " in " << dimension << "D";
+    }
   }
 }
 

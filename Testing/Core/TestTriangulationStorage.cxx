@@ -1,7 +1,7 @@
 // CGAL's storage for the graph's triangulation, reserved before the insertion
 // (DelaunayGraph::ReserveTriangulation): the same triangulation, whether the storage was enough or
-// had to grow. (CGAL's iteration order does change with it: the graph's elements that share their
-// first vertex on the Hilbert curve keep that order, see speed.md.)
+// had to grow. (CGAL's iteration order does change with it; the graph's element order does not:
+// core.DelaunayGraph.TheElementsNumberingDoesNotDependOnThePointsOrder, speed.md.)
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

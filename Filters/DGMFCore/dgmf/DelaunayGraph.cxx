@@ -10,9 +10,12 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <exception>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -108,7 +111,11 @@ using PairSortTraits = std::conditional_t<std::is_same<Point, Kernel::Point_2>::
  * (a counting sort), so elements close in space are close in memory and a walk mostly stays in
  * cache. Sorting the vertices instead of the elements' centroids (6 times as many, the order of
  * issue 5) cut the ordering from 87 to 17 ms on the wing-body's 260,759 elements, for the same
- * location time within 10 %. The vertices' info() must be their numbers 0 .. vertices - 1.
+ * location time within 10 %. Elements with the same first vertex follow the order of their other
+ * vertices on the curve, and the curve is drawn through the vertices given in the order of their
+ * coordinates, so the order is a function of the points alone: not of CGAL's storage (whose
+ * iteration order changes with ReserveTriangulation), nor of the input's numbering. The
+ * vertices' info() must be their numbers 0 .. vertices - 1.
  */
 template <typename Handle, typename Triangulation, typename ElementIterator>
 std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator begin,
@@ -122,6 +129,10 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   {
     vertices.emplace_back(v->point(), v);
   }
+  // CGAL's Hilbert sort leaves a box's points in their given order when they all fall in one
+  // quarter of it: given in the order of their coordinates, not in CGAL's storage order.
+  std::sort(vertices.begin(), vertices.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
   CGAL::hilbert_sort(vertices.begin(), vertices.end(), PairSortTraits<Point, Vertex>(),
     CGAL::Hilbert_sort_middle_policy());
   std::vector<std::size_t> rank(vertices.size());
@@ -134,28 +145,48 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   {
     elements.push_back(e);
   }
-  std::vector<std::size_t> key(elements.size());
+  // Each element's vertices' ranks in increasing order (an element is its vertex set): the
+  // first picks its place on the curve, the others order the elements that share that first
+  // vertex, so the order does not depend on where CGAL keeps the elements.
+  using RankKey = std::array<std::uint32_t, 4>;
+  std::vector<RankKey> key(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
     [&](std::size_t e)
     {
-      std::size_t first = rank[static_cast<std::size_t>(elements[e]->vertex(0)->info())];
-      for (int k = 1; k < corners; ++k)
+      RankKey ranks;
+      ranks.fill(std::numeric_limits<std::uint32_t>::max());
+      for (int k = 0; k < corners; ++k)
       {
-        first = std::min(first, rank[static_cast<std::size_t>(elements[e]->vertex(k)->info())]);
+        ranks[static_cast<std::size_t>(k)] = static_cast<std::uint32_t>(
+          rank[static_cast<std::size_t>(elements[e]->vertex(k)->info())]);
       }
-      key[e] = first;
+      std::sort(ranks.begin(), ranks.end());
+      key[e] = ranks;
     });
   std::vector<std::size_t> start(vertices.size() + 1, 0);
-  for (std::size_t first : key)
+  for (const RankKey& ranks : key)
   {
-    ++start[first + 1];
+    ++start[ranks[0] + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Handle> ordered(elements.size());
-  for (std::size_t e = 0; e < elements.size(); ++e)
+  std::vector<std::uint32_t> order(elements.size());
   {
-    ordered[start[key[e]]++] = elements[e];
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t e = 0; e < elements.size(); ++e)
+    {
+      order[next[key[e][0]]++] = static_cast<std::uint32_t>(e);
+    }
   }
+  ForEachIndex(parallelFor, vertices.size(), ElementBlock,
+    [&](std::size_t r)
+    {
+      std::sort(order.begin() + static_cast<std::ptrdiff_t>(start[r]),
+        order.begin() + static_cast<std::ptrdiff_t>(start[r + 1]),
+        [&key](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    });
+  std::vector<Handle> ordered(elements.size());
+  ForEachIndex(parallelFor, elements.size(), ElementBlock,
+    [&](std::size_t e) { ordered[e] = elements[order[e]]; });
   return ordered;
 }
 
