@@ -127,15 +127,16 @@ std::size_t DelaunayGraph::GetMemorySize() const
   if (this->Triangulation2)
   {
     const Delaunay2& t = this->Triangulation2->Triangulation;
-    bytes += t.number_of_vertices() * sizeof(Delaunay2::Vertex) +
-      t.number_of_faces() * 2 * sizeof(Delaunay2::Face) +
+    // CGAL's containers as allocated (the reserve of ReserveTriangulation included).
+    bytes += t.tds().vertices().capacity() * sizeof(Delaunay2::Vertex) +
+      t.tds().faces().capacity() * sizeof(Delaunay2::Face) +
       this->Triangulation2->Faces.capacity() * sizeof(Delaunay2::Face_handle);
   }
   if (this->Triangulation3)
   {
     const Delaunay3& t = this->Triangulation3->Triangulation;
-    bytes += t.number_of_vertices() * sizeof(Delaunay3::Vertex) +
-      t.number_of_cells() * sizeof(Delaunay3::Cell) +
+    bytes += t.tds().vertices().capacity() * sizeof(Delaunay3::Vertex) +
+      t.tds().cells().capacity() * sizeof(Delaunay3::Cell) +
       this->Triangulation3->Cells.capacity() * sizeof(Delaunay3::Cell_handle);
   }
   return bytes;
