@@ -148,45 +148,82 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   // Each element's vertices' ranks in increasing order (an element is its vertex set): the
   // first picks its place on the curve, the others order the elements that share that first
   // vertex, so the order does not depend on where CGAL keeps the elements.
-  using RankKey = std::array<std::uint32_t, 4>;
-  std::vector<RankKey> key(elements.size());
+  // The first rank in `first`, the other three packed for the tie-break (Keyed).
+  struct Keyed
+  {
+    std::uint64_t Second = 0; ///< the second and third ranks
+    std::uint32_t Fourth = 0;
+    std::uint32_t Element = 0;
+    bool operator<(const Keyed& other) const
+    {
+      return this->Second < other.Second ||
+        (this->Second == other.Second && this->Fourth < other.Fourth);
+    }
+  };
+  std::vector<std::uint32_t> first(elements.size());
+  std::vector<Keyed> keyed(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
     [&](std::size_t e)
     {
-      RankKey ranks;
-      ranks.fill(std::numeric_limits<std::uint32_t>::max());
+      std::uint32_t r[4] = { std::numeric_limits<std::uint32_t>::max(),
+        std::numeric_limits<std::uint32_t>::max(), std::numeric_limits<std::uint32_t>::max(),
+        std::numeric_limits<std::uint32_t>::max() };
       for (int k = 0; k < corners; ++k)
       {
-        ranks[static_cast<std::size_t>(k)] = static_cast<std::uint32_t>(
+        r[k] = static_cast<std::uint32_t>(
           rank[static_cast<std::size_t>(elements[e]->vertex(k)->info())]);
       }
-      std::sort(ranks.begin(), ranks.end());
-      key[e] = ranks;
+      // A sorting network of four.
+      const auto order = [&r](int a, int b)
+      {
+        const std::uint32_t low = std::min(r[a], r[b]);
+        r[b] = std::max(r[a], r[b]);
+        r[a] = low;
+      };
+      order(0, 1);
+      order(2, 3);
+      order(0, 2);
+      order(1, 3);
+      order(1, 2);
+      first[e] = r[0];
+      keyed[e] = { (std::uint64_t(r[1]) << 32) | r[2], r[3], static_cast<std::uint32_t>(e) };
     });
   std::vector<std::size_t> start(vertices.size() + 1, 0);
-  for (const RankKey& ranks : key)
+  for (const std::uint32_t r : first)
   {
-    ++start[ranks[0] + 1];
+    ++start[r + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> order(elements.size());
+  // Each vertex's few elements, in contiguous memory, put in order by an insertion sort.
+  std::vector<Keyed> sorted(elements.size());
   {
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for (std::size_t e = 0; e < elements.size(); ++e)
     {
-      order[next[key[e][0]]++] = static_cast<std::uint32_t>(e);
+      sorted[next[first[e]]++] = keyed[e];
     }
   }
-  ForEachIndex(parallelFor, vertices.size(), ElementBlock,
-    [&](std::size_t r)
+  ForEachIndex(parallelFor, (vertices.size() + ElementBlock - 1) / ElementBlock, 1,
+    [&](std::size_t block)
     {
-      std::sort(order.begin() + static_cast<std::ptrdiff_t>(start[r]),
-        order.begin() + static_cast<std::ptrdiff_t>(start[r + 1]),
-        [&key](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+      const std::size_t end = std::min(vertices.size(), (block + 1) * ElementBlock);
+      for (std::size_t r = block * ElementBlock; r < end; ++r)
+      {
+        for (std::size_t i = start[r] + 1; i < start[r + 1]; ++i)
+        {
+          const Keyed moving = sorted[i];
+          std::size_t j = i;
+          for (; j > start[r] && moving < sorted[j - 1]; --j)
+          {
+            sorted[j] = sorted[j - 1];
+          }
+          sorted[j] = moving;
+        }
+      }
     });
   std::vector<Handle> ordered(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
-    [&](std::size_t e) { ordered[e] = elements[order[e]]; });
+    [&](std::size_t e) { ordered[e] = elements[sorted[e].Element]; });
   return ordered;
 }
 
