@@ -81,11 +81,11 @@ FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t 
 
 /// The centre of a cell as OpenFOAM computes it (primitiveMeshCellCentresAndVols), with the
 /// pyramid volumes taken positive whatever the orientation of the cell's faces; `signedVolume`
-/// gets 3 x the volume the faces give as they are oriented.
-Vec3 CellCentreOf(
-  const double* points, const std::vector<std::int64_t>& stream, double& signedVolume)
+/// gets 3 x the volume the faces give as they are oriented. `geometry` gets its faces' geometry,
+/// in the stream's order.
+Vec3 CellCentreOf(const double* points, const std::vector<std::int64_t>& stream,
+  double& signedVolume, std::vector<FaceGeometry>& geometry)
 {
-  thread_local std::vector<FaceGeometry> geometry;
   const std::int64_t faces = stream.empty() ? 0 : stream[0];
   geometry.clear();
   Vec3 estimate{ 0.0, 0.0, 0.0 };
@@ -110,22 +110,39 @@ Vec3 CellCentreOf(
   return std::abs(volume) > VSmall ? (1.0 / volume) * sum : estimate;
 }
 
-/// The centres of all cells, and the signed volumes (3 x) their faces give.
-void CellCentres(const FaceCells& cells, const double* points, UninitializedVector<double>& centres,
-  UninitializedVector<double>& volumes, const ParallelFor& parallelFor)
+/**
+ * The centres of all cells, the signed volumes (3 x) their faces give, and the area vector of
+ * every internal face as its owner's stream gives it (3 per face of `faces`, in their order):
+ * the angles reuse it instead of computing the face again.
+ */
+void CellCentres(const FaceCells& cells, const InternalFaces& faces, const double* points,
+  UninitializedVector<double>& centres, UninitializedVector<double>& volumes,
+  UninitializedVector<double>& areas, const ParallelFor& parallelFor)
 {
   const std::size_t numberOfCells = cells.GetNumberOfCells();
   centres.resize(3 * numberOfCells);
   volumes.resize(numberOfCells);
+  areas.resize(3 * faces.Size());
   parallelFor(0, numberOfCells, 2048,
     [&](std::size_t begin, std::size_t end)
     {
       std::vector<std::int64_t> stream;
+      std::vector<FaceGeometry> geometry;
+      // The internal faces come by owner (FindInternalFaces): those of this block's cells follow
+      // one another from the first whose owner is in the block.
+      auto owned = static_cast<std::size_t>(
+        std::lower_bound(faces.Owner.begin(), faces.Owner.end(), static_cast<std::int64_t>(begin)) -
+        faces.Owner.begin());
       for (std::size_t c = begin; c < end; ++c)
       {
         cells.GetFaces(c, stream);
-        Store(
-          CellCentreOf(points, stream, volumes[c]), centres.data(), static_cast<std::int64_t>(c));
+        Store(CellCentreOf(points, stream, volumes[c], geometry), centres.data(),
+          static_cast<std::int64_t>(c));
+        for (; owned < faces.Size() && faces.Owner[owned] == static_cast<std::int64_t>(c); ++owned)
+        {
+          Store(geometry[static_cast<std::size_t>(faces.Face[owned])].Area, areas.data(),
+            static_cast<std::int64_t>(owned));
+        }
       }
     });
 }
@@ -151,11 +168,10 @@ void LowerCosine(std::atomic<double>& slot, double cosine)
 /// lowers its two cells' smallest cosine (the faces come by owner, so the owner's is kept until
 /// the owner changes); the angles are taken per cell at the end: one arc cosine a cell instead of
 /// one a face, and no array of the faces' angles.
-NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces,
-  const std::vector<std::int8_t>& cellSign, const double* points,
+NonOrthogonalityResult Angles(std::size_t numberOfCells, const InternalFaces& faces,
+  const std::vector<std::int8_t>& cellSign, const UninitializedVector<double>& areas,
   const UninitializedVector<double>& centres, const ParallelFor& parallelFor)
 {
-  const std::size_t numberOfCells = cells.GetNumberOfCells();
   constexpr double NoFace = 2.0;
   const std::unique_ptr<std::atomic<double>[]> smallest(new std::atomic<double>[numberOfCells]);
   parallelFor(0, numberOfCells, 1 << 16,
@@ -169,35 +185,31 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
   parallelFor(0, faces.Size(), 4096,
     [&](std::size_t begin, std::size_t end)
     {
-      std::vector<std::int64_t> stream;
-      std::int64_t streamCell = -1;
+      std::int64_t ownerCell = -1;
       double ownerSmallest = NoFace;
       for (std::size_t f = begin; f < end; ++f)
       {
         const std::int64_t owner = faces.Owner[f], neighbour = faces.Neighbour[f];
-        if (owner != streamCell) // the faces come by owner (FindInternalFaces)
+        if (owner != ownerCell) // the faces come by owner (FindInternalFaces)
         {
-          if (streamCell >= 0)
+          if (ownerCell >= 0)
           {
-            LowerCosine(smallest[static_cast<std::size_t>(streamCell)], ownerSmallest);
+            LowerCosine(smallest[static_cast<std::size_t>(ownerCell)], ownerSmallest);
           }
-          cells.GetFaces(static_cast<std::size_t>(owner), stream);
-          streamCell = owner;
+          ownerCell = owner;
           ownerSmallest = NoFace;
         }
-        std::int64_t n = 0;
-        const std::int64_t* ids = FaceOfStream(stream.data(), faces.Face[f], n);
-        const FaceGeometry face = FaceOf(points, ids, n);
+        const Vec3 area = Load(areas.data(), static_cast<std::int64_t>(f));
         const Vec3 d = Load(centres.data(), neighbour) - Load(centres.data(), owner);
-        const double cosine = cellSign[static_cast<std::size_t>(owner)] * Dot(d, face.Area) /
-          (Norm(d) * Norm(face.Area) + RootVSmall);
+        const double cosine = cellSign[static_cast<std::size_t>(owner)] * Dot(d, area) /
+          (Norm(d) * Norm(area) + RootVSmall);
         const double clamped = std::max(-1.0, std::min(1.0, cosine)); // NaN: 1, an angle of 0
         ownerSmallest = std::min(ownerSmallest, clamped);
         LowerCosine(smallest[static_cast<std::size_t>(neighbour)], clamped);
       }
-      if (streamCell >= 0)
+      if (ownerCell >= 0)
       {
-        LowerCosine(smallest[static_cast<std::size_t>(streamCell)], ownerSmallest);
+        LowerCosine(smallest[static_cast<std::size_t>(ownerCell)], ownerSmallest);
       }
     });
   NonOrthogonalityResult result;
@@ -229,8 +241,8 @@ NonOrthogonalityResult Angles(const FaceCells& cells, const InternalFaces& faces
 InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
   const double* original, const ParallelFor& parallelFor)
 {
-  UninitializedVector<double> centres, volumes;
-  CellCentres(cells, original, centres, volumes, parallelFor);
+  UninitializedVector<double> centres, volumes, areas;
+  CellCentres(cells, faces, original, centres, volumes, areas, parallelFor);
   InputOrientation orientation;
   orientation.CellSign.resize(volumes.size());
   for (std::size_t c = 0; c < volumes.size(); ++c)
@@ -238,16 +250,16 @@ InputOrientation OrientCells(const FaceCells& cells, const InternalFaces& faces,
     orientation.CellSign[c] = volumes[c] < 0.0 ? -1 : 1;
   }
   orientation.InputMaximum =
-    Angles(cells, faces, orientation.CellSign, original, centres, parallelFor).Maximum;
+    Angles(volumes.size(), faces, orientation.CellSign, areas, centres, parallelFor).Maximum;
   return orientation;
 }
 
 NonOrthogonalityResult ComputeNonOrthogonality(const FaceCells& cells, const InternalFaces& faces,
   const InputOrientation& orientation, const double* points, const ParallelFor& parallelFor)
 {
-  UninitializedVector<double> centres, volumes;
-  CellCentres(cells, points, centres, volumes, parallelFor);
-  return Angles(cells, faces, orientation.CellSign, points, centres, parallelFor);
+  UninitializedVector<double> centres, volumes, areas;
+  CellCentres(cells, faces, points, centres, volumes, areas, parallelFor);
+  return Angles(volumes.size(), faces, orientation.CellSign, areas, centres, parallelFor);
 }
 
 } // namespace dgmf
