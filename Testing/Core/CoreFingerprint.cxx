@@ -1,18 +1,21 @@
 // dgmf-core-fingerprint: prints one 64-bit hash of the bits of every result of the core on fixed
 // problems (location, every method, several bodies, the quality metric with its two-hexahedra
-// path, the quality guard, sub-steps). Two builds whose fingerprints agree compute the same bits:
-// scripts/run-portability-tests.sh compares the main build (GCC, vector types) with a build by
-// Clang with the scalar fallback of dgmf/Simd.h forced on.
+// path, the quality guard, sub-steps, OpenFOAM's non-orthogonality). Two builds whose fingerprints
+// agree compute the same bits: scripts/run-portability-tests.sh compares the main build (GCC,
+// vector types) with a build by Clang with the scalar fallback of dgmf/Simd.h forced on.
+#include "HexFaceCells.h"
 #include "SyntheticNodes.h"
 #include "TwoBodyNodes.h"
 
 #include "dgmf/DeformationMethod.h"
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/LocalRepair.h"
+#include "dgmf/NonOrthogonality.h"
 #include "dgmf/ResultNames.h"
 #include "dgmf/Simd.h"
 #include "dgmf/SizeSkewQuality.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -220,6 +223,56 @@ void Quality(Fingerprint& fingerprint)
   fingerprint.Add(tangled);
   fingerprint.Add(&report.MinimumAfter, sizeof report.MinimumAfter);
 }
+
+/// OpenFOAM's non-orthogonality of a block of 7 x 6 x 5 hexahedra with jittered points, before
+/// and after a twist: the input's orientation and angles, and every cell's largest angle.
+void NonOrthogonality(Fingerprint& fingerprint)
+{
+  const int nx = 7, ny = 6, nz = 5;
+  const auto id = [&](int i, int j, int k)
+  { return static_cast<std::int64_t>((k * (ny + 1) + j) * (nx + 1) + i); };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  std::vector<double> points, twisted;
+  for (int k = 0; k <= nz; ++k)
+  {
+    for (int j = 0; j <= ny; ++j)
+    {
+      for (int i = 0; i <= nx; ++i)
+      {
+        const double x = i + jitter(random), y = j + jitter(random), z = k + jitter(random);
+        points.insert(points.end(), { x, y, z });
+        const double angle = 0.05 * z;
+        twisted.insert(twisted.end(),
+          { std::cos(angle) * x - std::sin(angle) * y, std::sin(angle) * x + std::cos(angle) * y,
+            z });
+      }
+    }
+  }
+  dgmf_test::HexFaceCells cells;
+  for (int k = 0; k < nz; ++k)
+  {
+    for (int j = 0; j < ny; ++j)
+    {
+      for (int i = 0; i < nx; ++i)
+      {
+        cells.Corners.push_back(
+          { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+            id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) });
+      }
+    }
+  }
+  const dgmf::InternalFaces faces =
+    dgmf::FindInternalFaces(cells, points.size() / 3, dgmf::SerialFor);
+  const dgmf::InputOrientation orientation =
+    dgmf::OrientCells(cells, faces, points.data(), dgmf::SerialFor);
+  fingerprint.Add(orientation.CellSign);
+  fingerprint.Add(&orientation.InputMaximum, sizeof orientation.InputMaximum);
+  const dgmf::NonOrthogonalityResult result =
+    dgmf::ComputeNonOrthogonality(cells, faces, orientation, twisted.data(), dgmf::SerialFor);
+  fingerprint.Add(result.CellMaximum);
+  fingerprint.Add(&result.Maximum, sizeof result.Maximum);
+}
 } // namespace
 
 int main()
@@ -229,6 +282,7 @@ int main()
   Methods(dgmf_test::SphereInBox(3000), fingerprint);
   Bodies(fingerprint);
   Quality(fingerprint);
+  NonOrthogonality(fingerprint);
   std::printf("%016llx (%s two-lane doubles)\n", static_cast<unsigned long long>(fingerprint.Hash),
     dgmf::simd::IsVectorized ? "vector" : "scalar");
   return 0;

@@ -5,6 +5,7 @@
 #include "dgmf/DecomposedSizeSkew.h"
 #include "dgmf/NonOrthogonality.h"
 
+#include "HexFaceCells.h"
 #include "TwoThreadFor.h"
 
 #include <gtest/gtest.h>
@@ -127,26 +128,7 @@ TEST(DecomposedSizeSkew, ANonConvexInputCellIsJudgedByWhatTheDeformationDoes)
 
 namespace
 {
-/// Cells given by the hexahedron face table (or as a polyhedron: the same faces).
-class HexCells : public dgmf::FaceCells
-{
-public:
-  std::vector<std::vector<std::int64_t>> Corners; ///< 8 point ids per cell, VTK order
-
-  std::size_t GetNumberOfCells() const override { return this->Corners.size(); }
-  void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
-  {
-    const std::int64_t* local = HexFaces();
-    stream.assign(local, local + dgmf::FaceStreamLength(local));
-    for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
-    {
-      for (std::int64_t k = 0; k < local[at]; ++k)
-      {
-        stream[at + 1 + k] = this->Corners[cell][local[at + 1 + k]];
-      }
-    }
-  }
-};
+using HexCells = dgmf_test::HexFaceCells;
 
 /// Two unit cubes side by side along x (12 points), sharing the face x = 1.
 HexCells TwoCubes(std::vector<double>& points)
