@@ -139,11 +139,13 @@ FaceGeometry FaceOf(const double* points, const std::int64_t* ids, std::int64_t 
 /// The centre of a cell as OpenFOAM computes it (primitiveMeshCellCentresAndVols), with the
 /// pyramid volumes taken positive whatever the orientation of the cell's faces; `signedVolume`
 /// gets 3 x the volume the faces give as they are oriented. `geometry` gets its faces' geometry,
-/// in the stream's order.
-Vec3 CellCentreOf(const double* points, const std::vector<std::int64_t>& stream,
-  double& signedVolume, std::vector<FaceGeometry>& geometry)
+/// in the stream's order. The stream's entries are point ids through `idOf` (the identity for
+/// GetFaces' streams, the corner's id for a shape's stream over corner positions).
+template <typename IdOf>
+Vec3 CellCentreOf(const double* points, const std::int64_t* stream, const IdOf& idOf,
+  double& signedVolume, std::vector<FaceGeometry>& geometry, std::vector<std::int64_t>& faceIds)
 {
-  const std::int64_t faces = stream.empty() ? 0 : stream[0];
+  const std::int64_t faces = stream ? stream[0] : 0;
   geometry.resize(static_cast<std::size_t>(std::max<std::int64_t>(faces, 0)));
   // The quadrilaterals four at a time (a hexahedron's six: four, then two and two repeated).
   Vec3 quadrilaterals[4][4];
@@ -166,12 +168,12 @@ Vec3 CellCentreOf(const double* points, const std::vector<std::int64_t>& stream,
   for (std::int64_t f = 0, at = 1; f < faces; ++f)
   {
     const std::int64_t n = stream[at];
-    const std::int64_t* ids = &stream[at + 1];
+    const std::int64_t* entries = &stream[at + 1];
     if (n == 4)
     {
       for (int k = 0; k < 4; ++k)
       {
-        quadrilaterals[pending][k] = Load(points, ids[k]);
+        quadrilaterals[pending][k] = Load(points, idOf(entries[k]));
       }
       quadrilateralFace[pending++] = static_cast<std::size_t>(f);
       if (pending == 4)
@@ -181,7 +183,12 @@ Vec3 CellCentreOf(const double* points, const std::vector<std::int64_t>& stream,
     }
     else
     {
-      geometry[static_cast<std::size_t>(f)] = FaceOf(points, ids, n);
+      faceIds.resize(static_cast<std::size_t>(std::max<std::int64_t>(n, 0)));
+      for (std::int64_t k = 0; k < n; ++k)
+      {
+        faceIds[static_cast<std::size_t>(k)] = idOf(entries[k]);
+      }
+      geometry[static_cast<std::size_t>(f)] = FaceOf(points, faceIds.data(), n);
     }
     at += 1 + n;
   }
@@ -224,23 +231,45 @@ void CellCentres(const FaceCells& cells, const InternalFaces& faces, const doubl
   parallelFor(0, numberOfCells, 2048,
     [&](std::size_t begin, std::size_t end)
     {
-      std::vector<std::int64_t> stream;
+      std::vector<std::int64_t> stream, faceIds;
       std::vector<FaceGeometry> geometry;
       // The internal faces come by owner (FindInternalFaces): those of this block's cells follow
       // one another from the first whose owner is in the block.
       auto owned = static_cast<std::size_t>(
         std::lower_bound(faces.Owner.begin(), faces.Owner.end(), static_cast<std::int64_t>(begin)) -
         faces.Owner.begin());
-      for (std::size_t c = begin; c < end; ++c)
+      const auto finish = [&](std::size_t c, const Vec3& centre)
       {
-        cells.GetFaces(c, stream);
-        Store(CellCentreOf(points, stream, volumes[c], geometry), centres.data(),
-          static_cast<std::int64_t>(c));
+        Store(centre, centres.data(), static_cast<std::int64_t>(c));
         for (; owned < faces.Size() && faces.Owner[owned] == static_cast<std::int64_t>(c); ++owned)
         {
           Store(geometry[static_cast<std::size_t>(faces.Face[owned])].Area, areas.data(),
             static_cast<std::int64_t>(owned));
         }
+      };
+      for (std::size_t c = begin; c < end; ++c)
+      {
+        // A run of cells of one shape whose corners lie one cell after the other (VTK's cells):
+        // the shape's faces over the corners, without a face stream built per cell.
+        const void* ids = nullptr;
+        std::size_t count = 0;
+        int perCell = 0;
+        if (const std::int64_t* local = cells.GetCornerRun(c, end - c, ids, count, perCell))
+        {
+          const auto* corners = static_cast<const std::int64_t*>(ids);
+          for (std::size_t k = 0; k < count; ++k, corners += perCell)
+          {
+            const auto idOf = [corners](std::int64_t corner) { return corners[corner]; };
+            finish(c + k, CellCentreOf(points, local, idOf, volumes[c + k], geometry, faceIds));
+          }
+          c += count - 1;
+          continue;
+        }
+        cells.GetFaces(c, stream);
+        const auto same = [](std::int64_t id) { return id; };
+        finish(c,
+          CellCentreOf(
+            points, stream.empty() ? nullptr : stream.data(), same, volumes[c], geometry, faceIds));
       }
     });
 }
