@@ -7,6 +7,7 @@
 #ifndef dgmf_FaceMatching_h
 #define dgmf_FaceMatching_h
 
+#include "dgmf/FirstTouch.h"
 #include "dgmf/ParallelFor.h"
 
 #include <cstddef>
@@ -58,9 +59,9 @@ public:
 /// The faces shared by two cells, each once, in increasing order of owner, then of face.
 struct InternalFaces
 {
-  std::vector<std::int64_t> Owner;     ///< the cell whose face stream gives the face
-  std::vector<std::int64_t> Neighbour; ///< the other cell
-  std::vector<std::int32_t> Face;      ///< the face's position in the owner's stream
+  UninitializedVector<std::int64_t> Owner;     ///< the cell whose face stream gives the face
+  UninitializedVector<std::int64_t> Neighbour; ///< the other cell
+  UninitializedVector<std::int32_t> Face;      ///< the face's position in the owner's stream
 
   std::size_t Size() const { return this->Owner.size(); }
 };
