@@ -4,6 +4,7 @@
 #include "dgmf/CellFaces.h"
 #include "dgmf/FaceMatching.h"
 #include "dgmf/FaceParity.h"
+#include "dgmf/NonOrthogonality.h"
 #include "dgmf/SizeSkewQuality.h"
 
 #include "TwoThreadFor.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -412,4 +414,59 @@ TEST(FaceParity, ACollapsedCellInARunIsNotClosed)
   EXPECT_FALSE(dgmf::FacesPairUp(cells, 4, dgmf::SerialFor));
   const StreamCells streams = cells; // sliced: without runs
   EXPECT_FALSE(dgmf::FacesPairUp(streams, 4, dgmf::SerialFor));
+}
+
+// The internal and boundary faces, and OpenFOAM's non-orthogonality (whose cell centres read the
+// faces by runs too), are the same when the cells come as runs of one shape as when they come as
+// face streams, for hexahedra, wedges and tetrahedra, on one and two threads.
+TEST(FaceMatching, RunsOfOneShapeGiveTheFacesOfTheCellByCellReading)
+{
+  for (const dgmf::CellShape shape :
+    { dgmf::CellShape::Hexahedron, dgmf::CellShape::Wedge, dgmf::CellShape::Tetra })
+  {
+    const int n = 9;
+    const std::size_t points = static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1));
+    RunCells runs = RunBlock(n, shape);
+    runs.RunLength = 37;              // runs that end inside the passes' blocks of cells
+    const StreamCells streams = runs; // the same cells, sliced: without runs
+    const dgmf::InternalFaces expected = dgmf::FindInternalFaces(streams, points, dgmf::SerialFor);
+    ASSERT_GT(expected.Size(), 0u);
+    std::vector<double> xyz(3 * points);
+    for (std::size_t p = 0; p < points; ++p)
+    {
+      const double i = static_cast<double>(p % (n + 1)),
+                   j = static_cast<double>(p / (n + 1) % (n + 1)),
+                   k = static_cast<double>(p / ((n + 1) * (n + 1)));
+      // A sheared, bent block: angles that are neither 0 nor the same everywhere.
+      xyz[3 * p] = i + 0.3 * j + 0.02 * k * k;
+      xyz[3 * p + 1] = j + 0.1 * std::sin(i);
+      xyz[3 * p + 2] = k + 0.05 * i * j;
+    }
+    const dgmf::InputOrientation orientation =
+      dgmf::OrientCells(streams, expected, xyz.data(), dgmf::SerialFor);
+    const dgmf::NonOrthogonalityResult angles =
+      dgmf::ComputeNonOrthogonality(streams, expected, orientation, xyz.data(), dgmf::SerialFor);
+    ASSERT_GT(angles.Maximum, 1.0);
+    for (const dgmf::ParallelFor& parallelFor :
+      { dgmf::ParallelFor(dgmf::SerialFor), dgmf::ParallelFor(dgmf_test::TwoThreadFor) })
+    {
+      const dgmf::InternalFaces faces = dgmf::FindInternalFaces(runs, points, parallelFor);
+      EXPECT_EQ(faces.Owner, expected.Owner);
+      EXPECT_EQ(faces.Neighbour, expected.Neighbour);
+      EXPECT_EQ(faces.Face, expected.Face);
+      const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(runs, points, parallelFor);
+      const dgmf::BoundaryFaces expectedOuter =
+        dgmf::FindBoundaryFaces(streams, points, dgmf::SerialFor);
+      EXPECT_EQ(outer.Cell, expectedOuter.Cell);
+      EXPECT_EQ(outer.Face, expectedOuter.Face);
+      const dgmf::InputOrientation runOrientation =
+        dgmf::OrientCells(runs, faces, xyz.data(), parallelFor);
+      EXPECT_EQ(runOrientation.CellSign, orientation.CellSign);
+      EXPECT_EQ(runOrientation.InputMaximum, orientation.InputMaximum);
+      const dgmf::NonOrthogonalityResult runAngles =
+        dgmf::ComputeNonOrthogonality(runs, faces, runOrientation, xyz.data(), parallelFor);
+      EXPECT_EQ(runAngles.CellMaximum, angles.CellMaximum); // the same bits
+      EXPECT_EQ(runAngles.Maximum, angles.Maximum);
+    }
+  }
 }
