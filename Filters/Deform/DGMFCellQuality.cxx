@@ -171,8 +171,7 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
     dgmf::AppendFirstTouchParts(
       references.Sizes, static_cast<std::size_t>(numberOfCells) * sizeof(double), newMemory);
   }
-  dgmf::ForEachBlock(parallelFor, newMemory.size(),
-    [&](std::size_t part) { dgmf::FirstTouch(newMemory[part].Begin, newMemory[part].Bytes); });
+  dgmf::FirstTouchParts(newMemory, parallelFor);
   double* values = sizeSkew->GetPointer(0);
   unsigned char* flags = inverted->GetPointer(0);
   unsigned char* invalid = inputInvalid->GetPointer(0);

@@ -269,8 +269,7 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
   {
     std::vector<FirstTouchPart> parts;
     AppendFirstTouchParts(records.get(), total * sizeof(FaceRecord<Id>), parts);
-    ForEachBlock(parallelFor, parts.size(),
-      [&](std::size_t k) { FirstTouch(parts[k].Begin, parts[k].Bytes); });
+    FirstTouchParts(parts, parallelFor);
   }
   forEachFace(
     [&](std::size_t c, std::size_t f, const std::int64_t* ids, std::int64_t count)
@@ -361,8 +360,7 @@ InternalFaces InternalFacesOf(
     AppendFirstTouchParts(
       faces.Neighbour.data(), faces.Neighbour.size() * sizeof(std::int64_t), parts);
     AppendFirstTouchParts(faces.Face.data(), faces.Face.size() * sizeof(std::int32_t), parts);
-    ForEachBlock(parallelFor, parts.size(),
-      [&](std::size_t k) { FirstTouch(parts[k].Begin, parts[k].Bytes); });
+    FirstTouchParts(parts, parallelFor);
   }
   ForEachBlock(parallelFor, sinks.size(),
     [&](std::size_t s)

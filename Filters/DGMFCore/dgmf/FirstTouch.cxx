@@ -86,4 +86,10 @@ void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouc
   }
 }
 
+void FirstTouchParts(const std::vector<FirstTouchPart>& parts, const ParallelFor& parallelFor)
+{
+  ForEachBlock(parallelFor, parts.size(),
+    [&parts](std::size_t k) { FirstTouch(parts[k].Begin, parts[k].Bytes); });
+}
+
 } // namespace dgmf

@@ -7,6 +7,8 @@
 #ifndef dgmf_FirstTouch_h
 #define dgmf_FirstTouch_h
 
+#include "dgmf/ParallelFor.h"
+
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -42,6 +44,10 @@ struct FirstTouchPart
 
 /// Appends [begin, begin + bytes) to `parts`, cut into parts of at most FirstTouchPartBytes.
 void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouchPart>& parts);
+
+/// First touches every part of `parts` (FirstTouch), the parts shared by the threads of
+/// `parallelFor`.
+void FirstTouchParts(const std::vector<FirstTouchPart>& parts, const ParallelFor& parallelFor);
 
 /**
  * An allocator whose default construction leaves trivial values uninitialised: a
