@@ -190,44 +190,30 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
       {
         std::vector<std::int64_t> stream, faceIds;
         const std::size_t end = std::min(numberOfCells, (k + 1) * cellsPerChunk);
-        for (std::size_t c = k * cellsPerChunk; c < end; ++c)
-        {
-          // A run of cells of one shape (VTK's cells): each face's ids from the shape's face
-          // stream over the corners, without a face stream built per cell.
-          const void* runIds = nullptr;
-          std::size_t count = 0;
-          int perCell = 0;
-          if (const std::int64_t* local = cells.GetCornerRun(c, end - c, runIds, count, perCell))
+        ForEachCellFaceStream(cells, k * cellsPerChunk, end, stream,
+          [&](std::size_t c, const std::int64_t* faceStream, const std::int64_t* corners)
           {
-            const auto* corners = static_cast<const std::int64_t*>(runIds);
-            for (std::size_t r = 0; r < count; ++r, corners += perCell)
+            for (std::int64_t f = 0, at = 1; faceStream && f < faceStream[0];
+                 ++f, at += 1 + faceStream[at])
             {
-              for (std::int64_t f = 0, at = 1; f < local[0]; ++f, at += 1 + local[at])
+              const std::int64_t n = faceStream[at];
+              if (n <= 0)
               {
-                if (local[at] > 0)
-                {
-                  faceIds.resize(static_cast<std::size_t>(local[at]));
-                  for (std::int64_t j = 0; j < local[at]; ++j)
-                  {
-                    faceIds[static_cast<std::size_t>(j)] = corners[local[at + 1 + j]];
-                  }
-                  body(c + r, static_cast<std::size_t>(f), faceIds.data(), local[at]);
-                }
+                continue;
               }
+              const std::int64_t* ids = &faceStream[at + 1];
+              if (corners) // positions in the cell's corners
+              {
+                faceIds.resize(static_cast<std::size_t>(n));
+                for (std::int64_t j = 0; j < n; ++j)
+                {
+                  faceIds[static_cast<std::size_t>(j)] = corners[ids[j]];
+                }
+                ids = faceIds.data();
+              }
+              body(c, static_cast<std::size_t>(f), ids, n);
             }
-            c += count - 1;
-            continue;
-          }
-          cells.GetFaces(c, stream);
-          for (std::int64_t f = 0, at = 1; !stream.empty() && f < stream[0];
-               ++f, at += 1 + stream[at])
-          {
-            if (stream[at] > 0)
-            {
-              body(c, static_cast<std::size_t>(f), &stream[at + 1], stream[at]);
-            }
-          }
-        }
+          });
       });
   };
   // 1. The size of each bucket.

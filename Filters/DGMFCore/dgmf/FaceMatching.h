@@ -56,6 +56,37 @@ public:
   }
 };
 
+/**
+ * Calls `visit(cell, stream, corners)` for each cell of [begin, end), in order, with the cell's
+ * face stream (CellFaces.h; null for a cell without faces): for a run of one shape
+ * (FaceCells::GetCornerRun) the shape's stream over corner positions and `corners` the cell's
+ * corners' point ids, otherwise GetFaces' stream of point ids (built in `scratch`) and `corners`
+ * null. Runs save the face stream a call per cell builds.
+ */
+template <typename Visit>
+void ForEachCellFaceStream(const FaceCells& cells, std::size_t begin, std::size_t end,
+  std::vector<std::int64_t>& scratch, const Visit& visit)
+{
+  for (std::size_t c = begin; c < end; ++c)
+  {
+    const void* ids = nullptr;
+    std::size_t count = 0;
+    int perCell = 0;
+    if (const std::int64_t* local = cells.GetCornerRun(c, end - c, ids, count, perCell))
+    {
+      const auto* corners = static_cast<const std::int64_t*>(ids);
+      for (std::size_t k = 0; k < count; ++k, corners += perCell)
+      {
+        visit(c + k, local, corners);
+      }
+      c += count - 1;
+      continue;
+    }
+    cells.GetFaces(c, scratch);
+    visit(c, scratch.empty() ? nullptr : scratch.data(), static_cast<const std::int64_t*>(nullptr));
+  }
+}
+
 /// The faces shared by two cells, each once, in increasing order of owner, then of face.
 struct InternalFaces
 {

@@ -240,30 +240,20 @@ void CellCentres(const FaceCells& cells, const InternalFaces& faces, const doubl
             static_cast<std::int64_t>(owned));
         }
       };
-      for (std::size_t c = begin; c < end; ++c)
-      {
-        // A run of cells of one shape whose corners lie one cell after the other (VTK's cells):
-        // the shape's faces over the corners, without a face stream built per cell.
-        const void* ids = nullptr;
-        std::size_t count = 0;
-        int perCell = 0;
-        if (const std::int64_t* local = cells.GetCornerRun(c, end - c, ids, count, perCell))
+      ForEachCellFaceStream(cells, begin, end, stream,
+        [&](std::size_t c, const std::int64_t* faceStream, const std::int64_t* corners)
         {
-          const auto* corners = static_cast<const std::int64_t*>(ids);
-          for (std::size_t k = 0; k < count; ++k, corners += perCell)
+          if (corners) // a run of one shape: the shape's faces over the cell's corners
           {
             const auto idOf = [corners](std::int64_t corner) { return corners[corner]; };
-            finish(c + k, CellCentreOf(points, local, idOf, volumes[c + k], geometry, faceIds));
+            finish(c, CellCentreOf(points, faceStream, idOf, volumes[c], geometry, faceIds));
           }
-          c += count - 1;
-          continue;
-        }
-        cells.GetFaces(c, stream);
-        const auto same = [](std::int64_t id) { return id; };
-        finish(c,
-          CellCentreOf(
-            points, stream.empty() ? nullptr : stream.data(), same, volumes[c], geometry, faceIds));
-      }
+          else
+          {
+            const auto same = [](std::int64_t id) { return id; };
+            finish(c, CellCentreOf(points, faceStream, same, volumes[c], geometry, faceIds));
+          }
+        });
     });
 }
 
