@@ -113,7 +113,10 @@ bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int c
   const auto* ids = static_cast<const unsigned char*>(idBytes);
   const int corners = Corners > 0 ? Corners : cornersPerCell;
   const int faces = Faces > 0 ? Faces : shape.Faces;
-  Hash128 cornerHash[RunCorners];
+  // The corners' two halves apart: each is stored and read as one 64-bit word (a 16-byte read of
+  // two 8-byte stores just made would wait for them: no store-to-load forwarding).
+  std::uint64_t cornerLow[RunCorners];
+  std::uint64_t cornerHigh[RunCorners];
   Hash128 faceHash[RunFaces];
   for (std::size_t c = 0; c < count; ++c, ids += 8 * corners)
   {
@@ -125,7 +128,9 @@ bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int c
       {
         return true;
       }
-      cornerHash[k] = PointHash(static_cast<std::uint64_t>(id));
+      const Hash128 point = PointHash(static_cast<std::uint64_t>(id));
+      cornerLow[k] = point.Low;
+      cornerHigh[k] = point.High;
     }
     for (int f = 0; f < faces; ++f)
     {
@@ -133,8 +138,8 @@ bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int c
       Hash128 face = countHash[size];
       for (int k = 0; k < size; ++k)
       {
-        face.Low += cornerHash[shape.Corner[f][k]].Low;
-        face.High += cornerHash[shape.Corner[f][k]].High;
+        face.Low += cornerLow[shape.Corner[f][k]];
+        face.High += cornerHigh[shape.Corner[f][k]];
       }
       faceHash[f] = face;
       sum.Low ^= face.Low;
