@@ -182,18 +182,22 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
         {
           // Normalised, with round-off negatives (>= -WeightTolerance of the total) set to 0: one
           // division (the sum is positive: the point is inside an element of positive volume).
+          // Four values in registers (a fourth of 0 in 2D adds nothing to the sum): written back
+          // to w and read again, the multiplications would wait for the stores.
+          double clamped[4];
           double sum = 0.0;
-          for (int c = 0; c < n; ++c)
+          for (int c = 0; c < 4; ++c)
           {
-            w[k][c] = w[k][c] > 0.0 ? w[k][c] : 0.0;
-            sum += w[k][c];
+            clamped[c] = c < n && w[k][c] > 0.0 ? w[k][c] : 0.0;
+            sum += clamped[c];
           }
           const double inv = 1.0 / sum;
-          for (int c = 0; c < n; ++c)
+          double normalised[4];
+          for (int c = 0; c < 4; ++c)
           {
-            w[k][c] *= inv;
+            normalised[c] = clamped[c] * inv;
           }
-          finish(lane, lane.Element, w[k], false);
+          finish(lane, lane.Element, normalised, false);
           continue;
         }
         // Visibility walk: cross the face opposite the most negative coordinate.
