@@ -64,10 +64,10 @@ void DeformBlock(
 {
   const DelaunayMapping& mapping = *in.Mapping;
   const bool withOwn = in.Mode == DeformationMode::DGMF1 && in.Displacement;
-  double f[4];
-  const double* x[4];
-  const double* own[4];
-  double* out[4];
+  // The nodes waiting for a group of four. Their inputs are read when the group is full, not
+  // copied into arrays as they come: four scalar stores read back as one vector had to wait for
+  // the stores to land (no store-to-load forwarding from several stores to one load).
+  std::size_t waitingNode[4];
   int waiting = 0;
   for (std::size_t i = begin; i < end; ++i)
   {
@@ -87,12 +87,20 @@ void DeformBlock(
     }
     else if (!in.Interpolate)
     {
-      f[waiting] = in.F[i];
-      x[waiting] = point;
-      own[waiting] = withOwn ? displacement : nullptr;
-      out[waiting] = moved;
+      waitingNode[waiting] = i;
       if (++waiting == 4)
       {
+        // Written here, not in a lambda (see above).
+        const double f[4] = { in.F[waitingNode[0]], in.F[waitingNode[1]], in.F[waitingNode[2]],
+          in.F[waitingNode[3]] };
+        const double* const x[4] = { in.Points + 3 * waitingNode[0], in.Points + 3 * waitingNode[1],
+          in.Points + 3 * waitingNode[2], in.Points + 3 * waitingNode[3] };
+        const double* const own[4] = { withOwn ? in.Displacement + 3 * waitingNode[0] : nullptr,
+          withOwn ? in.Displacement + 3 * waitingNode[1] : nullptr,
+          withOwn ? in.Displacement + 3 * waitingNode[2] : nullptr,
+          withOwn ? in.Displacement + 3 * waitingNode[3] : nullptr };
+        double* const out[4] = { in.Deformed + 3 * waitingNode[0], in.Deformed + 3 * waitingNode[1],
+          in.Deformed + 3 * waitingNode[2], in.Deformed + 3 * waitingNode[3] };
         damped.ApplyFour(f, x, own, out);
         waiting = 0;
       }
@@ -107,7 +115,9 @@ void DeformBlock(
   }
   for (int l = 0; l < waiting; ++l)
   {
-    damped.Apply(f[l], x[l], own[l], out[l]);
+    const std::size_t node = waitingNode[l];
+    damped.Apply(in.F[node], in.Points + 3 * node, withOwn ? in.Displacement + 3 * node : nullptr,
+      in.Deformed + 3 * node);
   }
 }
 } // namespace
