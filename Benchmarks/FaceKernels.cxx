@@ -105,16 +105,18 @@ int main(int argc, char* argv[])
     if (i + 1 >= argc ||
       (option != "--cells-per-axis" && option != "--threads" && option != "--repeats"))
     {
-      std::fprintf(stderr,
-        "usage: dgmf-face-kernels [--cells-per-axis N] [--threads T] [--repeats R]\n");
+      std::fprintf(
+        stderr, "usage: dgmf-face-kernels [--cells-per-axis N] [--threads T] [--repeats R]\n");
       return 1;
     }
     const int value = std::atoi(argv[++i]);
-    (option == "--cells-per-axis" ? n : option == "--threads" ? threads : repeats) =
-      std::max(1, value);
+    (option == "--cells-per-axis" ? n
+        : option == "--threads"   ? threads
+                                  : repeats) = std::max(1, value);
   }
   const std::int64_t p = n + 1;
-  const auto id = [p](std::int64_t i, std::int64_t j, std::int64_t k) { return i + p * (j + p * k); };
+  const auto id = [p](std::int64_t i, std::int64_t j, std::int64_t k)
+  { return i + p * (j + p * k); };
   HexBlock cells;
   cells.Corners.reserve(8 * static_cast<std::size_t>(n) * n * n);
   for (std::int64_t k = 0; k < n; ++k)
@@ -123,9 +125,9 @@ int main(int argc, char* argv[])
     {
       for (std::int64_t i = 0; i < n; ++i)
       {
-        for (const std::int64_t corner : { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-               id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-               id(i, j + 1, k + 1) })
+        for (const std::int64_t corner :
+          { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+            id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) })
         {
           cells.Corners.push_back(corner);
         }

@@ -7,6 +7,7 @@
 #include "dgmf/CellFaces.h"
 #include "dgmf/DecomposedSizeSkew.h"
 #include "dgmf/FirstTouch.h"
+#include "dgmf/Simd.h"
 
 #include "vtkPoints.h"
 
@@ -90,6 +91,9 @@ struct FacedCell
       this->Original.data(), this->Deformed.data(), this->Faces.data());
   }
 };
+/// How many cells ahead the quality asks for a cell's corners (the first 8 of them).
+constexpr std::size_t CornersAhead = 4;
+
 /// The `corners` corners of a cell (ids `pts` in VTK's order, read in the metric's `order`) from
 /// `points` (3 doubles each) into `out`.
 void GatherCorners(
@@ -263,6 +267,24 @@ dgmf::QualitySummary ComputeCellQuality(vtkUnstructuredGrid* mesh, const double*
         {
           npts = static_cast<vtkIdType>(directOffsets[c + 1] - directOffsets[c]);
           pts = directConnectivity + directOffsets[c];
+          // The corners of the cell CornersAhead cells on: in an unstructured mesh they lie
+          // anywhere, and each would be a wait (the wing-body's quality 0.07 - 0.2 -> 0.05 s).
+          if (c + CornersAhead < end)
+          {
+            const std::size_t next = c + CornersAhead;
+            const vtkIdType* ahead = directConnectivity + directOffsets[next];
+            const vtkIdType n =
+              std::min<vtkIdType>(8, directOffsets[next + 1] - directOffsets[next]);
+            const bool original = !(knownReferences && types[next] == VTK_HEXAHEDRON);
+            for (vtkIdType k = 0; k < n; ++k)
+            {
+              dgmf::simd::Prefetch(deformedPoints + 3 * ahead[k]);
+              if (original)
+              {
+                dgmf::simd::Prefetch(originalPoints + 3 * ahead[k]);
+              }
+            }
+          }
         }
         else
         {
