@@ -5,6 +5,9 @@
 // quieter than the whole benchmark.
 //
 //   dgmf-face-kernels [--cells-per-axis N (160)] [--threads T (2)] [--repeats R (7)]
+//                     [--shuffled-points 0|1 (0)]
+// --shuffled-points 1 numbers the points at random, as an unstructured mesh's may be: each
+// cell's corners then lie anywhere in memory.
 #include "dgmf/CellFaces.h"
 #include "dgmf/FaceMatching.h"
 #include "dgmf/FaceParity.h"
@@ -18,6 +21,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <numeric>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -98,21 +103,25 @@ double Best(int repeats, const std::function<void()>& run)
 
 int main(int argc, char* argv[])
 {
-  int n = 160, threads = 2, repeats = 7;
+  int n = 160, threads = 2, repeats = 7, shuffled = 0;
   for (int i = 1; i < argc; ++i)
   {
     const std::string option = argv[i];
     if (i + 1 >= argc ||
-      (option != "--cells-per-axis" && option != "--threads" && option != "--repeats"))
+      (option != "--cells-per-axis" && option != "--threads" && option != "--repeats" &&
+        option != "--shuffled-points"))
     {
-      std::fprintf(
-        stderr, "usage: dgmf-face-kernels [--cells-per-axis N] [--threads T] [--repeats R]\n");
+      std::fprintf(stderr,
+        "usage: dgmf-face-kernels [--cells-per-axis N] [--threads T] [--repeats R] "
+        "[--shuffled-points 0|1]\n");
       return 1;
     }
     const int value = std::atoi(argv[++i]);
-    (option == "--cells-per-axis" ? n
-        : option == "--threads"   ? threads
-                                  : repeats) = std::max(1, value);
+    int& target = option == "--cells-per-axis" ? n
+      : option == "--threads"                  ? threads
+      : option == "--repeats"                  ? repeats
+                                               : shuffled;
+    target = &target == &shuffled ? value : std::max(1, value);
   }
   const std::int64_t p = n + 1;
   const auto id = [p](std::int64_t i, std::int64_t j, std::int64_t k)
@@ -150,6 +159,24 @@ int main(int argc, char* argv[])
         original[3 * q + c] + 0.05 * std::cos(0.3 * static_cast<double>(q) * (c + 1));
     }
   }
+  if (shuffled)
+  {
+    // Point q becomes newOf[q]: the cells keep their order, their corners are scattered.
+    std::vector<std::int64_t> newOf(points);
+    std::iota(newOf.begin(), newOf.end(), std::int64_t{ 0 });
+    std::shuffle(newOf.begin(), newOf.end(), std::mt19937_64(7));
+    for (std::int64_t& corner : cells.Corners)
+    {
+      corner = newOf[static_cast<std::size_t>(corner)];
+    }
+    std::vector<double> from = original, to = moved;
+    for (std::size_t q = 0; q < points; ++q)
+    {
+      const auto at = static_cast<std::size_t>(newOf[q]);
+      std::copy_n(from.data() + 3 * q, 3, original.data() + 3 * at);
+      std::copy_n(to.data() + 3 * q, 3, moved.data() + 3 * at);
+    }
+  }
   const dgmf::ParallelFor parallelFor = ThreadsFor(threads);
   dgmf::InternalFaces faces;
   const double matching =
@@ -166,8 +193,8 @@ int main(int argc, char* argv[])
       maximum =
         dgmf::ComputeNonOrthogonality(cells, faces, orientation, moved.data(), parallelFor).Maximum;
     });
-  std::printf("%zu hexahedra, %zu internal faces, %d thread(s), best of %d:\n",
-    cells.GetNumberOfCells(), faces.Size(), threads, repeats);
+  std::printf("%zu hexahedra%s, %zu internal faces, %d thread(s), best of %d:\n",
+    cells.GetNumberOfCells(), shuffled ? " (points shuffled)" : "", faces.Size(), threads, repeats);
   std::printf("  FindInternalFaces %.3f s\n  FacesPairUp %.3f s (%s)\n", matching, parity,
     closed ? "closed" : "open: no patches");
   std::printf("  ComputeNonOrthogonality (a new motion) %.3f s (maximum %.4f degrees)\n",

@@ -9,6 +9,7 @@
 
 #include "dgmf/FirstTouch.h"
 #include "dgmf/ParallelFor.h"
+#include "dgmf/Simd.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -62,11 +63,16 @@ public:
  * (FaceCells::GetCornerRun) the shape's stream over corner positions and `corners` the cell's
  * corners' point ids, otherwise GetFaces' stream of point ids (built in `scratch`) and `corners`
  * null. Runs save the face stream a call per cell builds.
+ *
+ * With `prefetchPoints` (3 coordinates per point), the corners' coordinates of the cell
+ * CornersAhead cells on in a run are asked for while a cell is visited: in an unstructured mesh
+ * they lie anywhere in memory.
  */
 template <typename Visit>
 void ForEachCellFaceStream(const FaceCells& cells, std::size_t begin, std::size_t end,
-  std::vector<std::int64_t>& scratch, const Visit& visit)
+  std::vector<std::int64_t>& scratch, const Visit& visit, const double* prefetchPoints = nullptr)
 {
+  constexpr std::size_t CornersAhead = 4;
   for (std::size_t c = begin; c < end; ++c)
   {
     const void* ids = nullptr;
@@ -77,6 +83,14 @@ void ForEachCellFaceStream(const FaceCells& cells, std::size_t begin, std::size_
       const auto* corners = static_cast<const std::int64_t*>(ids);
       for (std::size_t k = 0; k < count; ++k, corners += perCell)
       {
+        if (prefetchPoints && k + CornersAhead < count)
+        {
+          const std::int64_t* ahead = corners + CornersAhead * static_cast<std::size_t>(perCell);
+          for (int j = 0; j < perCell; ++j)
+          {
+            simd::Prefetch(prefetchPoints + 3 * ahead[j]);
+          }
+        }
         visit(c + k, local, corners);
       }
       c += count - 1;

@@ -295,7 +295,8 @@ void CellCentres(const FaceCells& cells, const InternalFaces& faces, const doubl
         }
         flying = 0;
       };
-      ForEachCellFaceStream(cells, begin, end, stream,
+      ForEachCellFaceStream(
+        cells, begin, end, stream,
         [&](std::size_t c, const std::int64_t* faceStream, const std::int64_t* corners)
         {
           if (flying == CellsInFlight)
@@ -319,7 +320,8 @@ void CellCentres(const FaceCells& cells, const InternalFaces& faces, const doubl
           {
             finishAll();
           }
-        });
+        },
+        points);
       queue.Flush();
       finishAll();
     });
