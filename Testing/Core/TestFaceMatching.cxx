@@ -13,8 +13,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
+#include <random>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -116,6 +120,83 @@ TEST(FaceMatching, TheSameFacesWithOneAndTwoThreads)
     dgmf::FindBoundaryFaces(cells, points, dgmf_test::TwoThreadFor);
   EXPECT_EQ(outerOne.Cell, outerTwo.Cell);
   EXPECT_EQ(outerOne.Face, outerTwo.Face);
+}
+
+TEST(FaceMatching, ShuffledIdsInManyGroupsGiveTheFacesAMapOfSortedPointsGives)
+{
+  // 9,261 points and 8,000 cells, both numbered at random: the faces' buckets fall in groups of
+  // several points and the owners in groups of several cells, in no order. The matching must give
+  // what a map from each face's sorted points to its cells gives.
+  const int n = 20;
+  const std::size_t points = (n + 1) * (n + 1) * (n + 1);
+  const StreamCells block = Block(n);
+  std::vector<std::int64_t> newPoint(points);
+  std::iota(newPoint.begin(), newPoint.end(), std::int64_t{ 0 });
+  std::shuffle(newPoint.begin(), newPoint.end(), std::mt19937(5));
+  std::vector<std::size_t> oldCell(block.Streams.size());
+  std::iota(oldCell.begin(), oldCell.end(), std::size_t{ 0 });
+  std::shuffle(oldCell.begin(), oldCell.end(), std::mt19937(6));
+  StreamCells cells;
+  for (const std::size_t c : oldCell)
+  {
+    std::vector<std::int64_t> stream = block.Streams[c];
+    for (std::int64_t f = 0, at = 1; f < stream[0]; ++f, at += 1 + stream[at])
+    {
+      for (std::int64_t k = 0; k < stream[at]; ++k)
+      {
+        stream[at + 1 + k] = newPoint[static_cast<std::size_t>(stream[at + 1 + k])];
+      }
+    }
+    cells.Streams.push_back(stream);
+  }
+  // The map: sorted points -> (cell, face) in cell order.
+  std::map<std::vector<std::int64_t>, std::vector<std::pair<std::int64_t, std::int32_t>>> byPoints;
+  for (std::size_t c = 0; c < cells.Streams.size(); ++c)
+  {
+    const std::vector<std::int64_t>& stream = cells.Streams[c];
+    for (std::int64_t f = 0, at = 1; f < stream[0]; ++f, at += 1 + stream[at])
+    {
+      std::vector<std::int64_t> face(stream.begin() + at + 1, stream.begin() + at + 1 + stream[at]);
+      std::sort(face.begin(), face.end());
+      byPoints[face].emplace_back(static_cast<std::int64_t>(c), static_cast<std::int32_t>(f));
+    }
+  }
+  std::vector<std::tuple<std::int64_t, std::int32_t, std::int64_t>> expectedInner;
+  std::vector<std::pair<std::int64_t, std::int32_t>> expectedOuter;
+  for (const auto& entry : byPoints)
+  {
+    ASSERT_LE(entry.second.size(), 2u);
+    if (entry.second.size() == 2)
+    {
+      expectedInner.emplace_back(
+        entry.second[0].first, entry.second[0].second, entry.second[1].first);
+    }
+    else
+    {
+      expectedOuter.push_back(entry.second[0]);
+    }
+  }
+  std::sort(expectedInner.begin(), expectedInner.end());
+  std::sort(expectedOuter.begin(), expectedOuter.end());
+  ASSERT_EQ(expectedInner.size(), static_cast<std::size_t>(3 * n * n * (n - 1)));
+  for (const dgmf::ParallelFor& parallelFor :
+    { dgmf::ParallelFor(dgmf::SerialFor), dgmf::ParallelFor(dgmf_test::TwoThreadFor) })
+  {
+    const dgmf::InternalFaces inner = dgmf::FindInternalFaces(cells, points, parallelFor);
+    std::vector<std::tuple<std::int64_t, std::int32_t, std::int64_t>> found;
+    for (std::size_t f = 0; f < inner.Size(); ++f)
+    {
+      found.emplace_back(inner.Owner[f], inner.Face[f], inner.Neighbour[f]);
+    }
+    EXPECT_EQ(found, expectedInner); // in this order: by owner, then by face
+    const dgmf::BoundaryFaces outer = dgmf::FindBoundaryFaces(cells, points, parallelFor);
+    std::vector<std::pair<std::int64_t, std::int32_t>> foundOuter;
+    for (std::size_t f = 0; f < outer.Size(); ++f)
+    {
+      foundOuter.emplace_back(outer.Cell[f], outer.Face[f]);
+    }
+    EXPECT_EQ(foundOuter, expectedOuter);
+  }
 }
 
 TEST(FaceMatching, FacesOfMoreThanFourPointsArePairedOnlyWhenAllTheirPointsAgree)

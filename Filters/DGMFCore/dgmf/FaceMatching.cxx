@@ -3,7 +3,6 @@
 #include "dgmf/CellFaces.h"
 
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -14,8 +13,10 @@ namespace dgmf
 {
 namespace
 {
-constexpr std::size_t CellChunks = 64;        // blocks of cells read in parallel
-constexpr std::size_t PointsPerBlock = 16384; // blocks of buckets matched in parallel
+constexpr std::size_t CellChunks = 64; // blocks of cells read in parallel
+/// Groups of buckets at most: a face goes to the group of its smallest point id's high bits.
+constexpr std::size_t MaximumGroups = 4096;
+constexpr std::size_t GroupsPerBlock = 4; // groups of buckets matched per parallel task
 
 /**
  * A face as the matching sees it, in the bucket of its smallest point id: its next three point
@@ -28,6 +29,7 @@ template <typename Id>
 struct FaceRecord
 {
   Id Key[3];
+  Id Smallest; ///< the face's smallest point id: its bucket
   Id Cell;
   std::uint16_t Face;
   std::uint16_t Count; ///< number of points of the face
@@ -73,6 +75,7 @@ FaceRecord<Id> MakeRecord(const std::int64_t* ids, std::int64_t count, std::size
       key[at] = v;
     }
     smallest = static_cast<std::size_t>(key[0]);
+    record.Smallest = key[0];
     std::copy(key + 1, key + 4, record.Key);
   }
   else
@@ -86,6 +89,7 @@ FaceRecord<Id> MakeRecord(const std::int64_t* ids, std::int64_t count, std::size
       h = Mix(h, static_cast<std::uint64_t>(sorted[k]));
     }
     smallest = static_cast<std::size_t>(sorted[0]);
+    record.Smallest = static_cast<Id>(sorted[0]);
     record.Key[0] = static_cast<Id>(sorted[1]);
     record.Key[1] = static_cast<Id>(sorted[2]);
     record.Key[2] = static_cast<Id>(h);
@@ -170,11 +174,49 @@ void PairGroup(const FaceCells& cells, const FaceRecord<Id>* group, std::size_t 
   }
 }
 
+/// The shift that cuts ids [0, count) into at most MaximumGroups groups (id >> shift).
+int GroupShift(std::size_t count)
+{
+  int shift = 0;
+  while ((count >> shift) >= MaximumGroups)
+  {
+    ++shift;
+  }
+  return shift;
+}
+
 /**
- * Every face in the bucket of its smallest point id (a count, then a fill, both on the cells'
- * blocks in parallel, with atomic bucket positions), then each bucket sorted and its equal faces
- * paired. The order within a bucket after the fill depends on the threads; sorted by key, cell and
- * face, it does not.
+ * Turns `place`, each chunk's count of items per group ([chunk][group]), into each chunk's first
+ * position in each group: the groups one after the other, each in chunk order. Returns where each
+ * group starts (and, last, the total).
+ */
+std::vector<std::uint64_t> PlaceByGroup(
+  std::vector<std::uint64_t>& place, std::size_t chunks, std::size_t groups)
+{
+  std::vector<std::uint64_t> groupStart(groups + 1, 0);
+  std::uint64_t total = 0;
+  for (std::size_t g = 0; g < groups; ++g)
+  {
+    groupStart[g] = total;
+    for (std::size_t k = 0; k < chunks; ++k)
+    {
+      const std::uint64_t size = place[k * groups + g];
+      place[k * groups + g] = total;
+      total += size;
+    }
+  }
+  groupStart[groups] = total;
+  return groupStart;
+}
+
+/**
+ * Every face in the bucket of its smallest point id, and each bucket sorted and its equal faces
+ * paired. The buckets come in groups (the smallest id's high bits): each fixed chunk of cells
+ * counts its faces per group, then writes them at its own place in each group (a prefix sum in
+ * group, then chunk order), without atomic operations or a table per point; each group (a few
+ * hundred KB) is then sorted into its buckets in cache. The order of the faces in a group depends
+ * on the chunks only, and the buckets are sorted by key, cell and face: nothing depends on the
+ * threads.
  */
 template <typename Id>
 std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoints,
@@ -182,7 +224,9 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
 {
   const std::size_t numberOfCells = cells.GetNumberOfCells();
   const std::size_t cellsPerChunk = (numberOfCells + CellChunks - 1) / CellChunks;
-  // For each face of the cells of a block, `body(cell, face, ids, count)`.
+  const int shift = GroupShift(numberOfPoints); // a point's group: id >> shift
+  const std::size_t groups = (numberOfPoints >> shift) + 1;
+  // For each face of the cells of chunk k, `body(k, cell, face, ids, count)`.
   const auto forEachFace = [&](const auto& body)
   {
     ForEachBlock(parallelFor, CellChunks,
@@ -190,7 +234,7 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
       {
         std::vector<std::int64_t> stream, faceIds;
         const std::size_t end = std::min(numberOfCells, (k + 1) * cellsPerChunk);
-        ForEachCellFaceStream(cells, k * cellsPerChunk, end, stream,
+        ForEachCellFaceStream(cells, std::min(numberOfCells, k * cellsPerChunk), end, stream,
           [&](std::size_t c, const std::int64_t* faceStream, const std::int64_t* corners)
           {
             for (std::int64_t f = 0, at = 1; faceStream && f < faceStream[0];
@@ -211,18 +255,15 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
                 }
                 ids = faceIds.data();
               }
-              body(c, static_cast<std::size_t>(f), ids, n);
+              body(k, c, static_cast<std::size_t>(f), ids, n);
             }
           });
       });
   };
-  // 1. The size of each bucket.
-  std::unique_ptr<std::atomic<std::uint64_t>[]> next(
-    new std::atomic<std::uint64_t>[numberOfPoints + 1]);
-  ForEachIndex(parallelFor, numberOfPoints + 1, 1 << 16,
-    [&](std::size_t p) { next[p].store(0, std::memory_order_relaxed); });
+  // 1. Each chunk's faces per group ([chunk][group]: counts, then positions).
+  std::vector<std::uint64_t> place(CellChunks * groups, 0);
   forEachFace(
-    [&](std::size_t c, std::size_t f, const std::int64_t* ids, std::int64_t count)
+    [&](std::size_t k, std::size_t c, std::size_t f, const std::int64_t* ids, std::int64_t count)
     {
       const std::int64_t smallest = *std::min_element(ids, ids + count);
       const std::int64_t largest = *std::max_element(ids, ids + count);
@@ -238,34 +279,29 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
         throw std::invalid_argument(
           "Cell " + std::to_string(c) + " has more than 65,535 faces or face points.");
       }
-      next[static_cast<std::size_t>(smallest)].fetch_add(1, std::memory_order_relaxed);
+      ++place[k * groups + (static_cast<std::size_t>(smallest) >> shift)];
     });
-  // 2. Bucket p starts where bucket p - 1 ends; the fill moves each start to its bucket's end.
-  std::uint64_t total = 0;
-  for (std::size_t p = 0; p <= numberOfPoints; ++p)
-  {
-    const std::uint64_t size = next[p].load(std::memory_order_relaxed);
-    next[p].store(total, std::memory_order_relaxed);
-    total += size;
-  }
-  // Not initialised (a GB on large meshes).
+  // 2. The groups one after the other, each in chunk order.
+  const std::vector<std::uint64_t> groupStart = PlaceByGroup(place, CellChunks, groups);
+  const std::uint64_t total = groupStart[groups];
+  // Not initialised (a GB on large meshes); its pages faulted in parts on the threads first (the
+  // fill writes each group's part from both threads).
   std::unique_ptr<FaceRecord<Id>[]> records(new FaceRecord<Id>[total]);
-  // Its pages faulted in parts on the threads first: the fill writes it scattered by bucket, and
-  // its page faults from both threads waited on each other (0.05 s more at 49M records).
   {
     std::vector<FirstTouchPart> parts;
     AppendFirstTouchParts(records.get(), total * sizeof(FaceRecord<Id>), parts);
     FirstTouchParts(parts, parallelFor);
   }
   forEachFace(
-    [&](std::size_t c, std::size_t f, const std::int64_t* ids, std::int64_t count)
+    [&](std::size_t k, std::size_t c, std::size_t f, const std::int64_t* ids, std::int64_t count)
     {
       std::size_t smallest = 0;
       const FaceRecord<Id> record = MakeRecord<Id>(ids, count, c, f, smallest);
-      records[next[smallest].fetch_add(1, std::memory_order_relaxed)] = record;
+      records[place[k * groups + (smallest >> shift)]++] = record;
     });
-  // 3. Each bucket [end of p - 1, end of p): sorted, equal faces paired.
-  const std::size_t blocks = (numberOfPoints + PointsPerBlock - 1) / PointsPerBlock;
+  // 3. Each group into its buckets (a counting sort by the smallest id's low bits, in cache), each
+  //    bucket sorted and its equal faces paired.
+  const std::size_t blocks = (groups + GroupsPerBlock - 1) / GroupsPerBlock;
   std::vector<MatchSink> sinks(blocks);
   ForEachBlock(parallelFor, blocks,
     [&](std::size_t block)
@@ -273,32 +309,54 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
       MatchSink& sink = sinks[block];
       sink.KeepPairs = keepPairs;
       std::vector<std::uint8_t> paired;
-      const std::size_t end = std::min(numberOfPoints, (block + 1) * PointsPerBlock);
-      if (keepPairs && end > block * PointsPerBlock)
+      std::vector<FaceRecord<Id>> sorted;
+      std::vector<std::size_t> bucketStart;
+      const std::size_t firstGroup = block * GroupsPerBlock;
+      const std::size_t endGroup = std::min(groups, firstGroup + GroupsPerBlock);
+      if (keepPairs)
       {
         // At most one pair per two of the block's records: no growth (copies and their page
         // faults: a tenth of the first run's faults at 8.2M hexahedra).
-        const std::size_t begin = block * PointsPerBlock;
-        const std::uint64_t first =
-          begin == 0 ? 0 : next[begin - 1].load(std::memory_order_relaxed);
         sink.Pairs.reserve(
-          static_cast<std::size_t>(next[end - 1].load(std::memory_order_relaxed) - first) / 2);
+          static_cast<std::size_t>(groupStart[endGroup] - groupStart[firstGroup]) / 2);
       }
-      for (std::size_t p = block * PointsPerBlock; p < end; ++p)
+      for (std::size_t g = firstGroup; g < endGroup; ++g)
       {
-        const std::uint64_t first = p == 0 ? 0 : next[p - 1].load(std::memory_order_relaxed);
-        FaceRecord<Id>* bucket = records.get() + first;
-        const auto size = static_cast<std::size_t>(next[p].load(std::memory_order_relaxed) - first);
-        std::sort(bucket, bucket + size);
-        for (std::size_t a = 0; a < size;)
+        const FaceRecord<Id>* group = records.get() + groupStart[g];
+        const auto size = static_cast<std::size_t>(groupStart[g + 1] - groupStart[g]);
+        const std::size_t firstPoint = g << shift;
+        const std::size_t points = std::min(numberOfPoints, (g + 1) << shift) - firstPoint;
+        bucketStart.assign(points + 1, 0);
+        for (std::size_t r = 0; r < size; ++r)
         {
-          std::size_t b = a + 1;
-          while (b < size && bucket[b].SameKey(bucket[a]))
+          ++bucketStart[static_cast<std::size_t>(group[r].Smallest) - firstPoint + 1];
+        }
+        for (std::size_t p = 0; p < points; ++p)
+        {
+          bucketStart[p + 1] += bucketStart[p];
+        }
+        sorted.resize(size);
+        for (std::size_t r = 0; r < size; ++r)
+        {
+          sorted[bucketStart[static_cast<std::size_t>(group[r].Smallest) - firstPoint]++] =
+            group[r];
+        }
+        // Each bucket now ends where the next began.
+        for (std::size_t p = 0, first = 0; p < points; first = bucketStart[p++])
+        {
+          FaceRecord<Id>* bucket = sorted.data() + first;
+          const std::size_t bucketSize = bucketStart[p] - first;
+          std::sort(bucket, bucket + bucketSize);
+          for (std::size_t a = 0; a < bucketSize;)
           {
-            ++b;
+            std::size_t b = a + 1;
+            while (b < bucketSize && bucket[b].SameKey(bucket[a]))
+            {
+              ++b;
+            }
+            PairGroup(cells, bucket + a, b - a, sink, paired);
+            a = b;
           }
-          PairGroup(cells, bucket + a, b - a, sink, paired);
-          a = b;
         }
       }
     });
@@ -306,40 +364,46 @@ std::vector<MatchSink> MatchAll(const FaceCells& cells, std::size_t numberOfPoin
 }
 
 /**
- * The pairs of every sink by owner, then by face, on the threads: each owner's faces counted
- * (atomically, one task per group of sinks), the owners' ranges by a prefix sum, the pairs placed
- * in their owner's range in any order, then each owner's few faces ordered by face. An owner
- * pairs each of its faces once, so the order is the same whatever the threads did.
+ * The pairs of every sink by owner, then by face, on the threads, without atomic operations: the
+ * owners come in groups (their ids' high bits); fixed chunks of sinks count their pairs per group
+ * and write them at their own place in each group (a prefix sum in group, then chunk order), then
+ * each group (in cache) is sorted by owner, and each owner's few faces by face. An owner pairs
+ * each of its faces once, so the order is the same whatever the threads did.
  */
 InternalFaces InternalFacesOf(
   const std::vector<MatchSink>& sinks, std::size_t numberOfCells, const ParallelFor& parallelFor)
 {
-  std::unique_ptr<std::atomic<std::uint32_t>[]> placed(
-    new std::atomic<std::uint32_t>[numberOfCells]);
-  ForEachIndex(parallelFor, numberOfCells, 1 << 16,
-    [&](std::size_t c) { placed[c].store(0, std::memory_order_relaxed); });
-  ForEachBlock(parallelFor, sinks.size(),
-    [&](std::size_t s)
-    {
-      for (const auto& pair : sinks[s].Pairs)
-      {
-        placed[static_cast<std::size_t>(std::get<0>(pair))].fetch_add(1, std::memory_order_relaxed);
-      }
-    });
-  std::vector<std::size_t> start(numberOfCells + 1, 0);
-  for (std::size_t c = 0; c < numberOfCells; ++c)
+  const int shift = GroupShift(numberOfCells); // a cell's group: id >> shift
+  const std::size_t groups = (numberOfCells >> shift) + 1;
+  const std::size_t chunks = std::max<std::size_t>(1, std::min(CellChunks, sinks.size()));
+  const std::size_t sinksPerChunk = (sinks.size() + chunks - 1) / chunks;
+  const auto forEachPair = [&](const auto& body)
   {
-    start[c + 1] = start[c] + placed[c].load(std::memory_order_relaxed);
-  }
-  ForEachIndex(parallelFor, numberOfCells, 1 << 16,
-    [&](std::size_t c) { placed[c].store(0, std::memory_order_relaxed); });
+    ForEachBlock(parallelFor, chunks,
+      [&](std::size_t k)
+      {
+        const std::size_t end = std::min(sinks.size(), (k + 1) * sinksPerChunk);
+        for (std::size_t s = std::min(sinks.size(), k * sinksPerChunk); s < end; ++s)
+        {
+          for (const auto& pair : sinks[s].Pairs)
+          {
+            body(k, pair);
+          }
+        }
+      });
+  };
+  // 1. Each chunk's pairs per group of owners ([chunk][group]: counts, then positions).
+  std::vector<std::uint64_t> place(chunks * groups, 0);
+  forEachPair([&](std::size_t k, const auto& pair)
+    { ++place[k * groups + (static_cast<std::size_t>(std::get<0>(pair)) >> shift)]; });
+  const std::vector<std::uint64_t> groupStart = PlaceByGroup(place, chunks, groups);
+  const std::uint64_t total = groupStart[groups];
   InternalFaces faces;
-  faces.Owner.resize(start[numberOfCells]);
-  faces.Neighbour.resize(start[numberOfCells]);
-  faces.Face.resize(start[numberOfCells]);
-  // Their pages faulted in parts on the threads first: the placement below writes them in the
-  // owners' order, scattered, and its page faults from both threads waited on each other (0.19 -
-  // 0.36 s of placement at 24.6M faces instead of 0.08 s after 0.08 s of this).
+  faces.Owner.resize(total);
+  faces.Neighbour.resize(total);
+  faces.Face.resize(total);
+  // Their pages faulted in parts on the threads first: the pairs are written scattered over the
+  // groups, and their page faults from both threads waited on each other.
   {
     std::vector<FirstTouchPart> parts;
     AppendFirstTouchParts(faces.Owner.data(), faces.Owner.size() * sizeof(std::int64_t), parts);
@@ -348,34 +412,63 @@ InternalFaces InternalFacesOf(
     AppendFirstTouchParts(faces.Face.data(), faces.Face.size() * sizeof(std::int32_t), parts);
     FirstTouchParts(parts, parallelFor);
   }
-  ForEachBlock(parallelFor, sinks.size(),
-    [&](std::size_t s)
+  // 2. The pairs into their groups.
+  forEachPair(
+    [&](std::size_t k, const auto& pair)
     {
-      for (const auto& pair : sinks[s].Pairs)
+      const std::size_t at =
+        place[k * groups + (static_cast<std::size_t>(std::get<0>(pair)) >> shift)]++;
+      faces.Owner[at] = std::get<0>(pair);
+      faces.Neighbour[at] = std::get<1>(pair);
+      faces.Face[at] = std::get<2>(pair);
+    });
+  // 3. Each group by owner (a counting sort in cache), each owner's faces by face (insertion).
+  ForEachBlock(parallelFor, groups,
+    [&](std::size_t g)
+    {
+      const std::size_t begin = groupStart[g], end = groupStart[g + 1];
+      if (begin == end)
       {
-        const auto owner = static_cast<std::size_t>(std::get<0>(pair));
-        const std::size_t at = start[owner] + placed[owner].fetch_add(1, std::memory_order_relaxed);
+        return;
+      }
+      const std::size_t firstCell = g << shift;
+      const std::size_t cellsInGroup = std::min(numberOfCells, (g + 1) << shift) - firstCell;
+      std::vector<std::tuple<std::int64_t, std::int64_t, std::int32_t>> group(end - begin);
+      std::vector<std::size_t> start(cellsInGroup + 1, 0);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        group[i - begin] = { faces.Owner[i], faces.Neighbour[i], faces.Face[i] };
+        ++start[static_cast<std::size_t>(faces.Owner[i]) - firstCell + 1];
+      }
+      for (std::size_t c = 0; c < cellsInGroup; ++c)
+      {
+        start[c + 1] += start[c];
+      }
+      for (const auto& pair : group)
+      {
+        const std::size_t at =
+          begin + start[static_cast<std::size_t>(std::get<0>(pair)) - firstCell]++;
         faces.Owner[at] = std::get<0>(pair);
         faces.Neighbour[at] = std::get<1>(pair);
         faces.Face[at] = std::get<2>(pair);
       }
-    });
-  ForEachIndex(parallelFor, numberOfCells, 1 << 14,
-    [&](std::size_t c)
-    {
-      // Insertion by face (a cell has a few faces).
-      for (std::size_t i = start[c] + 1; i < start[c + 1]; ++i)
+      // Each owner's range now ends where the next began.
+      for (std::size_t c = 0, first = begin; c < cellsInGroup; first = begin + start[c++])
       {
-        const std::int64_t neighbour = faces.Neighbour[i];
-        const std::int32_t face = faces.Face[i];
-        std::size_t at = i;
-        for (; at > start[c] && faces.Face[at - 1] > face; --at)
+        const std::size_t last = begin + start[c];
+        for (std::size_t i = first + 1; i < last; ++i)
         {
-          faces.Neighbour[at] = faces.Neighbour[at - 1];
-          faces.Face[at] = faces.Face[at - 1];
+          const std::int64_t neighbour = faces.Neighbour[i];
+          const std::int32_t face = faces.Face[i];
+          std::size_t at = i;
+          for (; at > first && faces.Face[at - 1] > face; --at)
+          {
+            faces.Neighbour[at] = faces.Neighbour[at - 1];
+            faces.Face[at] = faces.Face[at - 1];
+          }
+          faces.Neighbour[at] = neighbour;
+          faces.Face[at] = face;
         }
-        faces.Neighbour[at] = neighbour;
-        faces.Face[at] = face;
       }
     });
   return faces;

@@ -126,10 +126,10 @@ struct BoundaryFaces
  * and the rest left unpaired. Point ids must lie in [0, numberOfPoints) (else
  * std::invalid_argument, naming the cell).
  *
- * How: every face goes into the bucket of its smallest point id (a count and a fill over the
- * cells, in parallel), then each bucket is sorted by the face's other point ids and equal faces
- * are paired. Memory while it runs: about 20 bytes per face and 8 per point (40 per face with
- * 2^32 - 1 points or cells or more).
+ * How: every face goes into the bucket of its smallest point id (a count and a fill over fixed
+ * chunks of the cells, in parallel, into groups of buckets), then each bucket is sorted by the
+ * face's other point ids and equal faces are paired. Memory while it runs: about 24 bytes per face
+ * (48 with 2^32 - 1 points or cells or more).
  */
 InternalFaces FindInternalFaces(
   const FaceCells& cells, std::size_t numberOfPoints, const ParallelFor& parallelFor);
