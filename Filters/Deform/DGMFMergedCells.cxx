@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace dgmf_vtk
 {
@@ -76,7 +78,7 @@ int MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
   if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
   {
     const std::array<bool, 256> present = CellTypesPresent(grid);
-    if (!present[VTK_POLYHEDRON])
+    if (!present[VTK_POLYHEDRON] || (grid->GetFaceLocations() && grid->GetFaces()))
     {
       return this->AppendGrid(grid, leaf, present);
     }
@@ -135,6 +137,10 @@ int MergedCells::AppendGrid(
     CopyMapped(source->GetOffsetsArray32(), 0, cells + 1, offsets, shift);
     CopyMapped(source->GetConnectivityArray32(), 0, ids, connectivity, renumber);
   }
+  if (present[VTK_POLYHEDRON])
+  {
+    this->AppendPolyhedronFaces(grid, leaf);
+  }
   this->NumberOfCells += cells;
   this->NumberOfIds += ids;
   int dimension = 0;
@@ -146,6 +152,51 @@ int MergedCells::AppendGrid(
     }
   }
   return dimension;
+}
+
+void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf)
+{
+  const vtkIdType cells = grid->GetNumberOfCells();
+  const vtkIdType* location = grid->GetFaceLocations()->GetPointer(0);
+  const vtkIdType* stream = grid->GetFaces()->GetPointer(0);
+  const vtkIdType length = grid->GetFaces()->GetNumberOfValues();
+  const auto outside = [](vtkIdType c)
+  {
+    return std::runtime_error("Cell " + std::to_string(c) +
+      " is a polyhedron whose faces run past the end of the grid's face array.");
+  };
+  this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells), -1);
+  this->FaceLocations.reserve(static_cast<std::size_t>(this->NumberOfCells + cells));
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    if (location[c] < 0)
+    {
+      this->FaceLocations.push_back(-1);
+      continue;
+    }
+    // nfaces, then (count, ids...) per face, the ids renumbered like the points.
+    this->FaceLocations.push_back(static_cast<vtkIdType>(this->Faces.size()));
+    vtkIdType at = location[c];
+    if (at >= length)
+    {
+      throw outside(c);
+    }
+    const vtkIdType faces = stream[at++];
+    this->Faces.push_back(faces);
+    for (vtkIdType f = 0; f < faces; ++f)
+    {
+      if (at >= length || stream[at] < 0 || stream[at] > length - at - 1)
+      {
+        throw outside(c);
+      }
+      const vtkIdType count = stream[at++];
+      this->Faces.push_back(count);
+      for (vtkIdType m = 0; m < count; ++m)
+      {
+        this->Faces.push_back(leaf.Node(stream[at++]));
+      }
+    }
+  }
 }
 
 int MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf)

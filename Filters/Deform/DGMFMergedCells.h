@@ -27,8 +27,8 @@ void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids);
 
 /**
  * The merged grid's cells, written into VTK arrays sized once for all the blocks (no copy when
- * they are handed to the grid); a grid without polyhedra is copied array by array, on the
- * vtkSMPTools threads.
+ * they are handed to the grid); a grid is copied array by array, on the vtkSMPTools threads (its
+ * polyhedra's faces polyhedron by polyhedron).
  */
 class MergedCells
 {
@@ -47,9 +47,13 @@ public:
   vtkIdType NumberOfIds = 0;
 
 private:
-  /// A grid without polyhedra: its types, offsets and connectivity array by array.
+  /// A grid: its types, offsets and connectivity array by array, and its polyhedra's faces
+  /// (VTK's face locations and faces arrays) polyhedron by polyhedron.
   int AppendGrid(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf,
     const std::array<bool, 256>& present);
+  /// The faces of the grid's polyhedra, renumbered; std::runtime_error when a polyhedron's faces
+  /// run past the faces array.
+  void AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf);
   int AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 
   vtkNew<vtkUnsignedCharArray> Types;

@@ -393,14 +393,23 @@ TEST(CompositeMesh, EveryKindOfBlockKeepsItsCellsOnTheMergedNodes)
   const vtkIdType corners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
   const vtkIdType faces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
     3, 1, 4, 4, 5, 7, 6 };
+  // A hexahedron (no faces of its own in VTK's arrays) between two polyhedra: each polyhedron's
+  // faces must follow it.
   cube->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
+  cube->InsertNextCell(VTK_HEXAHEDRON, 8, corners);
+  const vtkIdType lowerCorners[4] = { 0, 1, 3, 2 };
+  const vtkIdType pyramidFaces[] = { 4, 0, 1, 3, 2, 3, 0, 1, 4, 3, 1, 3, 4, 3, 3, 2, 4, 3, 2, 0,
+    4 };
+  const vtkIdType pyramidCorners[5] = { lowerCorners[0], lowerCorners[1], lowerCorners[2],
+    lowerCorners[3], 4 };
+  cube->InsertNextCell(VTK_POLYHEDRON, 5, pyramidCorners, 5, pyramidFaces);
   blocks->SetBlock(3, cube);
 
   const dgmf_vtk::CompositeMesh composite(blocks, "Displacement", "BoundaryMarker");
   vtkUnstructuredGrid* merged = composite.GetMergedMesh();
   // 6 + 6 - 2 shared + 0 new on the patch + 8 - 4 shared with the first block.
   EXPECT_EQ(merged->GetNumberOfPoints(), 14);
-  ASSERT_EQ(merged->GetNumberOfCells(), 2 + 2 + 2 + 1);
+  ASSERT_EQ(merged->GetNumberOfCells(), 2 + 2 + 2 + 3);
   vtkIdType first = 0;
   for (unsigned int b = 0; b < blocks->GetNumberOfBlocks(); ++b)
   {
@@ -424,9 +433,28 @@ TEST(CompositeMesh, EveryKindOfBlockKeepsItsCellsOnTheMergedNodes)
     }
     first += block->GetNumberOfCells();
   }
-  vtkNew<vtkIdList> stream;
-  merged->GetFaceStream(6, stream);
-  EXPECT_EQ(stream->GetId(0), 6); // the polyhedron kept its 6 faces
+  // The polyhedra kept their faces, on merged nodes at the same places.
+  for (const vtkIdType c : { 0, 2 })
+  {
+    vtkNew<vtkIdList> own, stream;
+    cube->GetFaceStream(c, own);
+    merged->GetFaceStream(6 + c, stream);
+    ASSERT_EQ(stream->GetNumberOfIds(), own->GetNumberOfIds()) << "cell " << c;
+    EXPECT_EQ(stream->GetId(0), c == 0 ? 6 : 5);
+    for (vtkIdType at = 1; at < own->GetNumberOfIds();)
+    {
+      const vtkIdType count = own->GetId(at);
+      EXPECT_EQ(stream->GetId(at++), count);
+      for (vtkIdType m = 0; m < count; ++m, ++at)
+      {
+        double p[3], q[3];
+        cube->GetPoint(own->GetId(at), p);
+        merged->GetPoint(stream->GetId(at), q);
+        EXPECT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "cell " << c;
+      }
+    }
+  }
+  EXPECT_EQ(merged->GetFaceLocations()->GetValue(7), -1); // the hexahedron
   // The float displacement as doubles at its block's nodes; zeros where no block has one.
   vtkDataArray* merges = merged->GetPointData()->GetArray("Displacement");
   ASSERT_TRUE(merges);
@@ -448,6 +476,43 @@ TEST(CompositeMesh, EveryKindOfBlockKeepsItsCellsOnTheMergedNodes)
     }
   }
   EXPECT_TRUE(found);
+}
+
+TEST(CompositeMesh, APolyhedronWhoseFacesRunPastTheFaceArrayIsRefusedWithItsCellNamed)
+{
+  // VTK's face arrays as a broken writer might leave them: the second cell's faces start past
+  // the end. The merge reads the arrays in place; it must stop with the cell named, not read on.
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int i = 0; i < 2; ++i)
+      {
+        points->InsertNextPoint(i, j, k);
+      }
+    }
+  }
+  grid->SetPoints(points);
+  const vtkIdType corners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  const vtkIdType faces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
+    3, 1, 4, 4, 5, 7, 6 };
+  grid->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
+  grid->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
+  grid->GetFaceLocations()->SetValue(1, grid->GetFaces()->GetNumberOfValues() - 3);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, grid);
+  try
+  {
+    const dgmf_vtk::CompositeMesh composite(blocks, "", "BoundaryMarker");
+    ADD_FAILURE() << "the broken face array was read";
+  }
+  catch (const std::runtime_error& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("Cell 1 is a polyhedron"), std::string::npos)
+      << error.what();
+  }
 }
 
 TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChanges)
