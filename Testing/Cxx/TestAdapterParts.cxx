@@ -87,6 +87,33 @@ void SetEnvironment(const char* name, const char* value)
   }
 #endif
 }
+
+/// The unit cube's corners (points numbered x fastest) in VTK's hexahedron order, and its six
+/// faces as a polyhedron's face stream.
+const vtkIdType CubeCorners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+const vtkIdType CubeFaces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
+  3, 1, 4, 4, 5, 7, 6 };
+
+/// A grid of the unit cube's 8 points and one cell: the cube as a polyhedron.
+vtkSmartPointer<vtkUnstructuredGrid> UnitCubePolyhedron()
+{
+  auto cube = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int i = 0; i < 2; ++i)
+      {
+        points->InsertNextPoint(i, j, k);
+      }
+    }
+  }
+  cube->SetPoints(points);
+  cube->InsertNextCell(VTK_POLYHEDRON, 8, CubeCorners, 6, CubeFaces);
+  return cube;
+}
+
 } // namespace
 
 TEST(ContentKey, MatchesTheSameContentInAnyObjectAndNothingElse)
@@ -377,26 +404,10 @@ TEST(CompositeMesh, EveryKindOfBlockKeepsItsCellsOnTheMergedNodes)
   lines->InsertNextCell(2, segments[1]);
   patch->SetLines(lines);
   blocks->SetBlock(2, patch);
-  auto cube = vtkSmartPointer<vtkUnstructuredGrid>::New(); // a unit cube above x in [0, 1]
-  vtkNew<vtkPoints> cubePoints;
-  for (int k = 0; k < 2; ++k)
-  {
-    for (int j = 0; j < 2; ++j)
-    {
-      for (int i = 0; i < 2; ++i)
-      {
-        cubePoints->InsertNextPoint(i, j, k);
-      }
-    }
-  }
-  cube->SetPoints(cubePoints);
-  const vtkIdType corners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-  const vtkIdType faces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
-    3, 1, 4, 4, 5, 7, 6 };
   // A hexahedron (no faces of its own in VTK's arrays) between two polyhedra: each polyhedron's
   // faces must follow it.
-  cube->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
-  cube->InsertNextCell(VTK_HEXAHEDRON, 8, corners);
+  const vtkSmartPointer<vtkUnstructuredGrid> cube = UnitCubePolyhedron();
+  cube->InsertNextCell(VTK_HEXAHEDRON, 8, CubeCorners);
   const vtkIdType lowerCorners[4] = { 0, 1, 3, 2 };
   const vtkIdType pyramidFaces[] = { 4, 0, 1, 3, 2, 3, 0, 1, 4, 3, 1, 3, 4, 3, 3, 2, 4, 3, 2, 0,
     4 };
@@ -482,24 +493,8 @@ TEST(CompositeMesh, APolyhedronWhoseFacesRunPastTheFaceArrayIsRefusedWithItsCell
 {
   // VTK's face arrays as a broken writer might leave them: the second cell's faces start past
   // the end. The merge reads the arrays in place; it must stop with the cell named, not read on.
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  for (int k = 0; k < 2; ++k)
-  {
-    for (int j = 0; j < 2; ++j)
-    {
-      for (int i = 0; i < 2; ++i)
-      {
-        points->InsertNextPoint(i, j, k);
-      }
-    }
-  }
-  grid->SetPoints(points);
-  const vtkIdType corners[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-  const vtkIdType faces[] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 2,
-    3, 1, 4, 4, 5, 7, 6 };
-  grid->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
-  grid->InsertNextCell(VTK_POLYHEDRON, 8, corners, 6, faces);
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = UnitCubePolyhedron();
+  grid->InsertNextCell(VTK_POLYHEDRON, 8, CubeCorners, 6, CubeFaces);
   grid->GetFaceLocations()->SetValue(1, grid->GetFaces()->GetNumberOfValues() - 3);
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetBlock(0, grid);
