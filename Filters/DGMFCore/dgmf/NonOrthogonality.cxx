@@ -152,22 +152,19 @@ public:
     }
   }
 
-  /// Computes the quadrilaterals queued (the empty lanes repeat the first).
+  /// Computes the quadrilaterals queued.
   void Flush()
   {
     if (this->Pending == 0)
     {
       return;
     }
-    for (int l = this->Pending; l < 4; ++l)
-    {
-      std::copy(this->Corners[0], this->Corners[0] + 4, this->Corners[l]);
-    }
-    // Written where they go (copied from a local array, they would be read before their stores
-    // had landed); the empty lanes' to a scrap.
+    // The results are written where they go (copied from a local array, they would be read
+    // before their stores had landed); the empty lanes repeat the first and write to a scrap.
     FaceGeometry scrap;
     for (int l = this->Pending; l < 4; ++l)
     {
+      std::copy(this->Corners[0], this->Corners[0] + 4, this->Corners[l]);
       this->Target[l] = &scrap;
     }
     QuadrilateralsOf(this->Corners, this->Target);
