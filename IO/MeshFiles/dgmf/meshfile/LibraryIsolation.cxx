@@ -3,6 +3,7 @@
 #include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/NamedMesh.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -42,6 +43,15 @@ void WriteAll(int fd, const std::string& bytes)
   }
 }
 
+/// The child's answer starts with its kind ('O' done, 'E' FileError, 'X' other failure) and the
+/// body's length in bytes (8, native order: the same program on both ends).
+constexpr std::size_t AnswerHeaderBytes = 1 + sizeof(std::uint64_t);
+
+/// The bytes read from the child at most per call, and the pipe's capacity asked for: a 62 MB
+/// answer went through the default 64 KiB pipe at about 0.65 GB/s, a switch between the two
+/// processes every 64 KiB.
+constexpr std::size_t PipeBytes = std::size_t(1) << 20;
+
 /// Limits this process's address space to what it has now plus `budget` bytes.
 void LimitAddressSpace(std::size_t budget)
 {
@@ -70,24 +80,34 @@ void LimitAddressSpace(std::size_t budget)
 #else
   (void)memoryBudget;
 #endif
-  std::string answer;
+  char kind = 'O';
+  std::string body;
   try
   {
-    answer = "O" + work();
+    body = work();
   }
   catch (const FileError& e)
   {
-    answer = std::string("E") + e.what();
+    kind = 'E';
+    body = e.what();
   }
   catch (const std::exception& e)
   {
-    answer = std::string("X") + e.what();
+    kind = 'X';
+    body = e.what();
   }
   catch (...)
   {
-    answer = "Xunknown exception";
+    kind = 'X';
+    body = "unknown exception";
   }
-  WriteAll(fd, answer);
+  // The answer's header (AnswerHeaderBytes: the kind, then the body's length), then the body as
+  // it is: the caller reads it straight into a string of that length.
+  const std::uint64_t length = body.size();
+  std::string header(1, kind);
+  header.append(reinterpret_cast<const char*>(&length), sizeof(length));
+  WriteAll(fd, header);
+  WriteAll(fd, body);
   ::close(fd);
   ::_exit(0);
 }
@@ -159,10 +179,17 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
     ChildMain(fds[1], memoryBudget, work);
   }
   ::close(fds[1]);
-  std::string answer;
+#ifdef F_SETPIPE_SZ
+  ::fcntl(fds[0], F_SETPIPE_SZ, static_cast<int>(PipeBytes)); // the default where refused
+#endif
+  char header[AnswerHeaderBytes];
+  std::size_t headerRead = 0;
+  std::string body;
+  std::size_t bodyRead = 0;
+  bool tooLong = false; // bytes past the announced length, or a length beyond any answer
   bool timedOut = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  char buffer[1 << 16];
+  char excess[4096];
   for (;;)
   {
     const double left =
@@ -182,7 +209,20 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
     {
       continue;
     }
-    const ssize_t got = ::read(fds[0], buffer, sizeof(buffer));
+    // The header first, then the body in place, then anything more into `excess` (an error).
+    char* into = excess;
+    std::size_t room = sizeof(excess);
+    if (headerRead < AnswerHeaderBytes)
+    {
+      into = header + headerRead;
+      room = AnswerHeaderBytes - headerRead;
+    }
+    else if (bodyRead < body.size())
+    {
+      into = body.data() + bodyRead;
+      room = std::min(body.size() - bodyRead, PipeBytes);
+    }
+    const ssize_t got = ::read(fds[0], into, room);
     if (got < 0 && errno == EINTR)
     {
       continue;
@@ -191,10 +231,37 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
     {
       break; // the child closed the pipe: done or dead
     }
-    answer.append(buffer, static_cast<std::size_t>(got));
+    const auto count = static_cast<std::size_t>(got);
+    if (headerRead < AnswerHeaderBytes)
+    {
+      headerRead += count;
+      if (headerRead == AnswerHeaderBytes)
+      {
+        std::uint64_t length = 0;
+        std::memcpy(&length, header + 1, sizeof(length));
+        try
+        {
+          body.resize(static_cast<std::size_t>(length));
+        }
+        catch (const std::exception&) // a length no answer can have (std::length_error, bad_alloc)
+        {
+          tooLong = true;
+          break;
+        }
+      }
+    }
+    else if (bodyRead < body.size())
+    {
+      bodyRead += count;
+    }
+    else
+    {
+      tooLong = true;
+      break;
+    }
   }
   ::close(fds[0]);
-  if (timedOut)
+  if (timedOut || tooLong)
   {
     ::kill(child, SIGKILL);
   }
@@ -207,24 +274,30 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
     throw FileError(
       file + ": " + library + " did not finish within " + std::to_string(seconds) + " s (stopped)");
   }
-  if (WIFSIGNALED(status))
+  if (WIFSIGNALED(status) && !tooLong) // (killed above when its answer was too long)
   {
     throw FileError(file + ": " + library + " crashed on it (signal " +
       std::to_string(WTERMSIG(status)) + ": " + ::strsignal(WTERMSIG(status)) + ")");
   }
-  if (answer.empty())
+  if (headerRead < AnswerHeaderBytes)
   {
     throw FileError(file + ": " + library + "'s process ended without an answer");
   }
-  if (answer[0] == 'E')
+  if (tooLong || bodyRead < body.size())
   {
-    throw FileError(answer.substr(1));
+    throw FileError(file + ": " + library + "'s process gave a broken answer (" +
+      std::to_string(bodyRead) + " bytes of " + std::to_string(body.size()) +
+      (tooLong ? ", or more than it announced)" : ")"));
   }
-  if (answer[0] != 'O')
+  if (header[0] == 'E')
   {
-    throw FileError(file + ": " + answer.substr(1));
+    throw FileError(body);
   }
-  return answer.substr(1);
+  if (header[0] != 'O')
+  {
+    throw FileError(file + ": " + body);
+  }
+  return body;
 }
 
 namespace
@@ -263,6 +336,18 @@ void Get(const std::string& in, std::size_t& at, std::vector<T>& values)
   at += count * sizeof(T);
 }
 
+/// The bytes Put appends for `values`.
+template <typename T>
+std::size_t BytesOf(const std::vector<T>& values)
+{
+  return sizeof(std::uint64_t) + values.size() * sizeof(T);
+}
+
+std::size_t BytesOfCells(const Cells& cells)
+{
+  return BytesOf(cells.Types) + BytesOf(cells.Offsets) + BytesOf(cells.Connectivity);
+}
+
 void PutCells(std::string& out, const Cells& cells)
 {
   Put(out, cells.Types);
@@ -282,6 +367,15 @@ void GetCells(const std::string& in, std::size_t& at, Cells& cells)
 std::string MeshToBytes(const NamedMesh& mesh)
 {
   std::string out;
+  // Its exact size first: no copy as it grows (a volume of 1.3M tetrahedra is 60 MB).
+  const std::size_t number = sizeof(std::uint64_t) + sizeof(std::int64_t); // a count, a value
+  std::size_t bytes =
+    number + BytesOf(mesh.Points) + BytesOf(mesh.NodeIds) + BytesOfCells(mesh.Volume) + number;
+  for (const NamedBoundary& boundary : mesh.Boundaries)
+  {
+    bytes += sizeof(std::uint64_t) + boundary.Name.size() + BytesOfCells(boundary.Faces);
+  }
+  out.reserve(bytes);
   Put(out, std::vector<std::int64_t>{ mesh.Dimension });
   Put(out, mesh.Points);
   Put(out, mesh.NodeIds);

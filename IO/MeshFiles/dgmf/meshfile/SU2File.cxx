@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string_view>
 #include <system_error>
 
@@ -420,13 +419,26 @@ std::string ReadWholeFile(const std::string& path)
   {
     throw FileError(path + ": cannot be opened");
   }
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
+  // Read at its size in one call (a stream into an ostringstream took 0.12 s for 62 MB in the
+  // page cache: doubling and a final copy), then whatever the file grew by meanwhile.
+  const std::uintmax_t size = fs::file_size(path, error);
+  std::string bytes(error ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  if (!in.bad() && (error || bytes.size() == size))
+  {
+    in.clear();
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof(chunk)) || in.gcount() > 0)
+    {
+      bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
+  }
   if (in.bad())
   {
     throw FileError(path + ": cannot be read");
   }
-  return bytes.str();
+  return bytes;
 }
 
 /// Appends `value` with 17 significant digits (reads back as the same double; no locale).

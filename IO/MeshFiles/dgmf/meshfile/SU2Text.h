@@ -39,30 +39,55 @@ struct Tokens
   bool Overflow = false;
 };
 
-/// The characters that separate tokens (a '\r' before the '\n' included).
-constexpr const char* Spaces = " \t\r\v\f";
+/// Whether `c` separates tokens: ' ', '\t', '\r' (before the '\n' included), '\v', '\f'.
+/// (string_view's find_first_of on a set of them calls memchr on the set for each character: a
+/// sixth of a large file's read went there.)
+constexpr bool IsSpace(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
 
 inline std::string_view Trim(std::string_view text)
 {
-  const std::size_t first = text.find_first_not_of(Spaces);
-  return first == std::string_view::npos
-    ? std::string_view()
-    : text.substr(first, text.find_last_not_of(Spaces) - first + 1);
+  std::size_t first = 0, last = text.size();
+  while (first < last && IsSpace(text[first]))
+  {
+    ++first;
+  }
+  while (last > first && IsSpace(text[last - 1]))
+  {
+    --last;
+  }
+  return text.substr(first, last - first);
 }
 
 inline Tokens Split(std::string_view text)
 {
   Tokens tokens;
-  for (std::size_t begin = text.find_first_not_of(Spaces); begin != std::string_view::npos;)
+  const std::size_t size = text.size();
+  std::size_t begin = 0;
+  for (;;)
   {
+    while (begin < size && IsSpace(text[begin]))
+    {
+      ++begin;
+    }
+    if (begin == size)
+    {
+      break;
+    }
     if (tokens.Count == Tokens::Capacity)
     {
       tokens.Overflow = true;
       break;
     }
-    const std::size_t end = std::min(text.find_first_of(Spaces, begin), text.size());
+    std::size_t end = begin;
+    while (end < size && !IsSpace(text[end]))
+    {
+      ++end;
+    }
     tokens.Items[tokens.Count++] = text.substr(begin, end - begin);
-    begin = text.find_first_not_of(Spaces, end);
+    begin = end;
   }
   return tokens;
 }
