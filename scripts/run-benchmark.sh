@@ -44,3 +44,7 @@ echo "wrote $OUT/README.md"
 # Large motions (issue 10): sub-steps and the quality guard on the thin slab (about 30 s).
 /usr/bin/python3 "$SOURCE_DIR/Benchmarks/large_motion.py" "$BUILD_DIR" "$OUT/large_motion.md" \
   --repeats "${REPEATS:-5}"
+# The whole command on a solver's mesh file (issue 18): gmsh, SU2, Exodus II and CGNS (about 80 s
+# the first time: gmsh makes the mesh once into the cache folder).
+/usr/bin/python3 "$SOURCE_DIR/Benchmarks/solver_formats.py" "$BUILD_DIR" "$OUT/solver_formats.md" \
+  --repeats "${REPEATS:-3}"
