@@ -6,9 +6,9 @@
 
 #include <csignal>
 #include <functional>
+#include <signal.h>
 #include <stdexcept>
 #include <string>
-#include <signal.h>
 #include <unistd.h>
 
 namespace mf = dgmf::meshfile;
@@ -66,8 +66,7 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
     boundary.Faces.Add(mf::Triangle, face, 3);
     mesh.Boundaries.push_back(boundary);
   }
-  const mf::NamedMesh back =
-    mf::MeshFromBytes(Isolated([&]() { return mf::MeshToBytes(mesh); }));
+  const mf::NamedMesh back = mf::MeshFromBytes(Isolated([&]() { return mf::MeshToBytes(mesh); }));
   EXPECT_EQ(back.Dimension, 3);
   EXPECT_EQ(back.Points, mesh.Points);
   EXPECT_EQ(back.NodeIds, mesh.NodeIds);
@@ -87,19 +86,36 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
 
 TEST(LibraryIsolation, EachWayOfFailingIsAFileErrorNamingTheFileOrTheLibrary)
 {
-  EXPECT_EQ(FailureOf([]() { Isolated([]() -> std::string { throw mf::FileError("bad cell 3"); }); }),
+  EXPECT_EQ(
+    FailureOf([]() { Isolated([]() -> std::string { throw mf::FileError("bad cell 3"); }); }),
     "bad cell 3");
   EXPECT_EQ(
     FailureOf([]() { Isolated([]() -> std::string { throw std::runtime_error("no memory"); }); }),
     "mesh.test: no memory");
   // (SIGKILL: a sanitizer's handler would turn a SIGSEGV into an exit.)
   const std::string crashed = FailureOf(
-    []() { Isolated([]() -> std::string { ::kill(::getpid(), SIGKILL); return ""; }); });
+    []()
+    {
+      Isolated(
+        []() -> std::string
+        {
+          ::kill(::getpid(), SIGKILL);
+          return "";
+        });
+    });
   EXPECT_NE(crashed.find("mesh.test: testlib crashed on it (signal 9"), std::string::npos)
     << crashed;
   EXPECT_EQ(FailureOf([]() { Isolated([]() -> std::string { ::_exit(0); }); }),
     "mesh.test: testlib's process ended without an answer");
-  const std::string slow = FailureOf([]()
-    { mf::RunIsolated("mesh.test", "testlib", 0.2, 0, []() { ::sleep(30); return std::string(); }); });
+  const std::string slow = FailureOf(
+    []()
+    {
+      mf::RunIsolated("mesh.test", "testlib", 0.2, 0,
+        []()
+        {
+          ::sleep(30);
+          return std::string();
+        });
+    });
   EXPECT_NE(slow.find("did not finish within"), std::string::npos) << slow;
 }

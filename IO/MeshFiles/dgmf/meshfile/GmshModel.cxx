@@ -167,6 +167,26 @@ private:
 };
 
 /**
+ * The elements of entity (dim, tag) (all entities of `dim` if tag < 0), type by type, as
+ * gmsh::model::mesh::getElements gives them: getElementsByType gives the same elements in the
+ * same order, and took 0.15 s where getElements took 0.24 s (1.29M tetrahedra, gmsh 4.8).
+ */
+void GetElementsByType(int dim, int tag, std::vector<int>& types,
+  std::vector<std::vector<std::size_t>>& elementTags,
+  std::vector<std::vector<std::size_t>>& nodeTags)
+{
+  gmsh::model::mesh::getElementTypes(types, dim, tag);
+  // Fresh vectors for each type: gmsh only resizes them when they are too small (its
+  // preallocation for several tasks), so a second type's would keep the first's length.
+  elementTags.assign(types.size(), {});
+  nodeTags.assign(types.size(), {});
+  for (std::size_t t = 0; t < types.size(); ++t)
+  {
+    gmsh::model::mesh::getElementsByType(types[t], elementTags[t], nodeTags[t], tag);
+  }
+}
+
+/**
  * Appends the elements of entity (dim, tag) (all entities of `dim` if tag < 0) to `cells`. A
  * version 2 file lists an element once per physical group of its entity and gmsh keeps every
  * copy: with `unique`, an element whose type and nodes are already in `seen` is skipped.
@@ -174,31 +194,26 @@ private:
 void AddElements(GmshSession& session, const NodeIndex& index, int dim, int tag, bool unique,
   std::set<std::vector<std::int64_t>>& seen, Cells& cells)
 {
-  // One type at a time (getElementsByType: the same elements in the same order as getElements,
-  // which took 1.6 times as long in gmsh 4.8).
   std::vector<int> types;
-  gmsh::model::mesh::getElementTypes(types, dim, tag);
+  std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+  GetElementsByType(dim, tag, types, elementTags, nodeTags);
   session.ThrowOnGmshError("gmsh cannot give its elements");
-  for (const int type : types)
+  for (std::size_t t = 0; t < types.size(); ++t)
   {
-    // Fresh vectors for each type: gmsh only resizes them when they are too small (its
-    // preallocation for several tasks), so a second type's would keep the first's length.
-    std::vector<std::size_t> elementTags, nodes;
     CellMapping mapping;
-    if (!MapGmshType(type, mapping))
+    if (!MapGmshType(types[t], mapping))
     {
-      session.Fail(GmshTypeName(type) + " is not supported (first-order points, lines, " +
+      session.Fail(GmshTypeName(types[t]) + " is not supported (first-order points, lines, " +
         "triangles, quadrangles, tetrahedra, hexahedra, prisms and pyramids only)");
     }
-    gmsh::model::mesh::getElementsByType(type, elementTags, nodes, tag);
-    session.ThrowOnGmshError("gmsh cannot give its elements");
-    if (nodes.size() != elementTags.size() * static_cast<std::size_t>(mapping.Nodes))
+    const std::vector<std::size_t>& nodes = nodeTags[t];
+    if (nodes.size() != elementTags[t].size() * static_cast<std::size_t>(mapping.Nodes))
     {
-      session.Fail("gmsh gives inconsistent nodes for " + GmshTypeName(type));
+      session.Fail("gmsh gives inconsistent nodes for " + GmshTypeName(types[t]));
     }
     std::int64_t cell[8];
     std::vector<std::int64_t> key;
-    for (std::size_t e = 0; e < elementTags.size(); ++e)
+    for (std::size_t e = 0; e < elementTags[t].size(); ++e)
     {
       for (int k = 0; k < mapping.Nodes; ++k)
       {
@@ -206,7 +221,7 @@ void AddElements(GmshSession& session, const NodeIndex& index, int dim, int tag,
         cell[k] = index.Find(nodeTag);
         if (cell[k] < 0)
         {
-          session.Fail("element " + std::to_string(elementTags[e]) + " uses node tag " +
+          session.Fail("element " + std::to_string(elementTags[t][e]) + " uses node tag " +
             std::to_string(nodeTag) + ", which is not a node of the file");
         }
       }
@@ -391,7 +406,7 @@ int RebuildForVersion2(GmshSession& session, const ModelNodes& nodes, const doub
   for (const auto& entity : entities)
   {
     EntityMesh m{ entity.first, entity.second, {}, {}, {} };
-    gmsh::model::mesh::getElements(m.Types, m.ElementTags, m.NodeTags, m.Dim, m.Tag);
+    GetElementsByType(m.Dim, m.Tag, m.Types, m.ElementTags, m.NodeTags);
     std::vector<int> entityGroups;
     gmsh::model::getPhysicalGroupsForEntity(m.Dim, m.Tag, entityGroups);
     bool any = false;
