@@ -25,6 +25,20 @@ namespace meshfile
 void WriteModifiedCopy(const std::string& source, const std::string& target,
   const std::function<void(const std::string& temporary)>& modify);
 
+/**
+ * The bytes of the file `path`, read at its size in one call. Throws FileError ("<path>: cannot be
+ * opened", "... cannot be read").
+ */
+std::string ReadFileBytes(const std::string& path);
+
+/**
+ * Writes `bytes` to `temporary` (a file beside `target`) and renames it over `target`, so that
+ * `target` is never half written; on failure the temporary file is removed, `target` is unchanged
+ * and FileError is thrown.
+ */
+void WriteFileAtomically(
+  const std::string& target, const std::string& temporary, const std::string& bytes);
+
 /// The temporary file WriteModifiedCopy writes beside `target`.
 std::string TemporaryBeside(const std::string& target);
 

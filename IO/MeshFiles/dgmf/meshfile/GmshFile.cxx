@@ -2,9 +2,11 @@
 // module (GmshModule.h), which runs in a child process (LibraryIsolation.h).
 #include "dgmf/meshfile/GmshFile.h"
 
+#include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/LibraryIsolation.h"
 #include "dgmf/meshfile/MshHeader.h"
+#include "dgmf/meshfile/MshNodes.h"
 
 #include <cmath>
 #include <filesystem>
@@ -46,7 +48,7 @@ NamedMesh ReadGmsh(const std::string& path)
 namespace
 {
 /// `target`'s temporary: beside it, hidden, with the .msh extension gmsh picks its writer by.
-fs::path TemporaryBeside(const fs::path& target)
+fs::path MshTemporaryBeside(const fs::path& target)
 {
   return target.parent_path() / ("." + target.filename().string() + ".dgmf-writing.msh");
 }
@@ -68,8 +70,16 @@ void WriteGmshWithPoints(
     }
   }
   const MshFormat format = CheckMshHeader(source);
+  const fs::path temporary = MshTemporaryBeside(target);
+  // Versions 2.2 and 4.1 without parametric nodes: the source's own bytes with the coordinates
+  // replaced (MshNodes.h), every other byte kept, without gmsh. Any other file through gmsh.
+  std::string patched;
+  if (ReplaceMshNodeCoordinates(ReadFileBytes(source), format, points, count, patched))
+  {
+    WriteFileAtomically(target, temporary.string(), patched);
+    return;
+  }
   const GmshModule gmsh = LoadGmshModule(source);
-  const fs::path temporary = TemporaryBeside(target);
   try
   {
     RunIsolated(source, "gmsh", TimeAllowed(source), 0,

@@ -53,18 +53,22 @@ NamedMesh ReadGmsh(const std::string& path);
  * `target` (".<name>.dgmf-writing.msh") and renamed over it; `target` may be `source`. Coordinates
  * must be finite. Throws FileError; the target is then unchanged.
  *
- * Version 4: every node is moved in gmsh's model (setNode) and the model written with
- * Mesh.SaveAll = 1 (all elements, physical or not: the source's elements, whichever way it was
- * saved); entities keep their tags and groups (their bounding boxes are recomputed), parametric
- * coordinates are dropped (the nodes moved). Version 2: gmsh's writer numbers nodes 1..N in the
- * order it holds them, which after reading is not the file's order, so the model is rebuilt with
- * the nodes in tag order; files whose node tags are not 1..N, whose elements are in several
- * physical groups, in and outside groups, or that have nodes no element uses, cannot be written
- * unchanged by gmsh and are refused. Version 2 files with no physical group are written with
- * SaveAll (names in $PhysicalNames that no element carries are dropped), others with the physical
- * elements only (each element in its one group). ASCII coordinates are written by gmsh with 16
- * significant digits (%.16g): they read back within 1e-15 relative, not bit for bit; binary files
- * keep every bit.
+ * Versions 2.2 and 4.1 without parametric nodes (what gmsh writes by default): the source's own
+ * bytes with the coordinates in its $Nodes section replaced (ReplaceMshNodeCoordinates,
+ * MshNodes.h), every other byte kept, without gmsh's library; ASCII coordinates as the shortest
+ * decimal that reads back as the same double, so both modes keep every bit.
+ *
+ * Any other file (versions 2.0, 2.1 and 4.0, parametric nodes, a binary file of the other byte
+ * order, a $Nodes section that does not parse, or a number of nodes other than `count`) goes
+ * through gmsh. Version 4: every node is moved in gmsh's model (setNode) and the model written
+ * with Mesh.SaveAll = 1 (all elements, physical or not); entities keep their tags and groups
+ * (their bounding boxes are recomputed), parametric coordinates are dropped (the nodes moved).
+ * Version 2: gmsh's writer numbers nodes 1..N in the order it holds them, which after reading is
+ * not the file's order, so the model is rebuilt with the nodes in tag order; files whose node tags
+ * are not 1..N, whose elements are in several physical groups, in and outside groups, or that
+ * have nodes no element uses, cannot be written unchanged by gmsh and are refused. ASCII
+ * coordinates are written by gmsh with 16 significant digits (%.16g): they read back within
+ * 1e-15 relative.
  */
 void WriteGmshWithPoints(
   const std::string& source, const std::string& target, const double* points, std::size_t count);

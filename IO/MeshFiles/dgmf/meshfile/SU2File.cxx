@@ -1,5 +1,6 @@
 #include "dgmf/meshfile/SU2File.h"
 
+#include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/SU2Text.h"
 
 #include <algorithm>
@@ -414,31 +415,7 @@ std::string ReadWholeFile(const std::string& path)
   {
     throw FileError(path + ": is a directory, not an SU2 file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    throw FileError(path + ": cannot be opened");
-  }
-  // Read at its size in one call (a stream into an ostringstream took 0.12 s for 62 MB in the
-  // page cache: doubling and a final copy), then whatever the file grew by meanwhile.
-  const std::uintmax_t size = fs::file_size(path, error);
-  std::string bytes(error ? 0 : static_cast<std::size_t>(size), '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
-  if (!in.bad() && (error || bytes.size() == size))
-  {
-    in.clear();
-    char chunk[1 << 16];
-    while (in.read(chunk, sizeof(chunk)) || in.gcount() > 0)
-    {
-      bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
-    }
-  }
-  if (in.bad())
-  {
-    throw FileError(path + ": cannot be read");
-  }
-  return bytes;
+  return ReadFileBytes(path);
 }
 
 /// Appends `value` with 17 significant digits (reads back as the same double; no locale).
@@ -450,31 +427,6 @@ void AppendCoordinate(std::string& out, double value)
   out.append(buffer, written.ptr);
 }
 
-/// Writes `bytes` to a temporary file beside `target` and renames it over `target`.
-void WriteAtomically(const std::string& target, const std::string& bytes)
-{
-  const fs::path path(target);
-  const fs::path temporary =
-    path.parent_path() / ("." + path.filename().string() + ".dgmf-writing");
-  std::error_code error;
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out)
-    {
-      fs::remove(temporary, error);
-      throw FileError(target + ": cannot write " + temporary.string() + " (disk full?)");
-    }
-  }
-  fs::rename(temporary, path, error);
-  if (error)
-  {
-    const std::string message = error.message();
-    fs::remove(temporary, error);
-    throw FileError(target + ": cannot be replaced: " + message);
-  }
-}
 } // namespace
 
 NamedMesh ReadSU2(const std::string& path)
@@ -523,7 +475,9 @@ void WriteSU2WithPoints(
     }
   }
   out.append(text, copied, std::string::npos);
-  WriteAtomically(target, out);
+  const fs::path path(target);
+  WriteFileAtomically(target,
+    (path.parent_path() / ("." + path.filename().string() + ".dgmf-writing")).string(), out);
 }
 
 } // namespace meshfile

@@ -1,0 +1,398 @@
+// A .msh file's node coordinates replaced in its own bytes (MshNodes.h). The $Nodes layouts:
+// gmsh's reference manual, "MSH file format" (version 4.1) and "Legacy formats" (version 2.2).
+#include "dgmf/meshfile/MshNodes.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+namespace dgmf
+{
+namespace meshfile
+{
+namespace
+{
+constexpr bool IsBlank(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
+std::string_view Trim(std::string_view text)
+{
+  while (!text.empty() && IsBlank(text.front()))
+  {
+    text.remove_prefix(1);
+  }
+  while (!text.empty() && IsBlank(text.back()))
+  {
+    text.remove_suffix(1);
+  }
+  return text;
+}
+
+template <typename T>
+bool ToInteger(std::string_view token, T& value)
+{
+  const char* end = token.data() + token.size();
+  const std::from_chars_result read = std::from_chars(token.data(), end, value);
+  return !token.empty() && read.ec == std::errc() && read.ptr == end;
+}
+
+/// A position in the file, read as text (tokens, lines) or as binary values; nothing past its end.
+struct Cursor
+{
+  std::string_view File;
+  std::size_t At = 0;
+
+  /// The next whitespace-separated token; empty at the end of the file.
+  std::string_view Token()
+  {
+    while (this->At < this->File.size() && IsBlank(this->File[this->At]))
+    {
+      ++this->At;
+    }
+    const std::size_t begin = this->At;
+    while (this->At < this->File.size() && !IsBlank(this->File[this->At]))
+    {
+      ++this->At;
+    }
+    return this->File.substr(begin, this->At - begin);
+  }
+
+  /// The rest of the line (trimmed); the cursor moves past its '\n'.
+  std::string_view Line()
+  {
+    const std::size_t end = this->File.find('\n', this->At);
+    const std::size_t stop = end == std::string_view::npos ? this->File.size() : end;
+    const std::string_view line = this->File.substr(this->At, stop - this->At);
+    this->At = end == std::string_view::npos ? this->File.size() : end + 1;
+    return Trim(line);
+  }
+
+  template <typename T>
+  bool Binary(T& value)
+  {
+    if (this->File.size() - this->At < sizeof(T))
+    {
+      return false;
+    }
+    std::memcpy(&value, this->File.data() + this->At, sizeof(T));
+    this->At += sizeof(T);
+    return true;
+  }
+
+  bool Skip(std::uint64_t bytes)
+  {
+    if (this->File.size() - this->At < bytes)
+    {
+      return false;
+    }
+    this->At += static_cast<std::size_t>(bytes);
+    return true;
+  }
+
+  /// Where `token` (a view into File) starts.
+  std::size_t Offset(std::string_view token) const
+  {
+    return static_cast<std::size_t>(token.data() - this->File.data());
+  }
+};
+
+/**
+ * The position just after the "$Nodes" line, going from section to section from the file's
+ * start: each other section is skipped to its "$End<name>" line, so a line "$Nodes" inside
+ * another section (a comment, binary data) is not taken for it. npos when there is none, or when
+ * a line between sections does not start a section.
+ */
+std::size_t NodesSectionStart(std::string_view file)
+{
+  Cursor cursor{ file };
+  while (cursor.At < file.size())
+  {
+    const std::string_view line = cursor.Line();
+    if (line.empty())
+    {
+      continue;
+    }
+    if (line.front() != '$')
+    {
+      return std::string_view::npos;
+    }
+    const std::string_view name = line.substr(1);
+    if (name == "Nodes")
+    {
+      return cursor.At;
+    }
+    const std::string end = "\n$End" + std::string(name);
+    const std::size_t found = file.find(end, cursor.At == 0 ? 0 : cursor.At - 1);
+    if (found == std::string_view::npos)
+    {
+      return std::string_view::npos;
+    }
+    cursor.At = found + 1;
+    cursor.Line(); // the $End line itself
+  }
+  return std::string_view::npos;
+}
+
+/// Where each node's coordinates start in the file (the x token, or the x double), by tag.
+struct NodeRecords
+{
+  std::vector<std::uint64_t> Tags;
+  std::vector<std::size_t> At;
+
+  void Reserve(std::uint64_t count, std::size_t fileSize)
+  {
+    // A count the file cannot hold (each node takes 8 bytes at least) reserves no more than it can.
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(count, fileSize / 8));
+    this->Tags.reserve(n);
+    this->At.reserve(n);
+  }
+};
+
+/// The "$EndNodes" line after the section's data.
+bool EndsTheSection(Cursor& cursor)
+{
+  return cursor.Token() == "$EndNodes";
+}
+
+/// Three coordinate tokens at the cursor; records where the first starts.
+bool AsciiCoordinates(Cursor& cursor, std::uint64_t tag, NodeRecords& records)
+{
+  const std::string_view x = cursor.Token();
+  if (x.empty() || cursor.Token().empty() || cursor.Token().empty())
+  {
+    return false;
+  }
+  records.Tags.push_back(tag);
+  records.At.push_back(cursor.Offset(x));
+  return true;
+}
+
+bool ParseAscii22(Cursor& cursor, NodeRecords& records)
+{
+  std::uint64_t count = 0;
+  if (!ToInteger(cursor.Token(), count))
+  {
+    return false;
+  }
+  records.Reserve(count, cursor.File.size());
+  for (std::uint64_t k = 0; k < count; ++k)
+  {
+    std::uint64_t tag = 0;
+    if (!ToInteger(cursor.Token(), tag) || !AsciiCoordinates(cursor, tag, records))
+    {
+      return false;
+    }
+  }
+  return EndsTheSection(cursor);
+}
+
+bool ParseAscii41(Cursor& cursor, NodeRecords& records)
+{
+  std::uint64_t blocks = 0, count = 0, minimum = 0, maximum = 0;
+  if (!ToInteger(cursor.Token(), blocks) || !ToInteger(cursor.Token(), count) ||
+    !ToInteger(cursor.Token(), minimum) || !ToInteger(cursor.Token(), maximum))
+  {
+    return false;
+  }
+  records.Reserve(count, cursor.File.size());
+  for (std::uint64_t b = 0; b < blocks; ++b)
+  {
+    long long dimension = 0, entity = 0;
+    int parametric = 0;
+    std::uint64_t inBlock = 0;
+    if (!ToInteger(cursor.Token(), dimension) || !ToInteger(cursor.Token(), entity) ||
+      !ToInteger(cursor.Token(), parametric) || parametric != 0 ||
+      !ToInteger(cursor.Token(), inBlock) || inBlock > count - records.Tags.size() ||
+      inBlock > (cursor.File.size() - cursor.At) / 8) // a tag and three numbers: 8 bytes at least
+    {
+      return false;
+    }
+    std::vector<std::uint64_t> tags(static_cast<std::size_t>(inBlock));
+    for (std::uint64_t& tag : tags)
+    {
+      if (!ToInteger(cursor.Token(), tag))
+      {
+        return false;
+      }
+    }
+    for (const std::uint64_t tag : tags)
+    {
+      if (!AsciiCoordinates(cursor, tag, records))
+      {
+        return false;
+      }
+    }
+  }
+  return records.Tags.size() == count && EndsTheSection(cursor);
+}
+
+bool ParseBinary22(Cursor& cursor, NodeRecords& records)
+{
+  std::uint64_t count = 0;
+  if (!ToInteger(cursor.Line(), count))
+  {
+    return false;
+  }
+  constexpr std::uint64_t recordBytes = sizeof(std::int32_t) + 3 * sizeof(double);
+  if (count > (cursor.File.size() - cursor.At) / recordBytes)
+  {
+    return false;
+  }
+  records.Reserve(count, cursor.File.size());
+  for (std::uint64_t k = 0; k < count; ++k)
+  {
+    std::int32_t tag = 0;
+    cursor.Binary(tag);
+    if (tag <= 0)
+    {
+      return false;
+    }
+    records.Tags.push_back(static_cast<std::uint64_t>(tag));
+    records.At.push_back(cursor.At);
+    cursor.Skip(3 * sizeof(double));
+  }
+  return EndsTheSection(cursor);
+}
+
+bool ParseBinary41(Cursor& cursor, NodeRecords& records)
+{
+  std::uint64_t blocks = 0, count = 0, minimum = 0, maximum = 0;
+  if (!cursor.Binary(blocks) || !cursor.Binary(count) || !cursor.Binary(minimum) ||
+    !cursor.Binary(maximum))
+  {
+    return false;
+  }
+  records.Reserve(count, cursor.File.size());
+  for (std::uint64_t b = 0; b < blocks; ++b)
+  {
+    std::int32_t dimension = 0, entity = 0, parametric = 0;
+    std::uint64_t inBlock = 0;
+    if (!cursor.Binary(dimension) || !cursor.Binary(entity) || !cursor.Binary(parametric) ||
+      parametric != 0 || !cursor.Binary(inBlock) || inBlock > count - records.Tags.size() ||
+      inBlock > (cursor.File.size() - cursor.At) / (4 * sizeof(double)))
+    {
+      return false;
+    }
+    const std::size_t tagsAt = cursor.At;
+    const std::size_t coordinatesAt = tagsAt + static_cast<std::size_t>(inBlock) * 8;
+    if (!cursor.Skip(inBlock * 8) || !cursor.Skip(inBlock * 3 * sizeof(double)))
+    {
+      return false;
+    }
+    for (std::size_t k = 0; k < inBlock; ++k)
+    {
+      std::uint64_t tag = 0;
+      std::memcpy(&tag, cursor.File.data() + tagsAt + 8 * k, sizeof(tag));
+      records.Tags.push_back(tag);
+      records.At.push_back(coordinatesAt + k * 3 * sizeof(double));
+    }
+  }
+  return records.Tags.size() == count && EndsTheSection(cursor);
+}
+
+/// Whether a binary file's "1" after its format line is in this machine's byte order.
+bool NativeByteOrder(std::string_view file)
+{
+  Cursor cursor{ file };
+  cursor.Line(); // $MeshFormat
+  cursor.Line(); // version, type, size
+  std::int32_t one = 0;
+  return cursor.Binary(one) && one == 1;
+}
+
+/// For each record (file order), the rank of its tag among all tags; false if a tag repeats.
+bool RanksOfTags(const std::vector<std::uint64_t>& tags, std::vector<std::size_t>& rank)
+{
+  rank.resize(tags.size());
+  if (std::is_sorted(tags.begin(), tags.end()))
+  {
+    std::iota(rank.begin(), rank.end(), std::size_t(0));
+    return std::adjacent_find(tags.begin(), tags.end()) == tags.end();
+  }
+  std::vector<std::size_t> order(tags.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    if (k > 0 && tags[order[k]] == tags[order[k - 1]])
+    {
+      return false;
+    }
+    rank[order[k]] = k;
+  }
+  return true;
+}
+
+void AppendShortest(std::string& out, double value)
+{
+  char buffer[32];
+  const std::to_chars_result written = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  out.append(buffer, written.ptr);
+}
+} // namespace
+
+bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format,
+  const double* points, std::size_t count, std::string& patched)
+{
+  const bool v22 = std::fabs(format.Version - 2.2) < 1e-9;
+  const bool v41 = std::fabs(format.Version - 4.1) < 1e-9;
+  if ((!v22 && !v41) || (format.Binary && !NativeByteOrder(file)))
+  {
+    return false;
+  }
+  const std::size_t start = NodesSectionStart(file);
+  if (start == std::string_view::npos)
+  {
+    return false;
+  }
+  Cursor cursor{ file, start };
+  NodeRecords records;
+  const bool parsed = format.Binary ? (v22 ? ParseBinary22(cursor, records)
+                                           : ParseBinary41(cursor, records))
+                                    : (v22 ? ParseAscii22(cursor, records)
+                                           : ParseAscii41(cursor, records));
+  std::vector<std::size_t> rank;
+  if (!parsed || records.Tags.size() != count || !RanksOfTags(records.Tags, rank))
+  {
+    return false;
+  }
+  if (format.Binary)
+  {
+    patched.assign(file.data(), file.size());
+    for (std::size_t r = 0; r < rank.size(); ++r)
+    {
+      std::memcpy(patched.data() + records.At[r], points + 3 * rank[r], 3 * sizeof(double));
+    }
+    return true;
+  }
+  // ASCII: the text between the coordinates as it is, each coordinate written anew.
+  patched.clear();
+  patched.reserve(file.size() + 16 * count);
+  std::size_t copied = 0;
+  for (std::size_t r = 0; r < rank.size(); ++r)
+  {
+    if (records.At[r] < copied)
+    {
+      return false; // (the layouts above give them in file order)
+    }
+    Cursor at{ file, records.At[r] };
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::string_view token = at.Token();
+      patched.append(file.data() + copied, at.Offset(token) - copied);
+      AppendShortest(patched, points[3 * rank[r] + static_cast<std::size_t>(c)]);
+      copied = at.Offset(token) + token.size();
+    }
+  }
+  patched.append(file.data() + copied, file.size() - copied);
+  return true;
+}
+
+} // namespace meshfile
+} // namespace dgmf
