@@ -3,6 +3,7 @@
 #include "dgmf/meshfile/GmshFile.h"
 
 #include "gmsh/GmshTestMeshes.h"
+#include "gmsh/MshTestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -16,16 +17,14 @@
 namespace mf = dgmf::meshfile;
 namespace mt = dgmf::meshfile::test;
 namespace fs = std::filesystem;
+using mt::Bytes;
+using mt::WriteBytes;
 
 namespace
 {
-/// A fresh directory for one test.
 fs::path TestDirectory(const std::string& name)
 {
-  const fs::path directory = fs::temp_directory_path() / ("dgmf-gmsh-test-" + name);
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
+  return mt::FreshDirectory("dgmf-gmsh-test-" + name);
 }
 
 const mt::MshFlavour kFlavours[] = { { 2.2, false, false }, { 2.2, true, false },
@@ -47,19 +46,6 @@ std::string ReadError(const std::string& path)
     return e.what();
   }
   return "";
-}
-
-std::string Bytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
-void WriteBytes(const std::string& path, const std::string& bytes)
-{
-  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 void ExpectSameCells(const mf::Cells& a, const mf::Cells& b)

@@ -3,6 +3,7 @@
 #include "dgmf/meshfile/GmshFile.h"
 
 #include "gmsh/GmshTestMeshes.h"
+#include "gmsh/MshTestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -16,28 +17,14 @@
 namespace mf = dgmf::meshfile;
 namespace mt = dgmf::meshfile::test;
 namespace fs = std::filesystem;
+using mt::Bytes;
+using mt::WriteBytes;
 
 namespace
 {
 fs::path TestDirectory(const std::string& name)
 {
-  const fs::path directory = fs::temp_directory_path() / ("dgmf-gmsh-hostile-" + name);
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
-
-std::string Bytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
-void WriteBytes(const std::string& path, const std::string& bytes)
-{
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return mt::FreshDirectory("dgmf-gmsh-hostile-" + name);
 }
 
 /// "" when ReadGmsh gives a mesh (ValidateNamedMesh passed), the message of its FileError

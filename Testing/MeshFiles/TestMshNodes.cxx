@@ -4,6 +4,7 @@
 #include "dgmf/meshfile/MshNodes.h"
 
 #include "gmsh/GmshTestMeshes.h"
+#include "gmsh/MshTestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -16,28 +17,14 @@
 namespace mf = dgmf::meshfile;
 namespace mt = dgmf::meshfile::test;
 namespace fs = std::filesystem;
+using mt::Bytes;
+using mt::WriteBytes;
 
 namespace
 {
 fs::path TestDirectory(const std::string& name)
 {
-  const fs::path directory = fs::temp_directory_path() / ("dgmf-msh-nodes-" + name);
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
-
-std::string Bytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
-void WriteBytes(const std::string& path, const std::string& bytes)
-{
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return mt::FreshDirectory("dgmf-msh-nodes-" + name);
 }
 
 /// The file without its $Nodes section (what must stay byte for byte).
@@ -50,8 +37,8 @@ std::string OutsideNodes(const std::string& bytes)
     : bytes.substr(0, begin) + bytes.substr(end);
 }
 
-bool Replace(const std::string& text, double version, bool binary, const std::vector<double>& points,
-  std::string& patched)
+bool Replace(const std::string& text, double version, bool binary,
+  const std::vector<double>& points, std::string& patched)
 {
   mf::MshFormat format;
   format.Version = version;

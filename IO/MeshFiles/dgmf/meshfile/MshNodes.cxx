@@ -317,7 +317,8 @@ bool RanksOfTags(const std::vector<std::uint64_t>& tags, std::vector<std::size_t
   }
   std::vector<std::size_t> order(tags.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  std::sort(
+    order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
   for (std::size_t k = 0; k < order.size(); ++k)
   {
     if (k > 0 && tags[order[k]] == tags[order[k - 1]])
@@ -337,8 +338,8 @@ void AppendShortest(std::string& out, double value)
 }
 } // namespace
 
-bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format,
-  const double* points, std::size_t count, std::string& patched)
+bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format, const double* points,
+  std::size_t count, std::string& patched)
 {
   const bool v22 = std::fabs(format.Version - 2.2) < 1e-9;
   const bool v41 = std::fabs(format.Version - 4.1) < 1e-9;
@@ -353,10 +354,9 @@ bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format,
   }
   Cursor cursor{ file, start };
   NodeRecords records;
-  const bool parsed = format.Binary ? (v22 ? ParseBinary22(cursor, records)
-                                           : ParseBinary41(cursor, records))
-                                    : (v22 ? ParseAscii22(cursor, records)
-                                           : ParseAscii41(cursor, records));
+  const bool parsed = format.Binary
+    ? (v22 ? ParseBinary22(cursor, records) : ParseBinary41(cursor, records))
+    : (v22 ? ParseAscii22(cursor, records) : ParseAscii41(cursor, records));
   std::vector<std::size_t> rank;
   if (!parsed || records.Tags.size() != count || !RanksOfTags(records.Tags, rank))
   {

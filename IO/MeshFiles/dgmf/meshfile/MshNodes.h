@@ -29,8 +29,8 @@ namespace meshfile
  * tag, or a number of nodes other than `count`. ASCII coordinates are written as the shortest
  * decimal that reads back as the same double. Never reads outside `file`.
  */
-bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format,
-  const double* points, std::size_t count, std::string& patched);
+bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format, const double* points,
+  std::size_t count, std::string& patched);
 
 } // namespace meshfile
 } // namespace dgmf
