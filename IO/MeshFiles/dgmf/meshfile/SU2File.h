@@ -43,6 +43,9 @@ NamedMesh ReadSU2(const std::string& path);
  * Each coordinate token of a point line is replaced (C locale, std::to_chars); the spaces between
  * them, a point's index and the line end stay. `source` is read and checked as ReadSU2 does
  * first; a wrong `count` or a non-finite coordinate (of the dimension written) writes nothing.
+ * When its bytes are those ReadSU2 parsed last in this process (the same size and hash: the
+ * command and ParaView write back the file they read), the point lines found then are used
+ * instead of a second parse.
  * The temporary file is ".<target name>.dgmf-writing" in the target's folder.
  */
 void WriteSU2WithPoints(
