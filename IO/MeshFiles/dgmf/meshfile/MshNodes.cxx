@@ -1,6 +1,7 @@
 // A .msh file's node coordinates replaced in its own bytes (MshNodes.h). The $Nodes layouts:
 // gmsh's reference manual, "MSH file format" (version 4.1) and "Legacy formats" (version 2.2).
 #include "dgmf/meshfile/MshNodes.h"
+#include "dgmf/meshfile/MshText.h"
 
 #include <algorithm>
 #include <charconv>
@@ -16,91 +17,7 @@ namespace meshfile
 {
 namespace
 {
-constexpr bool IsBlank(char c)
-{
-  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
-}
-
-std::string_view Trim(std::string_view text)
-{
-  while (!text.empty() && IsBlank(text.front()))
-  {
-    text.remove_prefix(1);
-  }
-  while (!text.empty() && IsBlank(text.back()))
-  {
-    text.remove_suffix(1);
-  }
-  return text;
-}
-
-template <typename T>
-bool ToInteger(std::string_view token, T& value)
-{
-  const char* end = token.data() + token.size();
-  const std::from_chars_result read = std::from_chars(token.data(), end, value);
-  return !token.empty() && read.ec == std::errc() && read.ptr == end;
-}
-
-/// A position in the file, read as text (tokens, lines) or as binary values; nothing past its end.
-struct Cursor
-{
-  std::string_view File;
-  std::size_t At = 0;
-
-  /// The next whitespace-separated token; empty at the end of the file.
-  std::string_view Token()
-  {
-    while (this->At < this->File.size() && IsBlank(this->File[this->At]))
-    {
-      ++this->At;
-    }
-    const std::size_t begin = this->At;
-    while (this->At < this->File.size() && !IsBlank(this->File[this->At]))
-    {
-      ++this->At;
-    }
-    return this->File.substr(begin, this->At - begin);
-  }
-
-  /// The rest of the line (trimmed); the cursor moves past its '\n'.
-  std::string_view Line()
-  {
-    const std::size_t end = this->File.find('\n', this->At);
-    const std::size_t stop = end == std::string_view::npos ? this->File.size() : end;
-    const std::string_view line = this->File.substr(this->At, stop - this->At);
-    this->At = end == std::string_view::npos ? this->File.size() : end + 1;
-    return Trim(line);
-  }
-
-  template <typename T>
-  bool Binary(T& value)
-  {
-    if (this->File.size() - this->At < sizeof(T))
-    {
-      return false;
-    }
-    std::memcpy(&value, this->File.data() + this->At, sizeof(T));
-    this->At += sizeof(T);
-    return true;
-  }
-
-  bool Skip(std::uint64_t bytes)
-  {
-    if (this->File.size() - this->At < bytes)
-    {
-      return false;
-    }
-    this->At += static_cast<std::size_t>(bytes);
-    return true;
-  }
-
-  /// Where `token` (a view into File) starts.
-  std::size_t Offset(std::string_view token) const
-  {
-    return static_cast<std::size_t>(token.data() - this->File.data());
-  }
-};
+using namespace msh;
 
 /**
  * The position just after the "$Nodes" line, going from section to section from the file's
@@ -111,30 +28,16 @@ struct Cursor
 std::size_t NodesSectionStart(std::string_view file)
 {
   Cursor cursor{ file };
-  while (cursor.At < file.size())
+  for (std::string_view name = NextSection(cursor); !name.empty(); name = NextSection(cursor))
   {
-    const std::string_view line = cursor.Line();
-    if (line.empty())
-    {
-      continue;
-    }
-    if (line.front() != '$')
-    {
-      return std::string_view::npos;
-    }
-    const std::string_view name = line.substr(1);
     if (name == "Nodes")
     {
       return cursor.At;
     }
-    const std::string end = "\n$End" + std::string(name);
-    const std::size_t found = file.find(end, cursor.At == 0 ? 0 : cursor.At - 1);
-    if (found == std::string_view::npos)
+    if (!SkipSection(cursor, name))
     {
-      return std::string_view::npos;
+      break;
     }
-    cursor.At = found + 1;
-    cursor.Line(); // the $End line itself
   }
   return std::string_view::npos;
 }

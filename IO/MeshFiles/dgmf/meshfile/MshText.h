@@ -1,0 +1,145 @@
+/**
+ * @file MshText.h
+ * @brief Private to the .msh code that reads files without gmsh (MshNodes.cxx, MshReader41.cxx):
+ * a cursor over a file's bytes that reads tokens, lines and binary values, never past the end.
+ */
+#ifndef dgmf_meshfile_MshText_h
+#define dgmf_meshfile_MshText_h
+
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace dgmf
+{
+namespace meshfile
+{
+namespace msh
+{
+constexpr bool IsBlank(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
+inline std::string_view Trim(std::string_view text)
+{
+  while (!text.empty() && IsBlank(text.front()))
+  {
+    text.remove_prefix(1);
+  }
+  while (!text.empty() && IsBlank(text.back()))
+  {
+    text.remove_suffix(1);
+  }
+  return text;
+}
+
+template <typename T>
+inline bool ToInteger(std::string_view token, T& value)
+{
+  const char* end = token.data() + token.size();
+  const std::from_chars_result read = std::from_chars(token.data(), end, value);
+  return !token.empty() && read.ec == std::errc() && read.ptr == end;
+}
+
+/// A position in the file, read as text (tokens, lines) or as binary values; nothing past its end.
+struct Cursor
+{
+  std::string_view File;
+  std::size_t At = 0;
+
+  /// The next whitespace-separated token; empty at the end of the file.
+  std::string_view Token()
+  {
+    while (this->At < this->File.size() && IsBlank(this->File[this->At]))
+    {
+      ++this->At;
+    }
+    const std::size_t begin = this->At;
+    while (this->At < this->File.size() && !IsBlank(this->File[this->At]))
+    {
+      ++this->At;
+    }
+    return this->File.substr(begin, this->At - begin);
+  }
+
+  /// The rest of the line (trimmed); the cursor moves past its '\n'.
+  std::string_view Line()
+  {
+    const std::size_t end = this->File.find('\n', this->At);
+    const std::size_t stop = end == std::string_view::npos ? this->File.size() : end;
+    const std::string_view line = this->File.substr(this->At, stop - this->At);
+    this->At = end == std::string_view::npos ? this->File.size() : end + 1;
+    return Trim(line);
+  }
+
+  template <typename T>
+  bool Binary(T& value)
+  {
+    if (this->File.size() - this->At < sizeof(T))
+    {
+      return false;
+    }
+    std::memcpy(&value, this->File.data() + this->At, sizeof(T));
+    this->At += sizeof(T);
+    return true;
+  }
+
+  bool Skip(std::uint64_t bytes)
+  {
+    if (this->File.size() - this->At < bytes)
+    {
+      return false;
+    }
+    this->At += static_cast<std::size_t>(bytes);
+    return true;
+  }
+
+  /// Where `token` (a view into File) starts.
+  std::size_t Offset(std::string_view token) const
+  {
+    return static_cast<std::size_t>(token.data() - this->File.data());
+  }
+};
+
+/**
+ * The name of the section that starts at the cursor (the line "$Name", blank lines before it
+ * skipped); the cursor is then after that line. Empty at the end of the file, or when the next
+ * line does not start a section.
+ */
+inline std::string_view NextSection(Cursor& cursor)
+{
+  while (cursor.At < cursor.File.size())
+  {
+    const std::string_view line = cursor.Line();
+    if (!line.empty())
+    {
+      return line.front() == '$' && line.size() > 1 ? line.substr(1) : std::string_view();
+    }
+  }
+  return std::string_view();
+}
+
+/// Moves the cursor past the line "$End<name>" that ends section `name`; false if there is none.
+inline bool SkipSection(Cursor& cursor, std::string_view name)
+{
+  const std::string end = "\n$End" + std::string(name);
+  const std::size_t found = cursor.File.find(end, cursor.At == 0 ? 0 : cursor.At - 1);
+  if (found == std::string_view::npos)
+  {
+    return false;
+  }
+  cursor.At = found + 1;
+  cursor.Line();
+  return true;
+}
+
+} // namespace msh
+} // namespace meshfile
+} // namespace dgmf
+
+#endif
