@@ -7,6 +7,7 @@
 #include "dgmf/meshfile/LibraryIsolation.h"
 #include "dgmf/meshfile/MshHeader.h"
 #include "dgmf/meshfile/MshNodes.h"
+#include "dgmf/meshfile/MshReader41.h"
 
 #include <cmath>
 #include <filesystem>
@@ -18,6 +19,22 @@ namespace meshfile
 namespace fs = std::filesystem;
 
 NamedMesh ReadGmsh(const std::string& path)
+{
+  const MshFormat format = CheckMshHeader(path);
+  // Version 4.1 without gmsh (MshReader41.h), the same mesh; anything it leaves, through gmsh.
+  if (std::fabs(format.Version - 4.1) < 1e-9)
+  {
+    NamedMesh mesh;
+    if (ReadMsh41(ReadFileBytes(path), format.Binary, mesh))
+    {
+      ValidateNamedMesh(mesh, path);
+      return mesh;
+    }
+  }
+  return ReadGmshWithGmsh(path);
+}
+
+NamedMesh ReadGmshWithGmsh(const std::string& path)
 {
   const MshFormat format = CheckMshHeader(path);
   // Loaded here, before the fork: the child only calls it.

@@ -43,8 +43,17 @@ namespace meshfile
  * of its entity and gmsh keeps each copy: those are read once. Prisms are read with each triangle
  * reversed (gmsh's corner order turns the other way round from VTK's documented wedge); the other
  * types have VTK's order. Throws FileError naming the file.
+ *
+ * A version 4.1 file (ASCII or binary, what gmsh writes by default) is read without gmsh's
+ * library into the same mesh (ReadMsh41, MshReader41.h); any file it leaves (other versions,
+ * partitioned or parametric files, other element types, anything it does not parse, and every
+ * file with an error) is read by gmsh (ReadGmshWithGmsh), which also words the errors.
  */
 NamedMesh ReadGmsh(const std::string& path);
+
+/// ReadGmsh through gmsh's library alone, whatever the version (the reference ReadMsh41 is
+/// checked against).
+NamedMesh ReadGmshWithGmsh(const std::string& path);
 
 /**
  * Writes `source` again to `target` with the node coordinates `points` (3 per node, in ReadGmsh's

@@ -5,6 +5,7 @@
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/GmshSession.h"
 #include "dgmf/meshfile/LibraryIsolation.h"
+#include "dgmf/meshfile/MshElementTypes.h"
 
 #include <gmsh.h>
 
@@ -25,52 +26,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/// A first-order gmsh element type as a VTK cell: VTK's type and the gmsh node of each VTK node.
-struct CellMapping
-{
-  std::uint8_t Type = 0;
-  int Nodes = 0;
-  int Order[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
-};
-
-/**
- * gmsh types 15 (point), 1, 2, 3, 4, 5, 6, 7. gmsh and VTK number the corners alike except for the
- * prism: gmsh's triangle (0, 1, 2) turns counter-clockwise seen from (3, 4, 5), VTK documents its
- * normal pointing away from (3, 4, 5), so each triangle is read in the opposite order.
- */
-bool MapGmshType(int gmshType, CellMapping& mapping)
-{
-  switch (gmshType)
-  {
-    case 15:
-      mapping = { Vertex, 1, { 0 } };
-      return true;
-    case 1:
-      mapping = { Line, 2, { 0, 1 } };
-      return true;
-    case 2:
-      mapping = { Triangle, 3, { 0, 1, 2 } };
-      return true;
-    case 3:
-      mapping = { Quad, 4, { 0, 1, 2, 3 } };
-      return true;
-    case 4:
-      mapping = { Tetra, 4, { 0, 1, 2, 3 } };
-      return true;
-    case 5:
-      mapping = { Hexahedron, 8, { 0, 1, 2, 3, 4, 5, 6, 7 } };
-      return true;
-    case 6:
-      mapping = { Wedge, 6, { 0, 2, 1, 3, 5, 4 } };
-      return true;
-    case 7:
-      mapping = { Pyramid, 5, { 0, 1, 2, 3, 4 } };
-      return true;
-    default:
-      return false;
-  }
-}
-
 std::string GmshTypeName(int gmshType)
 {
   std::string name;

@@ -109,16 +109,22 @@ struct Cursor
 /**
  * The name of the section that starts at the cursor (the line "$Name", blank lines before it
  * skipped); the cursor is then after that line. Empty at the end of the file, or when the next
- * line does not start a section.
+ * line does not start a section (the cursor then at that line).
  */
 inline std::string_view NextSection(Cursor& cursor)
 {
   while (cursor.At < cursor.File.size())
   {
+    const std::size_t start = cursor.At;
     const std::string_view line = cursor.Line();
     if (!line.empty())
     {
-      return line.front() == '$' && line.size() > 1 ? line.substr(1) : std::string_view();
+      if (line.front() == '$' && line.size() > 1)
+      {
+        return line.substr(1);
+      }
+      cursor.At = start; // not a section: the cursor stays at that line
+      break;
     }
   }
   return std::string_view();
