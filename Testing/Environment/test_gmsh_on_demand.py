@@ -8,9 +8,11 @@ Checks:
 - no FILE (dgmf-deform, the DGMF::IO library, the ParaView plugin) depends on libgmsh (ldd);
 - dgmf-deform on a .vtu never loads libgmsh (the dynamic loader's log, LD_DEBUG=files), and
   writes its output;
-- dgmf-deform on a gmsh .msh file (made here by gmsh's Python API: a box around a sphere, groups
-  "wing" and "farfield") loads it, deforms the mesh by name and writes the .msh back with every
-  node;
+- dgmf-deform on a gmsh .msh file of version 2.2 (made here by gmsh's Python API: a box around a
+  sphere, groups "wing" and "farfield"), which is read through gmsh, loads it, deforms the mesh by
+  name and writes the .msh back with every node;
+- the same mesh as a version 4.1 file is read and written without gmsh (MshReader41.h,
+  MshNodes.h): libgmsh not loaded, even with DGMF_GMSH_MODULE naming a missing module;
 - DGMF_GMSH_MODULE naming a missing module, or (--not-a-module) a shared library that is not this
   build's module: the .msh run fails with exit code 1, a message that says gmsh's library cannot
   be loaded (and why), and no output file;
@@ -28,8 +30,9 @@ import sys
 import gmsh
 
 
-def make_msh(path):
-    """A unit box around a sphere of radius 0.2, tetrahedra; returns its node count."""
+def make_msh(path, version):
+    """A unit box around a sphere of radius 0.2, tetrahedra, as a .msh of `version`; returns its
+    node count."""
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.model.add("box")
@@ -46,7 +49,7 @@ def make_msh(path):
         gmsh.model.setPhysicalName(dim, tag, name)
     gmsh.option.setNumber("Mesh.MeshSizeMax", 0.15)
     gmsh.model.mesh.generate(3)
-    gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
+    gmsh.option.setNumber("Mesh.MshFileVersion", version)
     gmsh.write(path)
     count = len(gmsh.model.mesh.getNodes()[0])
     gmsh.finalize()
@@ -107,8 +110,24 @@ def main():
         fail("dgmf-deform on a .vtu loaded %s" % loaded_gmsh(result.stderr))
     print("dgmf-deform on a .vtu: written, libgmsh not loaded")
 
+    msh41 = os.path.join(args.work, "box41.msh")
+    nodes = make_msh(msh41, 4.1)
+    msh41_out = os.path.join(args.work, "box41_out.msh")
+    missing = os.path.join(args.work, "no_such_dir", "libDGMFGmshFile.so")
+    result = run([args.deform, msh41, msh41_out, "--moving", "wing", "--rotate", "10", "20", "30",
+                  "--center", "0.5", "0.5", "0.5"], {"LD_DEBUG": "files", "DGMF_GMSH_MODULE": missing})
+    if result.returncode != 0 or not os.path.exists(msh41_out):
+        fail("dgmf-deform on the 4.1 .msh: exit %d\n%s" % (result.returncode,
+                                                          result.stderr[-3000:]))
+    if loaded_gmsh(result.stderr):
+        fail("dgmf-deform on a 4.1 .msh loaded %s" % loaded_gmsh(result.stderr))
+    if msh_node_count(msh41_out) != nodes:
+        fail("the written 4.1 .msh has %d nodes, the source %d" % (msh_node_count(msh41_out), nodes))
+    print("dgmf-deform on a 4.1 .msh (%d nodes): read and written without gmsh" % nodes)
+
     msh = os.path.join(args.work, "box.msh")
-    nodes = make_msh(msh)
+    if make_msh(msh, 2.2) != nodes:
+        fail("gmsh made another mesh for version 2.2")
     msh_out = os.path.join(args.work, "box_out.msh")
     result = run([args.deform, msh, msh_out, "--moving", "wing", "--rotate", "10", "20", "30",
                   "--center", "0.5", "0.5", "0.5"], {"LD_DEBUG": "files"})
@@ -123,7 +142,6 @@ def main():
           (nodes, ", ".join(loaded_gmsh(result.stderr))))
 
     missing_out = os.path.join(args.work, "missing_out.msh")
-    missing = os.path.join(args.work, "no_such_dir", "libDGMFGmshFile.so")
     result = run([args.deform, msh, missing_out, "--moving", "wing", "--rotate", "0", "0", "5"],
                  {"DGMF_GMSH_MODULE": missing})
     if result.returncode != 1 or os.path.exists(missing_out) or \
