@@ -10,23 +10,14 @@
 
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 
 namespace mf = dgmf::meshfile;
 namespace mt = dgmf::meshfile::test;
 namespace fs = std::filesystem;
-using mt::Bytes;
-using mt::WriteBytes;
 
 namespace
 {
-fs::path TestDirectory(const std::string& name)
-{
-  return mt::FreshDirectory("dgmf-msh-nodes-" + name);
-}
-
 /// The file without its $Nodes section (what must stay byte for byte).
 std::string OutsideNodes(const std::string& bytes)
 {
@@ -62,13 +53,13 @@ const mt::MshFlavour kFlavours[] = { { 2.2, false, false }, { 2.2, true, false }
 
 TEST(MshNodes, EachFlavourGetsItsNodesMovedAndKeepsEveryOtherByte)
 {
-  const fs::path dir = TestDirectory("flavours");
+  const fs::path dir = mt::FreshDirectory("dgmf-msh-nodes-flavours");
   for (const mt::MshFlavour& f : kFlavours)
   {
     SCOPED_TRACE(std::to_string(f.Version) + (f.Binary ? " binary" : " ASCII"));
     const std::string source = (dir / "box.msh").string(), target = (dir / "moved.msh").string();
     mt::WriteBoxWithHole(source, f);
-    const std::string bytes = Bytes(source);
+    const std::string bytes = mt::Bytes(source);
     const mf::NamedMesh mesh = mf::ReadGmsh(source);
     std::string patched;
     // The same points: a binary file comes out as it was; an ASCII one as it reads.
@@ -83,7 +74,7 @@ TEST(MshNodes, EachFlavourGetsItsNodesMovedAndKeepsEveryOtherByte)
     const std::vector<double> moved = Moved(mesh.Points);
     ASSERT_TRUE(Replace(bytes, f.Version, f.Binary, moved, patched));
     EXPECT_EQ(OutsideNodes(patched), OutsideNodes(bytes));
-    WriteBytes(target, patched);
+    mt::WriteBytes(target, patched);
     const mf::NamedMesh back = mf::ReadGmsh(target);
     EXPECT_EQ(back.NodeIds, mesh.NodeIds);
     EXPECT_EQ(std::memcmp(back.Points.data(), moved.data(), moved.size() * sizeof(double)), 0);
@@ -146,17 +137,17 @@ TEST(MshNodes, FilesItCannotRewriteAreLeftToGmsh)
 
   // A binary file of the other byte order; and versions 4.0 and 2.2 through WriteGmshWithPoints:
   // gmsh writes what this does not.
-  const fs::path dir = TestDirectory("fallback");
+  const fs::path dir = mt::FreshDirectory("dgmf-msh-nodes-fallback");
   const std::string source = (dir / "s.msh").string(), target = (dir / "t.msh").string();
   mt::WriteBoxWithHole(source, { 4.1, true, false });
   const mf::NamedMesh mesh = mf::ReadGmsh(source);
-  std::string swapped = Bytes(source);
+  std::string swapped = mt::Bytes(source);
   const std::size_t one = swapped.find("4.1 1 8\n") + 8;
   std::reverse(swapped.begin() + static_cast<std::ptrdiff_t>(one),
     swapped.begin() + static_cast<std::ptrdiff_t>(one) + 4);
   EXPECT_FALSE(Replace(swapped, 4.1, true, mesh.Points, patched)) << "big-endian";
   mt::WriteBoxWithHole(source, { 4.0, false, false });
-  EXPECT_FALSE(Replace(Bytes(source), 4.0, false, mesh.Points, patched)) << "version 4.0";
+  EXPECT_FALSE(Replace(mt::Bytes(source), 4.0, false, mesh.Points, patched)) << "version 4.0";
   const mf::NamedMesh mesh40 = mf::ReadGmsh(source);
   const std::vector<double> moved = Moved(mesh40.Points);
   mf::WriteGmshWithPoints(source, target, moved.data(), mesh40.NumberOfNodes());
@@ -167,13 +158,13 @@ TEST(MshNodes, RandomMutationsNeverReadOutsideTheFile)
 {
   // Every flavour's bytes mutated at random (seeded), around the $Nodes section most: each call
   // returns, true or false (the sanitizer build checks no byte outside the file is read).
-  const fs::path dir = TestDirectory("mutations");
+  const fs::path dir = mt::FreshDirectory("dgmf-msh-nodes-mutations");
   std::mt19937 random(20261128);
   for (const mt::MshFlavour& f : kFlavours)
   {
     const std::string source = (dir / "r.msh").string();
     mt::WriteRectangleWithHole(source, f);
-    const std::string bytes = Bytes(source);
+    const std::string bytes = mt::Bytes(source);
     const mf::NamedMesh mesh = mf::ReadGmsh(source);
     const std::size_t nodes = bytes.find("$Nodes");
     const std::size_t span = bytes.find("$EndNodes") + 12 - nodes;

@@ -18,25 +18,11 @@ namespace meshfile
 {
 namespace fs = std::filesystem;
 
-NamedMesh ReadGmsh(const std::string& path)
+namespace
 {
-  const MshFormat format = CheckMshHeader(path);
-  // Version 4.1 without gmsh (MshReader41.h), the same mesh; anything it leaves, through gmsh.
-  if (std::fabs(format.Version - 4.1) < 1e-9)
-  {
-    NamedMesh mesh;
-    if (ReadMsh41(ReadFileBytes(path), format.Binary, mesh))
-    {
-      ValidateNamedMesh(mesh, path);
-      return mesh;
-    }
-  }
-  return ReadGmshWithGmsh(path);
-}
-
-NamedMesh ReadGmshWithGmsh(const std::string& path)
+/// ReadGmshWithGmsh of a file whose header says `format`.
+NamedMesh ReadThroughGmsh(const std::string& path, const MshFormat& format)
 {
-  const MshFormat format = CheckMshHeader(path);
   // Loaded here, before the fork: the child only calls it.
   const GmshModule gmsh = LoadGmshModule(path);
   const std::string answer = RunIsolated(path, "gmsh", TimeAllowed(path), 0,
@@ -60,6 +46,28 @@ NamedMesh ReadGmshWithGmsh(const std::string& path)
   }
   ValidateNamedMesh(mesh, path);
   return mesh;
+}
+} // namespace
+
+NamedMesh ReadGmsh(const std::string& path)
+{
+  const MshFormat format = CheckMshHeader(path);
+  // Version 4.1 without gmsh (MshReader41.h), the same mesh; anything it leaves, through gmsh.
+  if (std::fabs(format.Version - 4.1) < 1e-9)
+  {
+    NamedMesh mesh;
+    if (ReadMsh41(ReadFileBytes(path), format.Binary, mesh))
+    {
+      ValidateNamedMesh(mesh, path);
+      return mesh;
+    }
+  }
+  return ReadThroughGmsh(path, format);
+}
+
+NamedMesh ReadGmshWithGmsh(const std::string& path)
+{
+  return ReadThroughGmsh(path, CheckMshHeader(path));
 }
 
 namespace

@@ -4,6 +4,7 @@
 #include "dgmf/meshfile/MshReader41.h"
 
 #include "dgmf/meshfile/MshElementTypes.h"
+#include "dgmf/meshfile/MshNodeIndex.h"
 #include "dgmf/meshfile/MshText.h"
 
 #include <algorithm>
@@ -276,40 +277,6 @@ bool ParseElements(Cursor& cursor, bool binary, Model& model)
   return read == count && EndsSection(cursor, "Elements");
 }
 
-/// Node tag -> index in increasing tag order: a table when the tags are dense, else a search.
-class NodeIndex
-{
-public:
-  explicit NodeIndex(const std::vector<std::uint64_t>& sortedTags)
-    : Tags(sortedTags)
-  {
-    const std::uint64_t largest = sortedTags.empty() ? 0 : sortedTags.back();
-    if (largest <= 4 * sortedTags.size() + 1024)
-    {
-      this->Dense.assign(static_cast<std::size_t>(largest) + 1, -1);
-      for (std::size_t k = 0; k < sortedTags.size(); ++k)
-      {
-        this->Dense[static_cast<std::size_t>(sortedTags[k])] = static_cast<std::int64_t>(k);
-      }
-    }
-  }
-
-  /// The index of `tag`, or -1.
-  std::int64_t Find(std::uint64_t tag) const
-  {
-    if (!this->Dense.empty() || this->Tags.empty())
-    {
-      return tag < this->Dense.size() ? this->Dense[static_cast<std::size_t>(tag)] : -1;
-    }
-    const auto at = std::lower_bound(this->Tags.begin(), this->Tags.end(), tag);
-    return at != this->Tags.end() && *at == tag ? at - this->Tags.begin() : -1;
-  }
-
-private:
-  const std::vector<std::uint64_t>& Tags;
-  std::vector<std::int64_t> Dense;
-};
-
 /// The blocks of each (dimension, entity), in the file's order.
 using BlocksByEntity = std::map<std::pair<int, int>, std::vector<std::size_t>>;
 
@@ -374,13 +341,13 @@ bool BuildMesh(const Model& model, NamedMesh& mesh)
     std::sort(order.begin(), order.end(),
       [&](std::size_t a, std::size_t b) { return model.NodeTags[a] < model.NodeTags[b]; });
   }
-  std::vector<std::uint64_t> tags(n);
+  std::vector<std::size_t> tags(n);
   mesh.Points.resize(3 * n);
   mesh.NodeIds.resize(n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    tags[k] = model.NodeTags[order[k]];
-    if ((k > 0 && tags[k] == tags[k - 1]) || tags[k] > static_cast<std::uint64_t>(INT64_MAX))
+    tags[k] = static_cast<std::size_t>(model.NodeTags[order[k]]);
+    if ((k > 0 && tags[k] == tags[k - 1]) || tags[k] > static_cast<std::size_t>(INT64_MAX))
     {
       return false;
     }

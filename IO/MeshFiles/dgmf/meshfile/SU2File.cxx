@@ -429,10 +429,6 @@ void AppendCoordinate(std::string& out, double value)
   out.append(buffer, written.ptr);
 }
 
-} // namespace
-
-namespace
-{
 /**
  * What the writer needs of the last file the reader parsed, with its bytes' size and hash: the
  * command and ParaView write back the file they read, and the writer, given the same bytes, skips
