@@ -20,7 +20,9 @@ target_sources(DGMFMeshFiles PRIVATE
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshFile.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/GmshModule.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshHeader.cxx"
+  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshModel.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshNodes.cxx"
+  "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshReader22.cxx"
   "${CMAKE_CURRENT_SOURCE_DIR}/dgmf/meshfile/MshReader41.cxx")
 target_link_libraries(DGMFMeshFiles PRIVATE ${CMAKE_DL_LIBS})
 # Where the loader looks in the build tree (for code inside the build tree only), after the

@@ -8,11 +8,12 @@ Checks:
 - no FILE (dgmf-deform, the DGMF::IO library, the ParaView plugin) depends on libgmsh (ldd);
 - dgmf-deform on a .vtu never loads libgmsh (the dynamic loader's log, LD_DEBUG=files), and
   writes its output;
-- dgmf-deform on a gmsh .msh file of version 2.2 (made here by gmsh's Python API: a box around a
-  sphere, groups "wing" and "farfield"), which is read through gmsh, loads it, deforms the mesh by
-  name and writes the .msh back with every node;
-- the same mesh as a version 4.1 file is read and written without gmsh (MshReader41.h,
-  MshNodes.h): libgmsh not loaded, even with DGMF_GMSH_MODULE naming a missing module;
+- dgmf-deform on a gmsh .msh file of version 4.1 and of version 2.2 (made here by gmsh's Python
+  API: a box around a sphere, groups "wing" and "farfield") reads and writes it without gmsh
+  (MshReader41.h, MshReader22.h, MshNodes.h): libgmsh not loaded, even with DGMF_GMSH_MODULE
+  naming a missing module, the mesh deformed by name and written back with every node;
+- the same mesh as a version 4.0 file, which is read through gmsh, loads it, and is written back
+  with every node;
 - DGMF_GMSH_MODULE naming a missing module, or (--not-a-module) a shared library that is not this
   build's module: the .msh run fails with exit code 1, a message that says gmsh's library cannot
   be loaded (and why), and no output file;
@@ -110,24 +111,32 @@ def main():
         fail("dgmf-deform on a .vtu loaded %s" % loaded_gmsh(result.stderr))
     print("dgmf-deform on a .vtu: written, libgmsh not loaded")
 
-    msh41 = os.path.join(args.work, "box41.msh")
-    nodes = make_msh(msh41, 4.1)
-    msh41_out = os.path.join(args.work, "box41_out.msh")
-    missing = os.path.join(args.work, "no_such_dir", "libDGMFGmshFile.so")
-    result = run([args.deform, msh41, msh41_out, "--moving", "wing", "--rotate", "10", "20", "30",
-                  "--center", "0.5", "0.5", "0.5"], {"LD_DEBUG": "files", "DGMF_GMSH_MODULE": missing})
-    if result.returncode != 0 or not os.path.exists(msh41_out):
-        fail("dgmf-deform on the 4.1 .msh: exit %d\n%s" % (result.returncode,
-                                                          result.stderr[-3000:]))
-    if loaded_gmsh(result.stderr):
-        fail("dgmf-deform on a 4.1 .msh loaded %s" % loaded_gmsh(result.stderr))
-    if msh_node_count(msh41_out) != nodes:
-        fail("the written 4.1 .msh has %d nodes, the source %d" % (msh_node_count(msh41_out), nodes))
-    print("dgmf-deform on a 4.1 .msh (%d nodes): read and written without gmsh" % nodes)
+    nodes = None
+    for version in (4.1, 2.2):
+        source = os.path.join(args.work, "box%s.msh" % version)
+        made = make_msh(source, version)
+        if nodes is not None and made != nodes:
+            fail("gmsh made another mesh for version %s" % version)
+        nodes = made
+        written = os.path.join(args.work, "box%s_out.msh" % version)
+        missing = os.path.join(args.work, "no_such_dir", "libDGMFGmshFile.so")
+        result = run([args.deform, source, written, "--moving", "wing", "--rotate", "10", "20",
+                      "30", "--center", "0.5", "0.5", "0.5"],
+                     {"LD_DEBUG": "files", "DGMF_GMSH_MODULE": missing})
+        if result.returncode != 0 or not os.path.exists(written):
+            fail("dgmf-deform on the %s .msh: exit %d\n%s" % (version, result.returncode,
+                                                               result.stderr[-3000:]))
+        if loaded_gmsh(result.stderr):
+            fail("dgmf-deform on a %s .msh loaded %s" % (version, loaded_gmsh(result.stderr)))
+        if msh_node_count(written) != nodes:
+            fail("the written %s .msh has %d nodes, the source %d" % (
+                version, msh_node_count(written), nodes))
+        print("dgmf-deform on a %s .msh (%d nodes): read and written without gmsh" % (
+            version, nodes))
 
-    msh = os.path.join(args.work, "box.msh")
-    if make_msh(msh, 2.2) != nodes:
-        fail("gmsh made another mesh for version 2.2")
+    msh = os.path.join(args.work, "box40.msh")
+    if make_msh(msh, 4.0) != nodes:
+        fail("gmsh made another mesh for version 4.0")
     msh_out = os.path.join(args.work, "box_out.msh")
     result = run([args.deform, msh, msh_out, "--moving", "wing", "--rotate", "10", "20", "30",
                   "--center", "0.5", "0.5", "0.5"], {"LD_DEBUG": "files"})
@@ -138,7 +147,7 @@ def main():
     written = msh_node_count(msh_out)
     if written != nodes:
         fail("the written .msh has %d nodes, the source %d" % (written, nodes))
-    print("dgmf-deform on a .msh (%d nodes): gmsh loaded (%s), written back with every node" %
+    print("dgmf-deform on a 4.0 .msh (%d nodes): gmsh loaded (%s), written back with every node" %
           (nodes, ", ".join(loaded_gmsh(result.stderr))))
 
     missing_out = os.path.join(args.work, "missing_out.msh")

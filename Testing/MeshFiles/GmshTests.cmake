@@ -3,6 +3,7 @@ add_executable(DGMFGmshTests
   TestGmshFile.cxx
   TestGmshHostileFiles.cxx
   TestMshNodes.cxx
+  TestMshReader22.cxx
   TestMshReader41.cxx
   gmsh/GmshTestMeshes.cxx)
 target_include_directories(DGMFGmshTests PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}"

@@ -7,6 +7,7 @@
 #include "dgmf/meshfile/LibraryIsolation.h"
 #include "dgmf/meshfile/MshHeader.h"
 #include "dgmf/meshfile/MshNodes.h"
+#include "dgmf/meshfile/MshReader22.h"
 #include "dgmf/meshfile/MshReader41.h"
 
 #include <cmath>
@@ -52,11 +53,15 @@ NamedMesh ReadThroughGmsh(const std::string& path, const MshFormat& format)
 NamedMesh ReadGmsh(const std::string& path)
 {
   const MshFormat format = CheckMshHeader(path);
-  // Version 4.1 without gmsh (MshReader41.h), the same mesh; anything it leaves, through gmsh.
-  if (std::fabs(format.Version - 4.1) < 1e-9)
+  // Versions 4.1 and 2.2 without gmsh (MshReader41.h, MshReader22.h), the same mesh; anything
+  // they leave, through gmsh.
+  const bool version41 = std::fabs(format.Version - 4.1) < 1e-9;
+  const bool version22 = std::fabs(format.Version - 2.2) < 1e-9;
+  if (version41 || version22)
   {
+    const std::string bytes = ReadFileBytes(path);
     NamedMesh mesh;
-    if (ReadMsh41(ReadFileBytes(path), format.Binary, mesh))
+    if (version41 ? ReadMsh41(bytes, format.Binary, mesh) : ReadMsh22(bytes, format.Binary, mesh))
     {
       ValidateNamedMesh(mesh, path);
       return mesh;

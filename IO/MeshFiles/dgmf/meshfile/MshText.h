@@ -1,7 +1,8 @@
 /**
  * @file MshText.h
- * @brief Private to the .msh code that reads files without gmsh (MshNodes.cxx, MshReader41.cxx):
- * a cursor over a file's bytes that reads tokens, lines and binary values, never past the end.
+ * @brief Private to the .msh code that reads files without gmsh (MshNodes.cxx, MshModel.cxx,
+ * MshReader41.cxx, MshReader22.cxx): a cursor over a file's bytes that reads tokens, lines and
+ * binary values, never past the end.
  */
 #ifndef dgmf_meshfile_MshText_h
 #define dgmf_meshfile_MshText_h
@@ -106,6 +107,61 @@ struct Cursor
   }
 };
 
+/// Numbers in a file's mode: tokens (ASCII), or binary values of this machine's order (int 4
+/// bytes, size_t 8, double 8: the "8" of the format line).
+class Values
+{
+public:
+  Values(Cursor& cursor, bool binary)
+    : At(cursor)
+    , Binary(binary)
+  {
+  }
+
+  bool Int(int& value)
+  {
+    if (this->Binary)
+    {
+      std::int32_t read = 0;
+      const bool ok = this->At.Binary(read);
+      value = read;
+      return ok;
+    }
+    return ToInteger(this->At.Token(), value);
+  }
+
+  bool Size(std::uint64_t& value)
+  {
+    return this->Binary ? this->At.Binary(value) : ToInteger(this->At.Token(), value);
+  }
+
+  bool Real(double& value)
+  {
+    if (this->Binary)
+    {
+      return this->At.Binary(value);
+    }
+    const std::string_view token = this->At.Token();
+    const char* end = token.data() + token.size();
+    const std::from_chars_result read = std::from_chars(token.data(), end, value);
+    return !token.empty() && read.ec == std::errc() && read.ptr == end;
+  }
+
+  /// Bytes left in the file.
+  std::size_t Left() const { return this->At.File.size() - this->At.At; }
+
+private:
+  Cursor& At;
+  bool Binary;
+};
+
+/// Reads the token "$End<name>".
+inline bool EndsSection(Cursor& cursor, std::string_view name)
+{
+  const std::string_view token = cursor.Token();
+  return token.size() == name.size() + 4 && token.substr(0, 4) == "$End" && token.substr(4) == name;
+}
+
 /**
  * The name of the section that starts at the cursor (the line "$Name", blank lines before it
  * skipped); the cursor is then after that line. Empty at the end of the file, or when the next
@@ -141,6 +197,42 @@ inline bool SkipSection(Cursor& cursor, std::string_view name)
   }
   cursor.At = found + 1;
   cursor.Line();
+  return true;
+}
+
+/**
+ * Reads the $MeshFormat section at the start of the file; for a binary file, checks that the
+ * integer 1 after the version line reads as 1 on this machine. False otherwise (the other byte
+ * order, or no such section).
+ */
+inline bool ReadMeshFormat(Cursor& cursor, bool binary)
+{
+  if (NextSection(cursor) != "MeshFormat")
+  {
+    return false;
+  }
+  if (binary)
+  {
+    cursor.Line(); // "<version> 1 8"
+    std::int32_t one = 0;
+    if (!cursor.Binary(one) || one != 1)
+    {
+      return false;
+    }
+  }
+  return SkipSection(cursor, "MeshFormat");
+}
+
+/// Whether only blanks are left after the cursor (no line outside a section).
+inline bool OnlyBlanksLeft(const Cursor& cursor)
+{
+  for (std::size_t at = cursor.At; at < cursor.File.size(); ++at)
+  {
+    if (!IsBlank(cursor.File[at]))
+    {
+      return false;
+    }
+  }
   return true;
 }
 
