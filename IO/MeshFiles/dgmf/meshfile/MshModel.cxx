@@ -105,6 +105,27 @@ bool AppendEntity(const MshModel& model, const BlocksByEntity& blocks, const Nod
   return true;
 }
 
+/// Reserves in `cells` the room of the elements of `entities` of `dimension` (no copy as it grows).
+void Reserve(const MshModel& model, const BlocksByEntity& blocks, int dimension,
+  const std::vector<int>& entities, Cells& cells)
+{
+  std::size_t count = 0, nodes = 0;
+  for (const int entity : entities)
+  {
+    const auto found = blocks.find({ dimension, entity });
+    for (std::size_t b : found == blocks.end() ? std::vector<std::size_t>() : found->second)
+    {
+      CellMapping mapping;
+      MapGmshType(model.Blocks[b].Type, mapping);
+      count += model.Blocks[b].Count;
+      nodes += model.Blocks[b].Count * static_cast<std::size_t>(mapping.Nodes);
+    }
+  }
+  cells.Types.reserve(count);
+  cells.Offsets.reserve(count + 1);
+  cells.Connectivity.reserve(nodes);
+}
+
 /// Whether an entity of `dimension` is in several physical groups.
 bool AnEntityInSeveralGroups(const MshModel& model, int dimension)
 {
@@ -243,6 +264,12 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
   SeenCells seen;
   SeenCells* volumeSeen =
     rules.ReadRepeatedElementsOnce && AnEntityInSeveralGroups(model, dimension) ? &seen : nullptr;
+  std::vector<int> volumeEntities;
+  for (const auto& entity : model.Entities[dimension])
+  {
+    volumeEntities.push_back(entity.first);
+  }
+  Reserve(model, blocks, dimension, volumeEntities, mesh.Volume);
   for (const auto& entity : model.Entities[dimension])
   {
     if (!AppendEntity(model, blocks, index, dimension, entity.first, volumeSeen, mesh.Volume))
@@ -269,6 +296,7 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
       ? name->second
       : "group " + std::to_string(group.first);
     seen.clear();
+    Reserve(model, blocks, dimension - 1, group.second, boundary.Faces);
     for (const int entity : group.second)
     {
       if (!AppendEntity(model, blocks, index, dimension - 1, entity, facesOnce ? &seen : nullptr,

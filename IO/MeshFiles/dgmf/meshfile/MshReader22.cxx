@@ -62,13 +62,22 @@ bool ParseNodes(Cursor& cursor, bool binary, MshModel& model)
 class ElementsInFileOrder
 {
 public:
-  explicit ElementsInFileOrder(MshModel& model)
+  /**
+   * `count` elements announced, in `bytes` of the file: room reserved for as many tetrahedra (a
+   * volume mesh's elements, as a rule) as the file can hold (an element takes 16 bytes at least),
+   * so that they are not copied as they are read; other meshes grow as they are read.
+   */
+  ElementsInFileOrder(MshModel& model, std::uint64_t count, std::size_t bytes)
     : Model(model)
   {
+    const std::size_t elements = std::min<std::size_t>(count, bytes / 16);
+    this->Numbers.reserve(elements);
+    this->Model.ElementNodes.reserve(4 * elements);
   }
 
-  /// An element of gmsh type `type` whose node tags follow in Model.ElementNodes.
-  void Add(std::uint64_t number, const CellMapping& mapping, int type, int physical, int elementary)
+  /// An element of gmsh type `type` whose node tags end at `end` in Model.ElementNodes.
+  void Add(std::uint64_t number, const CellMapping& mapping, int type, int physical, int elementary,
+    std::size_t end)
   {
     this->Increasing = this->Increasing && (this->Numbers.empty() || number > this->Numbers.back());
     this->Numbers.push_back(number);
@@ -79,7 +88,7 @@ public:
       block.Dimension = mapping.Dimension;
       block.Entity = elementary;
       block.Type = type;
-      block.First = this->Model.ElementNodes.size() - static_cast<std::size_t>(mapping.Nodes);
+      block.First = end - static_cast<std::size_t>(mapping.Nodes);
       blocks.push_back(block);
     }
     ++blocks.back().Count;
@@ -168,7 +177,7 @@ bool ValidTags(int tags, int physical, int elementary)
 /// $Elements in ASCII: `number type tags physical elementary nodes...` per element.
 bool ParseAsciiElements(Cursor& cursor, std::uint64_t count, MshModel& model)
 {
-  ElementsInFileOrder elements(model);
+  ElementsInFileOrder elements(model, count, cursor.File.size() - cursor.At);
   for (std::uint64_t e = 0; e < count; ++e)
   {
     std::uint64_t number = 0;
@@ -191,7 +200,7 @@ bool ParseAsciiElements(Cursor& cursor, std::uint64_t count, MshModel& model)
       }
       model.ElementNodes.push_back(node);
     }
-    elements.Add(number, mapping, type, physical, elementary);
+    elements.Add(number, mapping, type, physical, elementary, model.ElementNodes.size());
   }
   return elements.SortByNumber();
 }
@@ -200,7 +209,7 @@ bool ParseAsciiElements(Cursor& cursor, std::uint64_t count, MshModel& model)
 /// tags and nodes, all 4-byte integers.
 bool ParseBinaryElements(Cursor& cursor, std::uint64_t count, MshModel& model)
 {
-  ElementsInFileOrder elements(model);
+  ElementsInFileOrder elements(model, count, cursor.File.size() - cursor.At);
   for (std::uint64_t read = 0; read < count;)
   {
     std::int32_t header[3] = { 0, 0, 0 };
@@ -213,6 +222,9 @@ bool ParseBinaryElements(Cursor& cursor, std::uint64_t count, MshModel& model)
     {
       return false;
     }
+    // (The block's size was checked against the file's: every read below succeeds.)
+    std::size_t at = model.ElementNodes.size();
+    model.ElementNodes.resize(at + static_cast<std::size_t>(header[1]) * mapping.Nodes);
     for (std::int32_t e = 0; e < header[1]; ++e)
     {
       std::int32_t number = 0, physical = 0, elementary = 0, node = 0;
@@ -223,16 +235,17 @@ bool ParseBinaryElements(Cursor& cursor, std::uint64_t count, MshModel& model)
       {
         return false;
       }
-      for (int k = 0; k < mapping.Nodes; ++k)
+      for (int k = 0; k < mapping.Nodes; ++k, ++at)
       {
-        cursor.Binary(node); // (the block's size was checked against the file's)
+        cursor.Binary(node);
         if (node < 1)
         {
           return false;
         }
-        model.ElementNodes.push_back(static_cast<std::uint64_t>(node));
+        model.ElementNodes[at] = static_cast<std::uint64_t>(node);
       }
-      elements.Add(static_cast<std::uint64_t>(number), mapping, header[0], physical, elementary);
+      elements.Add(
+        static_cast<std::uint64_t>(number), mapping, header[0], physical, elementary, at);
     }
     read += static_cast<std::uint64_t>(header[1]);
   }
