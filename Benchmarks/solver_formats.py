@@ -1,12 +1,14 @@
 """The whole command on a solver's mesh file (issue 18, "speed as users meet it"): how long
 `dgmf-deform` takes to read, deform and write the same mesh in each format it reads, gmsh .msh
-(version 4.1, binary), SU2, Exodus II and CGNS, against the filter alone.
+(version 4.1 binary, and the legacy version 2.2, binary and ASCII), SU2, Exodus II and CGNS,
+against the filter alone.
 
 The mesh: gmsh's tetrahedra around a sphere of radius 0.2 in the unit box (physical groups
 "wing", the sphere, and "farfield", the box), largest element size 0.015 by default: about 257,000
 nodes and 1.29 million tetrahedra, the size of the paper's wing-body. gmsh writes the .msh and .su2
-files (generated once into the cache folder); the Exodus and CGNS files are converted from the
-.msh by the build's dgmf-test-convert-mesh. Each format is then deformed `--repeats` times into a
+files (generated once into the cache folder) and the version 2.2 files (the 4.1 file opened and
+written again); the Exodus and CGNS files are converted from the .msh by the build's
+dgmf-test-convert-mesh. Each format is then deformed `--repeats` times into a
 file of the same format (the wing rotated by 10 degrees about z through its centre, 2 threads), and
 the page gives the medians of the wall time, of the read and write the command prints, and of the
 filter (deformation and quality), and the wall time over the filter.
@@ -22,7 +24,9 @@ import sys
 import tempfile
 import time
 
-FORMATS = (("gmsh .msh 4.1 binary", "msh"), ("SU2 (text)", "su2"), ("Exodus II", "exo"),
+# (label, the file's suffix after the mesh's name)
+FORMATS = (("gmsh .msh 4.1 binary", "msh"), ("gmsh .msh 2.2 binary", "v22.msh"),
+           ("gmsh .msh 2.2 ASCII", "v22a.msh"), ("SU2 (text)", "su2"), ("Exodus II", "exo"),
            ("CGNS", "cgns"))
 
 
@@ -69,6 +73,23 @@ def make_mesh(folder, size):
     return stem
 
 
+def write_version_22(stem):
+    """The version 2.2 files, binary and ASCII, of the mesh (gmsh's writer), made once."""
+    if os.path.exists(stem + ".v22.msh") and os.path.exists(stem + ".v22a.msh"):
+        return
+    import gmsh
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(stem + ".msh")
+        gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
+        for binary, suffix in ((1, ".v22.msh"), (0, ".v22a.msh")):
+            gmsh.option.setNumber("Mesh.Binary", binary)
+            gmsh.write(stem + suffix)
+    finally:
+        gmsh.finalize()
+
+
 def run_once(command, source, target):
     start = time.perf_counter()
     done = subprocess.run([command, source, target, "--moving", "wing", "--rotate", "0", "0", "10",
@@ -96,6 +117,7 @@ def main():
     command = os.path.join(args.build, "bin", "dgmf-deform")
     convert = os.path.join(args.build, "bin", "dgmf-test-convert-mesh")
     stem = make_mesh(cache_folder(), args.size)
+    write_version_22(stem)
     for extension in ("exo", "cgns"):
         if not os.path.exists(stem + "." + extension):
             subprocess.run([convert, stem + ".msh", stem + "." + extension], check=True,

@@ -44,15 +44,17 @@ namespace meshfile
  * reversed (gmsh's corner order turns the other way round from VTK's documented wedge); the other
  * types have VTK's order. Throws FileError naming the file.
  *
- * A version 4.1 file (ASCII or binary, what gmsh writes by default) is read without gmsh's
- * library into the same mesh (ReadMsh41, MshReader41.h); any file it leaves (other versions,
- * partitioned or parametric files, other element types, anything it does not parse, and every
- * file with an error) is read by gmsh (ReadGmshWithGmsh), which also words the errors.
+ * Files of version 4.1 (what gmsh writes by default) and 2.2 (the legacy format), ASCII or binary,
+ * are read without gmsh's library into the same mesh (ReadMsh41, MshReader41.h; ReadMsh22,
+ * MshReader22.h, which also drops the nodes no element uses, as gmsh does with version 2 files);
+ * any file they leave (other versions, partitioned or parametric files, other element types,
+ * anything they do not parse, and every file with an error) is read by gmsh (ReadGmshWithGmsh),
+ * which also words the errors.
  */
 NamedMesh ReadGmsh(const std::string& path);
 
-/// ReadGmsh through gmsh's library alone, whatever the version (the reference ReadMsh41 is
-/// checked against).
+/// ReadGmsh through gmsh's library alone, whatever the version (the reference ReadMsh41 and
+/// ReadMsh22 are checked against).
 NamedMesh ReadGmshWithGmsh(const std::string& path);
 
 /**
