@@ -34,7 +34,14 @@ bool Replace(const std::string& text, double version, bool binary,
   mf::MshFormat format;
   format.Version = version;
   format.Binary = binary;
-  return mf::ReplaceMshNodeCoordinates(text, format, points.data(), points.size() / 3, patched);
+  patched = text;
+  const bool replaced =
+    mf::ReplaceMshNodeCoordinates(patched, format, points.data(), points.size() / 3);
+  if (!replaced)
+  {
+    EXPECT_EQ(patched, text) << "a file it cannot rewrite is left as it was";
+  }
+  return replaced;
 }
 
 /// Every coordinate changed, with full mantissas.

@@ -103,10 +103,10 @@ void WriteGmshWithPoints(
   const fs::path temporary = MshTemporaryBeside(target);
   // Versions 2.2 and 4.1 without parametric nodes: the source's own bytes with the coordinates
   // replaced (MshNodes.h), every other byte kept, without gmsh. Any other file through gmsh.
-  std::string patched;
-  if (ReplaceMshNodeCoordinates(ReadFileBytes(source), format, points, count, patched))
+  std::string bytes = ReadFileBytes(source);
+  if (ReplaceMshNodeCoordinates(bytes, format, points, count))
   {
-    WriteFileAtomically(target, temporary.string(), patched);
+    WriteFileAtomically(target, temporary.string(), bytes);
     return;
   }
   const GmshModule gmsh = LoadGmshModule(source);

@@ -241,9 +241,10 @@ void AppendShortest(std::string& out, double value)
 }
 } // namespace
 
-bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format, const double* points,
-  std::size_t count, std::string& patched)
+bool ReplaceMshNodeCoordinates(
+  std::string& bytes, const MshFormat& format, const double* points, std::size_t count)
 {
+  const std::string_view file = bytes;
   const bool v22 = std::fabs(format.Version - 2.2) < 1e-9;
   const bool v41 = std::fabs(format.Version - 4.1) < 1e-9;
   if ((!v22 && !v41) || (format.Binary && !NativeByteOrder(file)))
@@ -267,15 +268,15 @@ bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format, c
   }
   if (format.Binary)
   {
-    patched.assign(file.data(), file.size());
+    // The doubles replaced where they are: the file's size does not change.
     for (std::size_t r = 0; r < rank.size(); ++r)
     {
-      std::memcpy(patched.data() + records.At[r], points + 3 * rank[r], 3 * sizeof(double));
+      std::memcpy(bytes.data() + records.At[r], points + 3 * rank[r], 3 * sizeof(double));
     }
     return true;
   }
   // ASCII: the text between the coordinates as it is, each coordinate written anew.
-  patched.clear();
+  std::string patched;
   patched.reserve(file.size() + 16 * count);
   std::size_t copied = 0;
   for (std::size_t r = 0; r < rank.size(); ++r)
@@ -294,6 +295,7 @@ bool ReplaceMshNodeCoordinates(std::string_view file, const MshFormat& format, c
     }
   }
   patched.append(file.data() + copied, file.size() - copied);
+  bytes.swap(patched);
   return true;
 }
 
