@@ -42,15 +42,25 @@ std::string ReadFileBytes(const std::string& path)
   return bytes;
 }
 
-void WriteFileAtomically(
-  const std::string& target, const std::string& temporary, const std::string& bytes)
+void WriteFileAtomically(const std::string& target, const std::string& temporary,
+  const std::function<void(BufferedOutput&)>& write)
 {
   std::error_code error;
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out)
+    BufferedOutput out(temporary);
+    try
+    {
+      write(out);
+      out.Flush();
+      out.File.close();
+    }
+    catch (...)
+    {
+      out.File.close();
+      fs::remove(temporary, error);
+      throw;
+    }
+    if (!out.File)
     {
       fs::remove(temporary, error);
       throw FileError(target + ": cannot write " + temporary + " (disk full?)");
@@ -63,6 +73,13 @@ void WriteFileAtomically(
     fs::remove(temporary, error);
     throw FileError(target + ": cannot be replaced: " + message);
   }
+}
+
+void WriteFileAtomically(
+  const std::string& target, const std::string& temporary, const std::string& bytes)
+{
+  WriteFileAtomically(
+    target, temporary, [&](BufferedOutput& out) { out.Append(bytes.data(), bytes.size()); });
 }
 
 std::string TemporaryBeside(const std::string& target)

@@ -104,9 +104,8 @@ void WriteGmshWithPoints(
   // Versions 2.2 and 4.1 without parametric nodes: the source's own bytes with the coordinates
   // replaced (MshNodes.h), every other byte kept, without gmsh. Any other file through gmsh.
   std::string bytes = ReadFileBytes(source);
-  if (ReplaceMshNodeCoordinates(bytes, format, points, count))
+  if (WriteMshWithMovedNodes(bytes, format, points, count, target, temporary.string()))
   {
-    WriteFileAtomically(target, temporary.string(), bytes);
     return;
   }
   const GmshModule gmsh = LoadGmshModule(source);

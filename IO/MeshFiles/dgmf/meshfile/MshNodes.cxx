@@ -1,6 +1,7 @@
 // A .msh file's node coordinates replaced in its own bytes (MshNodes.h). The $Nodes layouts:
 // gmsh's reference manual, "MSH file format" (version 4.1) and "Legacy formats" (version 2.2).
 #include "dgmf/meshfile/MshNodes.h"
+#include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/MshText.h"
 
 #include <algorithm>
@@ -233,18 +234,17 @@ bool RanksOfTags(const std::vector<std::uint64_t>& tags, std::vector<std::size_t
   return true;
 }
 
-void AppendShortest(std::string& out, double value)
+/// Where a file's coordinates are, and the point each node takes.
+struct Replacement
 {
-  char buffer[32];
-  const std::to_chars_result written = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  out.append(buffer, written.ptr);
-}
-} // namespace
+  NodeRecords Records;
+  std::vector<std::size_t> Rank; ///< per record, the index of its point
+};
 
-bool ReplaceMshNodeCoordinates(
-  std::string& bytes, const MshFormat& format, const double* points, std::size_t count)
+/// The replacement of `count` nodes' coordinates in `file`; false if this cannot rewrite it.
+bool PlanReplacement(
+  std::string_view file, const MshFormat& format, std::size_t count, Replacement& plan)
 {
-  const std::string_view file = bytes;
   const bool v22 = std::fabs(format.Version - 2.2) < 1e-9;
   const bool v41 = std::fabs(format.Version - 4.1) < 1e-9;
   if ((!v22 && !v41) || (format.Binary && !NativeByteOrder(file)))
@@ -257,45 +257,90 @@ bool ReplaceMshNodeCoordinates(
     return false;
   }
   Cursor cursor{ file, start };
-  NodeRecords records;
   const bool parsed = format.Binary
-    ? (v22 ? ParseBinary22(cursor, records) : ParseBinary41(cursor, records))
-    : (v22 ? ParseAscii22(cursor, records) : ParseAscii41(cursor, records));
-  std::vector<std::size_t> rank;
-  if (!parsed || records.Tags.size() != count || !RanksOfTags(records.Tags, rank))
+    ? (v22 ? ParseBinary22(cursor, plan.Records) : ParseBinary41(cursor, plan.Records))
+    : (v22 ? ParseAscii22(cursor, plan.Records) : ParseAscii41(cursor, plan.Records));
+  // (The layouts above give the records in file order, which the ASCII rewrite relies on.)
+  return parsed && plan.Records.Tags.size() == count && RanksOfTags(plan.Records.Tags, plan.Rank) &&
+    std::is_sorted(plan.Records.At.begin(), plan.Records.At.end());
+}
+
+/// A binary file's doubles replaced where they are.
+void PatchBinary(std::string& bytes, const Replacement& plan, const double* points)
+{
+  for (std::size_t r = 0; r < plan.Rank.size(); ++r)
+  {
+    std::memcpy(bytes.data() + plan.Records.At[r], points + 3 * plan.Rank[r], 3 * sizeof(double));
+  }
+}
+
+/**
+ * An ASCII file appended to `append(data, size)` in pieces: the text between the coordinates as
+ * it is, each coordinate written anew as the shortest decimal that reads back as the same double.
+ */
+template <typename Append>
+void WriteAscii(std::string_view file, const Replacement& plan, const double* points, Append append)
+{
+  std::size_t copied = 0;
+  char number[32];
+  for (std::size_t r = 0; r < plan.Rank.size(); ++r)
+  {
+    Cursor at{ file, plan.Records.At[r] };
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::string_view token = at.Token();
+      append(file.data() + copied, at.Offset(token) - copied);
+      const std::to_chars_result written = std::to_chars(
+        number, number + sizeof(number), points[3 * plan.Rank[r] + static_cast<std::size_t>(c)]);
+      append(number, static_cast<std::size_t>(written.ptr - number));
+      copied = at.Offset(token) + token.size();
+    }
+  }
+  append(file.data() + copied, file.size() - copied);
+}
+} // namespace
+
+bool ReplaceMshNodeCoordinates(
+  std::string& bytes, const MshFormat& format, const double* points, std::size_t count)
+{
+  Replacement plan;
+  if (!PlanReplacement(bytes, format, count, plan))
   {
     return false;
   }
   if (format.Binary)
   {
-    // The doubles replaced where they are: the file's size does not change.
-    for (std::size_t r = 0; r < rank.size(); ++r)
-    {
-      std::memcpy(bytes.data() + records.At[r], points + 3 * rank[r], 3 * sizeof(double));
-    }
+    PatchBinary(bytes, plan, points);
     return true;
   }
-  // ASCII: the text between the coordinates as it is, each coordinate written anew.
   std::string patched;
-  patched.reserve(file.size() + 16 * count);
-  std::size_t copied = 0;
-  for (std::size_t r = 0; r < rank.size(); ++r)
-  {
-    if (records.At[r] < copied)
-    {
-      return false; // (the layouts above give them in file order)
-    }
-    Cursor at{ file, records.At[r] };
-    for (int c = 0; c < 3; ++c)
-    {
-      const std::string_view token = at.Token();
-      patched.append(file.data() + copied, at.Offset(token) - copied);
-      AppendShortest(patched, points[3 * rank[r] + static_cast<std::size_t>(c)]);
-      copied = at.Offset(token) + token.size();
-    }
-  }
-  patched.append(file.data() + copied, file.size() - copied);
+  patched.reserve(bytes.size() + 16 * count);
+  WriteAscii(bytes, plan, points,
+    [&patched](const char* data, std::size_t size) { patched.append(data, size); });
   bytes.swap(patched);
+  return true;
+}
+
+bool WriteMshWithMovedNodes(std::string& bytes, const MshFormat& format, const double* points,
+  std::size_t count, const std::string& target, const std::string& temporary)
+{
+  Replacement plan;
+  if (!PlanReplacement(bytes, format, count, plan))
+  {
+    return false;
+  }
+  if (format.Binary)
+  {
+    PatchBinary(bytes, plan, points);
+    WriteFileAtomically(target, temporary, bytes);
+    return true;
+  }
+  WriteFileAtomically(target, temporary,
+    [&](BufferedOutput& out)
+    {
+      WriteAscii(bytes, plan, points,
+        [&out](const char* data, std::size_t size) { out.Append(data, size); });
+    });
   return true;
 }
 

@@ -33,6 +33,15 @@ namespace meshfile
 bool ReplaceMshNodeCoordinates(
   std::string& bytes, const MshFormat& format, const double* points, std::size_t count);
 
+/**
+ * ReplaceMshNodeCoordinates written to `target` through `temporary` (WriteFileAtomically,
+ * FileReplacement.h): a binary file's bytes patched where they are, an ASCII file's text written
+ * in pieces, never whole in memory. False, with nothing written and `bytes` unchanged, for a file
+ * ReplaceMshNodeCoordinates cannot rewrite; throws FileError when the file cannot be written.
+ */
+bool WriteMshWithMovedNodes(std::string& bytes, const MshFormat& format, const double* points,
+  std::size_t count, const std::string& target, const std::string& temporary);
+
 } // namespace meshfile
 } // namespace dgmf
 

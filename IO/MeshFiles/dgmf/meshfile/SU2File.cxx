@@ -420,13 +420,13 @@ std::string ReadWholeFile(const std::string& path)
   return ReadFileBytes(path);
 }
 
-/// Appends `value` with 17 significant digits (reads back as the same double; no locale).
-void AppendCoordinate(std::string& out, double value)
+/// Writes `value` with 17 significant digits (reads back as the same double; no locale) into
+/// `buffer` (32 characters at least); returns its length.
+std::size_t FormatCoordinate(char* buffer, double value)
 {
-  char buffer[40];
   const std::to_chars_result written =
-    std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 17);
-  out.append(buffer, written.ptr);
+    std::to_chars(buffer, buffer + 32, value, std::chars_format::general, 17);
+  return static_cast<std::size_t>(written.ptr - buffer);
 }
 
 /**
@@ -500,26 +500,29 @@ void WriteSU2WithPoints(
       }
     }
   }
-  std::string out;
-  out.reserve(text.size() + 16 * dimension * count);
-  std::size_t copied = 0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const std::size_t begin = parsed.PointLineBegins[k];
-    const std::size_t end = std::min(text.find('\n', begin), text.size());
-    const Tokens tokens = Split(std::string_view(text).substr(begin, end - begin));
-    for (std::size_t c = 0; c < dimension; ++c)
-    {
-      const std::size_t at = static_cast<std::size_t>(tokens.Items[c].data() - text.data());
-      out.append(text, copied, at - copied);
-      AppendCoordinate(out, points[3 * k + c]);
-      copied = at + tokens.Items[c].size();
-    }
-  }
-  out.append(text, copied, std::string::npos);
+  // Written in pieces (the text between the coordinates as it is), never whole in memory.
   const fs::path path(target);
   WriteFileAtomically(target,
-    (path.parent_path() / ("." + path.filename().string() + ".dgmf-writing")).string(), out);
+    (path.parent_path() / ("." + path.filename().string() + ".dgmf-writing")).string(),
+    [&](BufferedOutput& out)
+    {
+      std::size_t copied = 0;
+      char number[32];
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        const std::size_t begin = parsed.PointLineBegins[k];
+        const std::size_t end = std::min(text.find('\n', begin), text.size());
+        const Tokens tokens = Split(std::string_view(text).substr(begin, end - begin));
+        for (std::size_t c = 0; c < dimension; ++c)
+        {
+          const std::size_t at = static_cast<std::size_t>(tokens.Items[c].data() - text.data());
+          out.Append(text.data() + copied, at - copied);
+          out.Append(number, FormatCoordinate(number, points[3 * k + c]));
+          copied = at + tokens.Items[c].size();
+        }
+      }
+      out.Append(text.data() + copied, text.size() - copied);
+    });
 }
 
 } // namespace meshfile
