@@ -7,6 +7,7 @@
 
 #include "gmsh/GmshTestMeshes.h"
 #include "gmsh/MshTestFiles.h"
+#include "gmsh/SameMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -20,29 +21,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-void ExpectSameCells(const mf::Cells& a, const mf::Cells& b)
-{
-  EXPECT_EQ(a.Types, b.Types);
-  EXPECT_EQ(a.Offsets, b.Offsets);
-  EXPECT_EQ(a.Connectivity, b.Connectivity);
-}
-
-/// Everything the same: nodes (bit for bit), cells, boundaries in order with their names.
-void ExpectIdentical(const mf::NamedMesh& a, const mf::NamedMesh& b)
-{
-  EXPECT_EQ(a.Dimension, b.Dimension);
-  EXPECT_EQ(a.NodeIds, b.NodeIds);
-  ASSERT_EQ(a.Points.size(), b.Points.size());
-  EXPECT_EQ(std::memcmp(a.Points.data(), b.Points.data(), a.Points.size() * sizeof(double)), 0);
-  ExpectSameCells(a.Volume, b.Volume);
-  ASSERT_EQ(a.Boundaries.size(), b.Boundaries.size());
-  for (std::size_t k = 0; k < a.Boundaries.size(); ++k)
-  {
-    EXPECT_EQ(a.Boundaries[k].Name, b.Boundaries[k].Name);
-    ExpectSameCells(a.Boundaries[k].Faces, b.Boundaries[k].Faces);
-  }
-}
-
 /// The number of nodes of the gmsh types the hand-made files use.
 int GmshNodes(int type)
 {
@@ -192,38 +170,14 @@ TEST(MshReader22, EveryTestMeshReadsAsGmshReadsIt)
 {
   const fs::path dir = mt::FreshDirectory("dgmf-msh22-same");
   const std::string path = (dir / "m.msh").string();
-  int checked = 0;
-  for (bool binary : { false, true })
-  {
-    for (bool saveAll : { false, true })
+  const int checked = mt::ForEachTestMesh(2.2, path,
+    [&](bool binary)
     {
-      const mt::MshFlavour flavour{ 2.2, binary, saveAll };
-      for (int kind = 0; kind < 4; ++kind)
-      {
-        SCOPED_TRACE(
-          std::to_string(kind) + (binary ? " binary" : " ASCII") + (saveAll ? " SaveAll" : ""));
-        switch (kind)
-        {
-          case 0:
-            mt::WriteBoxWithHole(path, flavour);
-            break;
-          case 1:
-            mt::WriteRectangleWithHole(path, flavour);
-            break;
-          case 2:
-            mt::WriteRectangleWithHole(path, flavour, true); // an entity in two groups
-            break;
-          default:
-            mt::WritePrismAndPyramid(path, flavour); // two types in one entity
-        }
-        mf::NamedMesh mesh;
-        ASSERT_TRUE(mf::ReadMsh22(mt::Bytes(path), binary, mesh));
-        ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
-        ExpectIdentical(mf::ReadGmsh(path), mesh);
-        ++checked;
-      }
-    }
-  }
+      mf::NamedMesh mesh;
+      ASSERT_TRUE(mf::ReadMsh22(mt::Bytes(path), binary, mesh));
+      mt::ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
+      mt::ExpectIdentical(mf::ReadGmsh(path), mesh);
+    });
   EXPECT_EQ(checked, 16);
 }
 
@@ -260,7 +214,7 @@ TEST(MshReader22, WhatGmshsWriterNeverWritesIsReadAsGmshReadsIt)
       const std::string path = WriteFile(dir, "h.msh", bytes);
       mf::NamedMesh mesh;
       ASSERT_TRUE(mf::ReadMsh22(bytes, binary, mesh));
-      ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
+      mt::ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
       ++checked;
     }
   }
@@ -313,7 +267,7 @@ TEST(MshReader22, WhatItLeavesToGmshIsReadOrRefusedByGmsh)
     const std::string path = WriteFile(dir, "l.msh", file.second);
     try
     {
-      ExpectIdentical(mf::ReadGmsh(path), mf::ReadGmshWithGmsh(path));
+      mt::ExpectIdentical(mf::ReadGmsh(path), mf::ReadGmshWithGmsh(path));
     }
     catch (const mf::FileError&)
     {
@@ -346,38 +300,9 @@ TEST(MshReader22, RandomMutationsNeverReadOutsideTheFile)
     mt::WriteRectangleWithHole(path, { 2.2, binary, false });
     for (const std::string& bytes : { mt::Bytes(path), binary ? Binary(HandMade) : HandMade })
     {
-      std::size_t accepted = 0;
-      for (int trial = 0; trial < 400; ++trial)
-      {
-        std::string mutant = bytes;
-        for (int c = 0, changes = 1 + static_cast<int>(random() % 3); c < changes; ++c)
-        {
-          const std::size_t at = random() % mutant.size();
-          switch (random() % 3)
-          {
-            case 0:
-              mutant[at] = static_cast<char>(random());
-              break;
-            case 1:
-              mutant.erase(at, 1 + random() % 16);
-              break;
-            default:
-              mutant.resize(at);
-          }
-        }
-        mf::NamedMesh mesh;
-        if (mf::ReadMsh22(mutant, binary, mesh))
-        {
-          ++accepted;
-          try
-          {
-            mf::ValidateNamedMesh(mesh, "mutant.msh");
-          }
-          catch (const mf::FileError&)
-          {
-          }
-        }
-      }
+      const std::size_t accepted = mt::ReadMutants(bytes, random, 400,
+        [binary](const std::string& mutant, mf::NamedMesh& mesh)
+        { return mf::ReadMsh22(mutant, binary, mesh); });
       EXPECT_LT(accepted, 400u);
     }
   }

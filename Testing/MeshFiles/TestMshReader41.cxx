@@ -5,6 +5,7 @@
 
 #include "gmsh/GmshTestMeshes.h"
 #include "gmsh/MshTestFiles.h"
+#include "gmsh/SameMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -17,29 +18,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-void ExpectSameCells(const mf::Cells& a, const mf::Cells& b)
-{
-  EXPECT_EQ(a.Types, b.Types);
-  EXPECT_EQ(a.Offsets, b.Offsets);
-  EXPECT_EQ(a.Connectivity, b.Connectivity);
-}
-
-/// Everything the same: nodes (bit for bit), cells, boundaries in order with their names.
-void ExpectIdentical(const mf::NamedMesh& a, const mf::NamedMesh& b)
-{
-  EXPECT_EQ(a.Dimension, b.Dimension);
-  EXPECT_EQ(a.NodeIds, b.NodeIds);
-  ASSERT_EQ(a.Points.size(), b.Points.size());
-  EXPECT_EQ(std::memcmp(a.Points.data(), b.Points.data(), a.Points.size() * sizeof(double)), 0);
-  ExpectSameCells(a.Volume, b.Volume);
-  ASSERT_EQ(a.Boundaries.size(), b.Boundaries.size());
-  for (std::size_t k = 0; k < a.Boundaries.size(); ++k)
-  {
-    EXPECT_EQ(a.Boundaries[k].Name, b.Boundaries[k].Name);
-    ExpectSameCells(a.Boundaries[k].Faces, b.Boundaries[k].Faces);
-  }
-}
-
 bool ReadWithoutGmsh(const std::string& path, bool binary, mf::NamedMesh& mesh)
 {
   return mf::ReadMsh41(mt::Bytes(path), binary, mesh);
@@ -50,38 +28,14 @@ TEST(MshReader41, EveryTestMeshReadsAsGmshReadsIt)
 {
   const fs::path dir = mt::FreshDirectory("dgmf-msh41-same");
   const std::string path = (dir / "m.msh").string();
-  int checked = 0;
-  for (bool binary : { false, true })
-  {
-    for (bool saveAll : { false, true })
+  const int checked = mt::ForEachTestMesh(4.1, path,
+    [&](bool binary)
     {
-      const mt::MshFlavour flavour{ 4.1, binary, saveAll };
-      for (int kind = 0; kind < 4; ++kind)
-      {
-        SCOPED_TRACE(
-          std::to_string(kind) + (binary ? " binary" : " ASCII") + (saveAll ? " SaveAll" : ""));
-        switch (kind)
-        {
-          case 0:
-            mt::WriteBoxWithHole(path, flavour);
-            break;
-          case 1:
-            mt::WriteRectangleWithHole(path, flavour);
-            break;
-          case 2:
-            mt::WriteRectangleWithHole(path, flavour, true); // an entity in two groups
-            break;
-          default:
-            mt::WritePrismAndPyramid(path, flavour); // two types in one entity
-        }
-        mf::NamedMesh mesh;
-        ASSERT_TRUE(ReadWithoutGmsh(path, binary, mesh));
-        ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
-        ExpectIdentical(mf::ReadGmsh(path), mesh);
-        ++checked;
-      }
-    }
-  }
+      mf::NamedMesh mesh;
+      ASSERT_TRUE(ReadWithoutGmsh(path, binary, mesh));
+      mt::ExpectIdentical(mesh, mf::ReadGmshWithGmsh(path));
+      mt::ExpectIdentical(mf::ReadGmsh(path), mesh);
+    });
   EXPECT_EQ(checked, 16);
 }
 
@@ -143,39 +97,9 @@ TEST(MshReader41, RandomMutationsNeverReadOutsideTheFile)
   {
     const std::string path = (dir / "r.msh").string();
     mt::WriteRectangleWithHole(path, { 4.1, binary, false });
-    const std::string bytes = mt::Bytes(path);
-    std::size_t accepted = 0;
-    for (int trial = 0; trial < 400; ++trial)
-    {
-      std::string mutant = bytes;
-      for (int c = 0, changes = 1 + static_cast<int>(random() % 3); c < changes; ++c)
-      {
-        const std::size_t at = random() % mutant.size();
-        switch (random() % 3)
-        {
-          case 0:
-            mutant[at] = static_cast<char>(random());
-            break;
-          case 1:
-            mutant.erase(at, 1 + random() % 16);
-            break;
-          default:
-            mutant.resize(at);
-        }
-      }
-      mf::NamedMesh mesh;
-      if (mf::ReadMsh41(mutant, binary, mesh))
-      {
-        ++accepted;
-        try
-        {
-          mf::ValidateNamedMesh(mesh, "mutant.msh");
-        }
-        catch (const mf::FileError&)
-        {
-        }
-      }
-    }
+    const std::size_t accepted = mt::ReadMutants(mt::Bytes(path), random, 400,
+      [binary](const std::string& mutant, mf::NamedMesh& mesh)
+      { return mf::ReadMsh41(mutant, binary, mesh); });
     EXPECT_LT(accepted, 400u);
   }
 }

@@ -274,39 +274,30 @@ bool ReadMsh22(std::string_view file, bool binary, NamedMesh& mesh)
   }
   MshModel model;
   bool nodes = false, elements = false;
-  for (std::string_view name = NextSection(cursor); !name.empty(); name = NextSection(cursor))
+  const auto parsed = [](bool ok) { return ok ? SectionRead::Parsed : SectionRead::Refused; };
+  const bool walked = WalkSections(cursor,
+    [&](std::string_view name)
+    {
+      if (name == "PhysicalNames")
+      {
+        return parsed(ParsePhysicalNames(cursor, model));
+      }
+      if (name == "Nodes")
+      {
+        nodes = true;
+        return parsed(ParseNodes(cursor, binary, model));
+      }
+      if (name == "Elements")
+      {
+        elements = true;
+        return parsed(ParseElements(cursor, binary, model));
+      }
+      return name == "ParametricNodes" || name == "NOD" || name == "ELM" ? SectionRead::Refused
+                                                                         : SectionRead::Unknown;
+    });
+  if (!walked || !nodes || !elements)
   {
-    bool parsed = true;
-    if (name == "PhysicalNames")
-    {
-      parsed = ParsePhysicalNames(cursor, model);
-    }
-    else if (name == "Nodes")
-    {
-      parsed = ParseNodes(cursor, binary, model);
-      nodes = true;
-    }
-    else if (name == "Elements")
-    {
-      parsed = ParseElements(cursor, binary, model);
-      elements = true;
-    }
-    else if (name == "ParametricNodes" || name == "NOD" || name == "ELM")
-    {
-      return false;
-    }
-    else
-    {
-      parsed = SkipSection(cursor, name); // comments, periodicity, post-processing data
-    }
-    if (!parsed)
-    {
-      return false;
-    }
-  }
-  if (!OnlyBlanksLeft(cursor) || !nodes || !elements)
-  {
-    return false; // a line outside any section, or a section missing
+    return false;
   }
   Version2Rules rules;
   rules.DropUnusedNodes = true;

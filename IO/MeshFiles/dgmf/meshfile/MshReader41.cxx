@@ -185,44 +185,37 @@ bool ReadMsh41(std::string_view file, bool binary, NamedMesh& mesh)
   }
   MshModel model;
   bool entities = false, nodes = false, elements = false;
-  for (std::string_view name = NextSection(cursor); !name.empty(); name = NextSection(cursor))
+  const auto parsed = [](bool ok) { return ok ? SectionRead::Parsed : SectionRead::Refused; };
+  const bool walked = WalkSections(cursor,
+    [&](std::string_view name)
+    {
+      if (name == "PhysicalNames")
+      {
+        return parsed(ParsePhysicalNames(cursor, model));
+      }
+      if (name == "Entities")
+      {
+        const bool first = !entities;
+        entities = true;
+        return parsed(first && ParseEntities(cursor, binary, model));
+      }
+      if (name == "Nodes")
+      {
+        nodes = true;
+        return parsed(ParseNodes(cursor, binary, model));
+      }
+      if (name == "Elements")
+      {
+        elements = true;
+        return parsed(ParseElements(cursor, binary, model));
+      }
+      return name == "PartitionedEntities" || name == "GhostElements" || name == "Parametrizations"
+        ? SectionRead::Refused
+        : SectionRead::Unknown;
+    });
+  if (!walked || !entities || !nodes || !elements)
   {
-    bool parsed = true;
-    if (name == "PhysicalNames")
-    {
-      parsed = ParsePhysicalNames(cursor, model);
-    }
-    else if (name == "Entities")
-    {
-      parsed = !entities && ParseEntities(cursor, binary, model);
-      entities = true;
-    }
-    else if (name == "Nodes")
-    {
-      parsed = ParseNodes(cursor, binary, model);
-      nodes = true;
-    }
-    else if (name == "Elements")
-    {
-      parsed = ParseElements(cursor, binary, model);
-      elements = true;
-    }
-    else if (name == "PartitionedEntities" || name == "GhostElements" || name == "Parametrizations")
-    {
-      return false;
-    }
-    else
-    {
-      parsed = SkipSection(cursor, name); // comments, periodicity, post-processing data
-    }
-    if (!parsed)
-    {
-      return false;
-    }
-  }
-  if (!OnlyBlanksLeft(cursor) || !entities || !nodes || !elements)
-  {
-    return false; // a line outside any section, or a section missing
+    return false; // a section missing
   }
   return BuildMeshAsGmshDoes(model, Version2Rules(), mesh);
 }

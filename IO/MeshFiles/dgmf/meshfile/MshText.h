@@ -236,6 +236,35 @@ inline bool OnlyBlanksLeft(const Cursor& cursor)
   return true;
 }
 
+/// What a reader did with a section (WalkSections).
+enum class SectionRead
+{
+  Parsed,  ///< read to its $End line
+  Refused, ///< the file is left to gmsh
+  Unknown  ///< not the reader's: skipped to its $End line
+};
+
+/**
+ * Reads the sections after $MeshFormat to the end of the file: `read(name)` for each (the cursor
+ * after the "$name" line); an Unknown section is skipped to its $End line (comments, periodicity,
+ * post-processing data). False when a section is Refused or cannot be skipped, or when a line
+ * outside any section is left.
+ */
+template <typename Read>
+bool WalkSections(Cursor& cursor, Read read)
+{
+  for (std::string_view name = NextSection(cursor); !name.empty(); name = NextSection(cursor))
+  {
+    const SectionRead result = read(name);
+    if (result == SectionRead::Refused ||
+      (result == SectionRead::Unknown && !SkipSection(cursor, name)))
+    {
+      return false;
+    }
+  }
+  return OnlyBlanksLeft(cursor);
+}
+
 } // namespace msh
 } // namespace meshfile
 } // namespace dgmf
