@@ -315,6 +315,47 @@ TEST(ExodusFile, FloatCoordinatesStayFloat)
   ex_close(id);
 }
 
+TEST(ExodusFile, A2DMeshInA3DFileIsWrittenWithItsZAndOnlyAtZZero)
+{
+  // Quadrilaterals in a file of three coordinates: the write moves x and y and keeps the file's
+  // z (0); a file whose z is not 0 (which the reader refuses) is not written either.
+  const fs::path directory = WorkDirectory();
+  const fs::path source = directory / "flat.exo";
+  const fs::path target = directory / "flat_moved.exo";
+  ExodusContent c;
+  c.Dimension = 3;
+  c.BlockType = "QUAD4";
+  c.NodesPerElement = 4;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i)
+    {
+      c.X.push_back(i);
+      c.Y.push_back(j);
+    }
+  c.Z.assign(c.X.size(), 0.0);
+  c.Connectivity = { 1, 2, 5, 4, 2, 3, 6, 5 };
+  WriteExodus(source, c);
+  std::vector<double> moved = mf::ReadExodus(source.string()).Points;
+  for (std::size_t k = 0; k < moved.size(); ++k)
+  {
+    moved[k] = k % 3 == 2 ? 7.0 : moved[k] + 0.25; // a z given is not written in 2D
+  }
+  mf::WriteExodusWithPoints(source.string(), target.string(), moved.data(), moved.size() / 3);
+  const mf::NamedMesh written = mf::ReadExodus(target.string());
+  ASSERT_EQ(written.Points.size(), moved.size());
+  for (std::size_t k = 0; k < moved.size(); ++k)
+  {
+    EXPECT_EQ(written.Points[k], k % 3 == 2 ? 0.0 : moved[k]) << k;
+  }
+  c.Z[4] = 0.5;
+  WriteExodus(source, c);
+  fs::remove(target);
+  EXPECT_THROW(
+    mf::WriteExodusWithPoints(source.string(), target.string(), moved.data(), moved.size() / 3),
+    mf::FileError);
+  EXPECT_FALSE(fs::exists(target));
+}
+
 TEST(ExodusFile, AWrongPointCountOrANaNWritesNothing)
 {
   const fs::path directory = WorkDirectory();

@@ -167,6 +167,13 @@ NamedMesh ReadMesh(const CGNSHandle& file, ZoneLayout& layout)
 
   ZoneElements elements;
   elements.Read(file, layout);
+  std::size_t cellsAtMost = 0, nodesAtMost = 0;
+  for (const Section& section : elements.Sections)
+  {
+    cellsAtMost += section.Elements.Size();
+    nodesAtMost += section.Elements.Connectivity.size();
+  }
+  mesh.Volume.Reserve(cellsAtMost, nodesAtMost); // (no copy as the cells are added)
   for (const Section& section : elements.Sections)
   {
     const Cells& cells = section.Elements;
@@ -219,19 +226,26 @@ NamedMesh ReadCGNS(const std::string& path)
 static void WriteCGNSWithPointsInThisProcess(
   const std::string& source, const std::string& target, const double* points, std::size_t count)
 {
+  // What the write needs of the source: its zone's layout (the node count, the coordinates'
+  // names and types) and the cell dimension. A 2D mesh in a 3D base is read whole, which checks
+  // that its z, kept as it is, is 0.
   ZoneLayout layout;
-  NamedMesh mesh;
   {
     CGNSHandle file(source, CG_MODE_READ);
-    mesh = ReadMesh(file, layout);
+    layout = ReadLayout(file);
+    if (layout.CellDimension == 2 && layout.PhysicalDimension == 3)
+    {
+      ReadMesh(file, layout);
+    }
   }
-  if (count != mesh.NumberOfNodes())
+  const auto vertices = static_cast<std::size_t>(layout.Vertices);
+  if (count != vertices)
   {
     throw FileError(target + ": " + std::to_string(count) + " points given for the " +
-      std::to_string(mesh.NumberOfNodes()) + " nodes of " + source + "; nothing was written");
+      std::to_string(vertices) + " nodes of " + source + "; nothing was written");
   }
   // The coordinates written: x, y, and z in 3D (a 2D mesh keeps the file's z, 0, if it has one).
-  const std::size_t written = static_cast<std::size_t>(mesh.Dimension);
+  const std::size_t written = static_cast<std::size_t>(layout.CellDimension);
   std::vector<std::vector<double>> values(written, std::vector<double>(count));
   for (std::size_t k = 0; k < written; ++k)
   {

@@ -204,6 +204,7 @@ void ZoneElements::Read(const CGNSHandle& file, const ZoneLayout& layout)
         std::to_string(data.size()) + " entries");
     }
     std::int64_t cell[8];
+    section.Elements.Reserve(offsets.size() - 1, data.size());
     for (std::size_t e = 0; e + 1 < offsets.size(); ++e)
     {
       const cgsize_t begin = offsets[e], stop = offsets[e + 1];

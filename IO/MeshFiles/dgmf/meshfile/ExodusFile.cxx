@@ -171,57 +171,97 @@ std::uint8_t CellTypeOf(std::string type, std::int64_t nodes)
   return 0;
 }
 
-/// The element blocks of the mesh's dimension, as Volume; the dimension itself.
-void ReadElementBlocks(const ExodusHandle& file, const ex_init_params& sizes, NamedMesh& mesh)
+/// An element block's id, cell type and size (its header: no connectivity read).
+struct BlockHeader
+{
+  std::int64_t Id = 0;
+  std::string What; ///< "element block NAME"
+  std::uint8_t Type = 0;
+  std::int64_t Count = 0, Nodes = 0;
+};
+
+/**
+ * The headers of the non-empty element blocks, each a linear type, and the mesh's dimension (the
+ * highest of theirs: 2 or 3); throws FileError otherwise.
+ */
+std::vector<BlockHeader> ReadBlockHeaders(
+  const ExodusHandle& file, const ex_init_params& sizes, int& dimension)
 {
   std::vector<std::int64_t> ids;
   std::vector<std::string> names;
   ReadIdsAndNames(file, EX_ELEM_BLOCK, sizes.num_elem_blk, "block", ids, names);
+  std::vector<BlockHeader> headers;
+  dimension = 0;
+  for (std::size_t b = 0; b < ids.size(); ++b)
+  {
+    char type[MAX_STR_LENGTH + 1] = { 0 };
+    BlockHeader header;
+    header.Id = ids[b];
+    header.What = "element block " + names[b];
+    std::int64_t edges = 0, faces = 0, attributes = 0;
+    file.Check(ex_get_block(file.Id, EX_ELEM_BLOCK, ids[b], type, &header.Count, &header.Nodes,
+                 &edges, &faces, &attributes),
+      header.What);
+    if (header.Count == 0)
+    {
+      continue;
+    }
+    header.Type = CellTypeOf(type, header.Nodes);
+    if (header.Type == 0)
+    {
+      throw FileError(file.Path + ": " + header.What + " has elements of type " + type + " with " +
+        std::to_string(header.Nodes) +
+        " nodes; the linear types are read (tetrahedra, hexahedra, "
+        "wedges, pyramids, triangles, quadrilaterals)");
+    }
+    if (header.Count < 0 || header.Count > sizes.num_elem)
+    {
+      throw FileError(file.Path + ": " + header.What + " declares " + std::to_string(header.Count) +
+        " elements, the file " + std::to_string(sizes.num_elem));
+    }
+    dimension = std::max(dimension, DimensionOfCellType(header.Type));
+    headers.push_back(std::move(header));
+  }
+  if (dimension < 2)
+  {
+    throw FileError(file.Path + ": no element block of 2D or 3D elements");
+  }
+  return headers;
+}
+
+/// The element blocks of the mesh's dimension, as Volume; the dimension itself.
+void ReadElementBlocks(const ExodusHandle& file, const ex_init_params& sizes, NamedMesh& mesh)
+{
+  int dimension = 0;
+  const std::vector<BlockHeader> headers = ReadBlockHeaders(file, sizes, dimension);
   struct Block
   {
     std::uint8_t Type;
     std::vector<std::int64_t> Connectivity;
   };
   std::vector<Block> blocks;
-  int dimension = 0;
-  for (std::size_t b = 0; b < ids.size(); ++b)
+  for (const BlockHeader& header : headers)
   {
-    char type[MAX_STR_LENGTH + 1] = { 0 };
-    std::int64_t count = 0, nodes = 0, edges = 0, faces = 0, attributes = 0;
-    const std::string what = "element block " + names[b];
-    file.Check(ex_get_block(
-                 file.Id, EX_ELEM_BLOCK, ids[b], type, &count, &nodes, &edges, &faces, &attributes),
-      what);
-    if (count == 0)
-    {
-      continue;
-    }
-    const std::uint8_t cellType = CellTypeOf(type, nodes);
-    if (cellType == 0)
-    {
-      throw FileError(file.Path + ": " + what + " has elements of type " + type + " with " +
-        std::to_string(nodes) +
-        " nodes; the linear types are read (tetrahedra, hexahedra, "
-        "wedges, pyramids, triangles, quadrilaterals)");
-    }
-    if (count < 0 || count > sizes.num_elem)
-    {
-      throw FileError(file.Path + ": " + what + " declares " + std::to_string(count) +
-        " elements, the file " + std::to_string(sizes.num_elem));
-    }
-    Block block{ cellType, std::vector<std::int64_t>(static_cast<std::size_t>(count * nodes)) };
+    Block block{ header.Type,
+      std::vector<std::int64_t>(static_cast<std::size_t>(header.Count * header.Nodes)) };
     file.Check(
-      ex_get_conn(file.Id, EX_ELEM_BLOCK, ids[b], block.Connectivity.data(), nullptr, nullptr),
-      "the connectivity of " + what);
-    dimension = std::max(dimension, DimensionOfCellType(cellType));
+      ex_get_conn(file.Id, EX_ELEM_BLOCK, header.Id, block.Connectivity.data(), nullptr, nullptr),
+      "the connectivity of " + header.What);
     blocks.push_back(std::move(block));
-  }
-  if (dimension < 2)
-  {
-    throw FileError(file.Path + ": no element block of 2D or 3D elements");
   }
   mesh.Dimension = dimension;
   const auto nodeCount = static_cast<std::int64_t>(mesh.NumberOfNodes());
+  std::size_t volumeCells = 0, volumeNodes = 0;
+  for (const Block& block : blocks)
+  {
+    if (DimensionOfCellType(block.Type) == dimension)
+    {
+      volumeCells +=
+        block.Connectivity.size() / static_cast<std::size_t>(NodesOfCellType(block.Type));
+      volumeNodes += block.Connectivity.size();
+    }
+  }
+  mesh.Volume.Reserve(volumeCells, volumeNodes); // (no copy as the cells are added)
   for (const Block& block : blocks)
   {
     if (DimensionOfCellType(block.Type) != dimension)
@@ -419,14 +459,29 @@ NamedMesh ReadExodus(const std::string& path)
 static void WriteExodusWithPointsInThisProcess(
   const std::string& source, const std::string& target, const double* points, std::size_t count)
 {
-  const NamedMesh mesh = ReadExodusInThisProcess(source);
-  if (count != mesh.NumberOfNodes())
+  // What the write needs of the source: its node count and the mesh's dimension (the element
+  // blocks' headers, their connectivity not read), and a 2D mesh's z.
+  std::vector<double> z(count, 0.0);
+  int written = 0; // the coordinates given: a 2D mesh keeps the file's z (0)
   {
-    throw FileError(target + ": " + std::to_string(count) + " points given for the " +
-      std::to_string(mesh.NumberOfNodes()) + " nodes of " + source + "; nothing was written");
+    ExodusHandle file(source, EX_READ);
+    const ex_init_params sizes = ReadSizes(file);
+    if (count != static_cast<std::size_t>(sizes.num_nodes))
+    {
+      throw FileError(target + ": " + std::to_string(count) + " points given for the " +
+        std::to_string(sizes.num_nodes) + " nodes of " + source + "; nothing was written");
+    }
+    ReadBlockHeaders(file, sizes, written);
+    if (written == 2 && sizes.num_dim == 3 && count > 0)
+    {
+      file.Check(ex_get_coord(file.Id, nullptr, nullptr, z.data()), "the coordinates");
+      if (std::any_of(z.begin(), z.end(), [](double c) { return c != 0.0; }))
+      {
+        throw FileError(source + ": a mesh of 2D elements must lie in the plane z = 0");
+      }
+    }
   }
-  const int written = mesh.Dimension; // a 2D mesh keeps the file's z (0)
-  std::vector<double> x(count), y(count), z(count);
+  std::vector<double> x(count), y(count);
   for (std::size_t i = 0; i < count; ++i)
   {
     for (int c = 0; c < written; ++c)
@@ -439,7 +494,10 @@ static void WriteExodusWithPointsInThisProcess(
     }
     x[i] = points[3 * i];
     y[i] = points[3 * i + 1];
-    z[i] = written == 3 ? points[3 * i + 2] : mesh.Points[3 * i + 2];
+    if (written == 3)
+    {
+      z[i] = points[3 * i + 2];
+    }
   }
   WriteModifiedCopy(source, target,
     [&](const std::string& temporary)

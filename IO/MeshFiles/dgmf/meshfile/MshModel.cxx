@@ -121,9 +121,7 @@ void Reserve(const MshModel& model, const BlocksByEntity& blocks, int dimension,
       nodes += model.Blocks[b].Count * static_cast<std::size_t>(mapping.Nodes);
     }
   }
-  cells.Types.reserve(count);
-  cells.Offsets.reserve(count + 1);
-  cells.Connectivity.reserve(nodes);
+  cells.Reserve(count, nodes);
 }
 
 /// Whether an entity of `dimension` is in several physical groups.

@@ -40,6 +40,13 @@ struct Cells
   std::vector<std::int64_t> Connectivity;
 
   std::size_t Size() const { return this->Types.size(); }
+  /// Room for `cells` more cells of `nodes` nodes in all, so that adding them copies nothing.
+  void Reserve(std::size_t cells, std::size_t nodes)
+  {
+    this->Types.reserve(this->Types.size() + cells);
+    this->Offsets.reserve(this->Offsets.size() + cells);
+    this->Connectivity.reserve(this->Connectivity.size() + nodes);
+  }
   void Add(std::uint8_t type, const std::int64_t* nodes, std::size_t count)
   {
     this->Types.push_back(type);
