@@ -153,6 +153,24 @@ std::string ErrorOf(const fs::path& path)
 {
   return dgmf_test::ErrorOf(mf::ReadExodus, path);
 }
+
+/// Two quadrilaterals side by side at z = 0 (nodes 1..6), in a file of `dimension` coordinates.
+ExodusContent TwoQuadrilaterals(int dimension)
+{
+  ExodusContent c;
+  c.Dimension = dimension;
+  c.BlockType = "QUAD4";
+  c.NodesPerElement = 4;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i)
+    {
+      c.X.push_back(i);
+      c.Y.push_back(j);
+    }
+  c.Z.assign(c.X.size(), 0.0);
+  c.Connectivity = { 1, 2, 5, 4, 2, 3, 6, 5 };
+  return c;
+}
 } // namespace
 
 TEST(ExodusFile, ReadsNodesInFileOrderCellsAndSetsAsNamedBoundaries)
@@ -219,18 +237,7 @@ TEST(ExodusFile, NodeIdsAreTheNodeNumberMap)
 TEST(ExodusFile, ReadsA2DMeshWithEdgeSideSets)
 {
   const fs::path file = WorkDirectory() / "quads.exo";
-  ExodusContent c;
-  c.Dimension = 2;
-  c.BlockType = "QUAD4";
-  c.NodesPerElement = 4;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 3; ++i)
-    {
-      c.X.push_back(i);
-      c.Y.push_back(j);
-    }
-  c.Z.assign(c.X.size(), 0.0);
-  c.Connectivity = { 1, 2, 5, 4, 2, 3, 6, 5 };
+  ExodusContent c = TwoQuadrilaterals(2);
   c.SideSets.push_back({ 1, "left", { 1 }, { 4 } });
   c.SideSets.push_back({ 2, "bottom", { 1, 2 }, { 1, 1 } });
   WriteExodus(file, c);
@@ -322,18 +329,7 @@ TEST(ExodusFile, A2DMeshInA3DFileIsWrittenWithItsZAndOnlyAtZZero)
   const fs::path directory = WorkDirectory();
   const fs::path source = directory / "flat.exo";
   const fs::path target = directory / "flat_moved.exo";
-  ExodusContent c;
-  c.Dimension = 3;
-  c.BlockType = "QUAD4";
-  c.NodesPerElement = 4;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 3; ++i)
-    {
-      c.X.push_back(i);
-      c.Y.push_back(j);
-    }
-  c.Z.assign(c.X.size(), 0.0);
-  c.Connectivity = { 1, 2, 5, 4, 2, 3, 6, 5 };
+  ExodusContent c = TwoQuadrilaterals(3);
   WriteExodus(source, c);
   std::vector<double> moved = mf::ReadExodus(source.string()).Points;
   for (std::size_t k = 0; k < moved.size(); ++k)
