@@ -113,7 +113,11 @@ void Reserve(const MshModel& model, const BlocksByEntity& blocks, int dimension,
   for (const int entity : entities)
   {
     const auto found = blocks.find({ dimension, entity });
-    for (std::size_t b : found == blocks.end() ? std::vector<std::size_t>() : found->second)
+    if (found == blocks.end())
+    {
+      continue;
+    }
+    for (const std::size_t b : found->second)
     {
       CellMapping mapping;
       MapGmshType(model.Blocks[b].Type, mapping);
@@ -132,23 +136,22 @@ bool AnEntityInSeveralGroups(const MshModel& model, int dimension)
 }
 
 /**
- * Keeps only the nodes some element uses (`tags` sorted, `points` theirs); false when an element
- * node is not a node. Nothing is copied when every node is used.
+ * Keeps only the nodes some element uses (`tags` sorted, `index` theirs, the mesh's nodes the
+ * same); false when an element node is not a node. Nothing is copied, and `index` stays, when
+ * every node is used.
  */
-bool DropUnusedNodes(const MshModel& model, std::vector<std::size_t>& tags, NamedMesh& mesh)
+bool DropUnusedNodes(
+  const MshModel& model, std::vector<std::size_t>& tags, NodeIndex& index, NamedMesh& mesh)
 {
   std::vector<char> used(tags.size(), 0);
+  for (const std::uint64_t tag : model.ElementNodes)
   {
-    const NodeIndex index(tags);
-    for (const std::uint64_t tag : model.ElementNodes)
+    const std::int64_t k = index.Find(static_cast<std::size_t>(tag));
+    if (k < 0)
     {
-      const std::int64_t k = index.Find(static_cast<std::size_t>(tag));
-      if (k < 0)
-      {
-        return false;
-      }
-      used[static_cast<std::size_t>(k)] = 1;
+      return false;
     }
+    used[static_cast<std::size_t>(k)] = 1;
   }
   if (std::find(used.begin(), used.end(), 0) == used.end())
   {
@@ -168,6 +171,7 @@ bool DropUnusedNodes(const MshModel& model, std::vector<std::size_t>& tags, Name
   tags.resize(kept);
   mesh.NodeIds.resize(kept);
   mesh.Points.resize(3 * kept);
+  index = NodeIndex(tags);
   return true;
 }
 } // namespace
@@ -222,7 +226,8 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
     mesh.NodeIds[k] = static_cast<std::int64_t>(tags[k]);
     std::copy_n(&model.Coordinates[3 * order[k]], 3, &mesh.Points[3 * k]);
   }
-  if (rules.DropUnusedNodes && !DropUnusedNodes(model, tags, mesh))
+  NodeIndex index(tags);
+  if (rules.DropUnusedNodes && !DropUnusedNodes(model, tags, index, mesh))
   {
     return false;
   }
@@ -257,7 +262,6 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
       }
     }
   }
-  const NodeIndex index(tags);
   const int dimension = mesh.Dimension;
   SeenCells seen;
   SeenCells* volumeSeen =

@@ -58,12 +58,6 @@ struct NodeRecords
   }
 };
 
-/// The "$EndNodes" line after the section's data.
-bool EndsTheSection(Cursor& cursor)
-{
-  return cursor.Token() == "$EndNodes";
-}
-
 /// Three coordinate tokens at the cursor; records where the first starts.
 bool AsciiCoordinates(Cursor& cursor, std::uint64_t tag, NodeRecords& records)
 {
@@ -93,7 +87,7 @@ bool ParseAscii22(Cursor& cursor, NodeRecords& records)
       return false;
     }
   }
-  return EndsTheSection(cursor);
+  return EndsSection(cursor, "Nodes");
 }
 
 bool ParseAscii41(Cursor& cursor, NodeRecords& records)
@@ -133,7 +127,7 @@ bool ParseAscii41(Cursor& cursor, NodeRecords& records)
       }
     }
   }
-  return records.Tags.size() == count && EndsTheSection(cursor);
+  return records.Tags.size() == count && EndsSection(cursor, "Nodes");
 }
 
 bool ParseBinary22(Cursor& cursor, NodeRecords& records)
@@ -161,7 +155,7 @@ bool ParseBinary22(Cursor& cursor, NodeRecords& records)
     records.At.push_back(cursor.At);
     cursor.Skip(3 * sizeof(double));
   }
-  return EndsTheSection(cursor);
+  return EndsSection(cursor, "Nodes");
 }
 
 bool ParseBinary41(Cursor& cursor, NodeRecords& records)
@@ -197,7 +191,7 @@ bool ParseBinary41(Cursor& cursor, NodeRecords& records)
       records.At.push_back(coordinatesAt + k * 3 * sizeof(double));
     }
   }
-  return records.Tags.size() == count && EndsTheSection(cursor);
+  return records.Tags.size() == count && EndsSection(cursor, "Nodes");
 }
 
 /// Whether a binary file's "1" after its format line is in this machine's byte order.

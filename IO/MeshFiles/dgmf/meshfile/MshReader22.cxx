@@ -19,17 +19,11 @@ namespace
 {
 using namespace msh;
 
-/// The count on the line after a section's name (a text line in binary files too).
-bool CountLine(Cursor& cursor, std::uint64_t& count)
-{
-  return ToInteger(cursor.Line(), count);
-}
-
 /// $Nodes: `tag x y z` per node (binary: a 4-byte tag and three doubles).
 bool ParseNodes(Cursor& cursor, bool binary, MshModel& model)
 {
   std::uint64_t count = 0;
-  if (!model.NodeTags.empty() || !CountLine(cursor, count) ||
+  if (!model.NodeTags.empty() || !ToInteger(cursor.Line(), count) ||
     count > (cursor.File.size() - cursor.At) / (binary ? 28 : 8))
   {
     return false; // a second $Nodes, or more nodes than the file can hold
@@ -255,7 +249,7 @@ bool ParseBinaryElements(Cursor& cursor, std::uint64_t count, MshModel& model)
 bool ParseElements(Cursor& cursor, bool binary, MshModel& model)
 {
   std::uint64_t count = 0;
-  if (!model.Blocks.empty() || !CountLine(cursor, count))
+  if (!model.Blocks.empty() || !ToInteger(cursor.Line(), count))
   {
     return false;
   }
