@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
+#include <utility>
 
 namespace mf = dgmf::meshfile;
 
@@ -79,9 +80,77 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
     EXPECT_EQ(back.Boundaries[b].Name, mesh.Boundaries[b].Name);
     EXPECT_EQ(back.Boundaries[b].Faces.Connectivity, mesh.Boundaries[b].Faces.Connectivity);
   }
-  // Bytes cut short are refused, not read past.
+  // The length announced is the length written, and every array starts 8-byte aligned (the
+  // names of 4, 0 and 9 characters are padded), so the caller reads them in place.
   const std::string bytes = mf::MeshToBytes(mesh);
-  EXPECT_NE(FailureOf([&]() { mf::MeshFromBytes(bytes.substr(0, bytes.size() - 1)); }), "");
+  EXPECT_EQ(bytes.size(), mf::MeshBytes(mesh));
+  EXPECT_EQ(bytes.size() % 8, 0u);
+  // Bytes cut short anywhere are refused, not read past (each cut in a buffer of its own, so
+  // that the sanitizers see a read past its end).
+  for (std::size_t length = 0; length < bytes.size(); ++length)
+  {
+    const std::string cut = bytes.substr(0, length);
+    EXPECT_NE(FailureOf([&]() { mf::MeshFromBytes(cut); }), "") << length;
+  }
+}
+
+TEST(LibraryIsolation, AnAnswerWrittenInPlaceIsMappedWholeWithoutAPipe)
+{
+  constexpr std::size_t size = 24u << 20;
+  const mf::IsolatedAnswer answer = mf::RunIsolatedInPlace("mesh.test", "testlib", 60.0, 0,
+    [&](const mf::AnswerRoom& room)
+    {
+      char* bytes = room(size);
+      for (std::size_t k = 0; k < size; ++k)
+      {
+        bytes[k] = static_cast<char>((k * 2654435761u) >> 13);
+      }
+    });
+  ASSERT_EQ(answer.Size(), size);
+  std::size_t wrong = 0;
+  for (std::size_t k = 0; k < size; ++k)
+  {
+    wrong += answer.Data()[k] != static_cast<char>((k * 2654435761u) >> 13) ? 1 : 0;
+  }
+  EXPECT_EQ(wrong, 0u);
+  // A moved answer keeps its bytes; the one moved from has none.
+  mf::IsolatedAnswer moved;
+  moved = mf::RunIsolatedInPlace(
+    "mesh.test", "testlib", 60.0, 0, [](const mf::AnswerRoom& room) { room(3)[2] = 'z'; });
+  mf::IsolatedAnswer kept(std::move(moved));
+  ASSERT_EQ(kept.Size(), 3u);
+  EXPECT_EQ(kept.Data()[2], 'z');
+  EXPECT_EQ(moved.Size(), 0u);
+  // No room asked for: an empty answer.
+  const mf::IsolatedAnswer none =
+    mf::RunIsolatedInPlace("mesh.test", "testlib", 60.0, 0, [](const mf::AnswerRoom&) {});
+  EXPECT_EQ(none.Size(), 0u);
+  EXPECT_EQ(none.Data(), nullptr);
+}
+
+TEST(LibraryIsolation, AnAnswerRoomBeyondTheChildsMemoryIsAFileError)
+{
+  EXPECT_EQ(FailureOf(
+              []()
+              {
+                mf::RunIsolatedInPlace("mesh.test", "testlib", 60.0, 0,
+                  [](const mf::AnswerRoom& room)
+                  {
+                    room(8);
+                    room(8);
+                  });
+              }),
+    "mesh.test: a child's answer room is asked for twice");
+#if !defined(__SANITIZE_ADDRESS__) // (no address-space budget under AddressSanitizer)
+  const std::string tooLarge = FailureOf(
+    []()
+    {
+      mf::RunIsolatedInPlace("mesh.test", "testlib", 60.0, std::size_t(64) << 20,
+        [](const mf::AnswerRoom& room) { room(std::size_t(8) << 30); });
+    });
+  EXPECT_EQ(tooLarge.rfind("mesh.test: no memory for an answer of 8589934592 bytes", 0), 0u)
+    << tooLarge;
+#endif
 }
 
 TEST(LibraryIsolation, EachWayOfFailingIsAFileErrorNamingTheFileOrTheLibrary)

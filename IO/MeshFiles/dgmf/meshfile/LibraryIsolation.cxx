@@ -6,7 +6,9 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +18,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace dgmf
@@ -47,11 +51,6 @@ void WriteAll(int fd, const std::string& bytes)
 /// body's length in bytes (8, native order: the same program on both ends).
 constexpr std::size_t AnswerHeaderBytes = 1 + sizeof(std::uint64_t);
 
-/// The bytes read from the child at most per call, and the pipe's capacity asked for: a 62 MB
-/// answer went through the default 64 KiB pipe at about 0.65 GB/s, a switch between the two
-/// processes every 64 KiB.
-constexpr std::size_t PipeBytes = std::size_t(1) << 20;
-
 /// Limits this process's address space to what it has now plus `budget` bytes.
 void LimitAddressSpace(std::size_t budget)
 {
@@ -68,8 +67,34 @@ void LimitAddressSpace(std::size_t budget)
   }
 }
 
+/// The child's answer room: the memory file, grown to the size asked for and mapped.
+char* TakeRoom(int memory, std::size_t bytes, std::size_t& taken)
+{
+  if (taken != 0 || bytes == 0)
+  {
+    if (taken != 0)
+    {
+      throw std::logic_error("a child's answer room is asked for twice");
+    }
+    return nullptr;
+  }
+  if (::ftruncate(memory, static_cast<off_t>(bytes)) != 0)
+  {
+    throw std::runtime_error(
+      "no memory for an answer of " + std::to_string(bytes) + " bytes: " + std::strerror(errno));
+  }
+  void* room = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED, memory, 0);
+  if (room == MAP_FAILED)
+  {
+    throw std::runtime_error(
+      "no memory for an answer of " + std::to_string(bytes) + " bytes: " + std::strerror(errno));
+  }
+  taken = bytes;
+  return static_cast<char*>(room);
+}
+
 [[noreturn]] void ChildMain(
-  int fd, std::size_t memoryBudget, const std::function<std::string()>& work)
+  int fd, int memory, std::size_t memoryBudget, const std::function<void(const AnswerRoom&)>& work)
 {
 #if !defined(__SANITIZE_ADDRESS__)
   // (AddressSanitizer maps its own memory as it goes: no limit under it.)
@@ -81,33 +106,33 @@ void LimitAddressSpace(std::size_t budget)
   (void)memoryBudget;
 #endif
   char kind = 'O';
-  std::string body;
+  std::string message; // the error's; an answer is in the memory file
+  std::size_t taken = 0;
   try
   {
-    body = work();
+    work([&](std::size_t bytes) { return TakeRoom(memory, bytes, taken); });
   }
   catch (const FileError& e)
   {
     kind = 'E';
-    body = e.what();
+    message = e.what();
   }
   catch (const std::exception& e)
   {
     kind = 'X';
-    body = e.what();
+    message = e.what();
   }
   catch (...)
   {
     kind = 'X';
-    body = "unknown exception";
+    message = "unknown exception";
   }
-  // The answer's header (AnswerHeaderBytes: the kind, then the body's length), then the body as
-  // it is: the caller reads it straight into a string of that length.
-  const std::uint64_t length = body.size();
+  // The header (AnswerHeaderBytes: the kind, then a length: the answer's bytes in the memory
+  // file, or the message's that follows it in the pipe).
+  const std::uint64_t length = kind == 'O' ? taken : message.size();
   std::string header(1, kind);
   header.append(reinterpret_cast<const char*>(&length), sizeof(length));
-  WriteAll(fd, header);
-  WriteAll(fd, body);
+  WriteAll(fd, header + message);
   ::close(fd);
   ::_exit(0);
 }
@@ -134,8 +159,16 @@ std::size_t MemoryBudget(const std::string& path)
 NamedMesh ReadMeshIsolated(
   const std::string& path, const std::string& library, const std::function<NamedMesh()>& read)
 {
-  return MeshFromBytes(RunIsolated(
-    path, library, TimeAllowed(path), MemoryBudget(path), [&]() { return MeshToBytes(read()); }));
+  // The child writes the mesh's bytes straight into the shared answer; the caller reads them
+  // from the mapping into its mesh: one copy each way, none through a pipe.
+  const IsolatedAnswer answer =
+    RunIsolatedInPlace(path, library, TimeAllowed(path), MemoryBudget(path),
+      [&](const AnswerRoom& room)
+      {
+        const NamedMesh mesh = read();
+        MeshToBytes(mesh, room(MeshBytes(mesh)));
+      });
+  return MeshFromBytes(answer.Data(), answer.Size());
 }
 
 void WriteIsolated(const std::string& source, const std::string& target, const std::string& library,
@@ -143,12 +176,8 @@ void WriteIsolated(const std::string& source, const std::string& target, const s
 {
   try
   {
-    RunIsolated(source, library, TimeAllowed(source), MemoryBudget(source),
-      [&]()
-      {
-        write();
-        return std::string();
-      });
+    RunIsolatedInPlace(source, library, TimeAllowed(source), MemoryBudget(source),
+      [&](const AnswerRoom&) { write(); });
   }
   catch (const FileError&)
   {
@@ -161,6 +190,108 @@ void WriteIsolated(const std::string& source, const std::string& target, const s
 std::string RunIsolated(const std::string& file, const std::string& library, double seconds,
   std::size_t memoryBudget, const std::function<std::string()>& work)
 {
+  const IsolatedAnswer answer = RunIsolatedInPlace(file, library, seconds, memoryBudget,
+    [&](const AnswerRoom& room)
+    {
+      const std::string bytes = work();
+      if (!bytes.empty())
+      {
+        std::memcpy(room(bytes.size()), bytes.data(), bytes.size());
+      }
+    });
+  return std::string(answer.Data(), answer.Size());
+}
+
+IsolatedAnswer::IsolatedAnswer(const char* data, std::size_t size)
+  : Bytes(data)
+  , Length(size)
+{
+}
+
+IsolatedAnswer::IsolatedAnswer(IsolatedAnswer&& other) noexcept
+  : Bytes(std::exchange(other.Bytes, nullptr))
+  , Length(std::exchange(other.Length, 0))
+{
+}
+
+IsolatedAnswer& IsolatedAnswer::operator=(IsolatedAnswer&& other) noexcept
+{
+  if (this != &other)
+  {
+    IsolatedAnswer gone(std::move(*this));
+    this->Bytes = std::exchange(other.Bytes, nullptr);
+    this->Length = std::exchange(other.Length, 0);
+  }
+  return *this;
+}
+
+IsolatedAnswer::~IsolatedAnswer()
+{
+  if (this->Bytes != nullptr)
+  {
+    ::munmap(const_cast<char*>(this->Bytes), this->Length);
+  }
+}
+
+namespace
+{
+/// Closes a descriptor when it goes.
+struct Descriptor
+{
+  int Fd = -1;
+  explicit Descriptor(int fd)
+    : Fd(fd)
+  {
+  }
+  Descriptor(const Descriptor&) = delete;
+  Descriptor& operator=(const Descriptor&) = delete;
+  ~Descriptor() { this->Close(); }
+  void Close()
+  {
+    if (this->Fd >= 0)
+    {
+      ::close(this->Fd);
+      this->Fd = -1;
+    }
+  }
+};
+
+/// The `length` bytes of the answer in `memory`, mapped; a FileError if the child wrote fewer.
+IsolatedAnswer MapAnswer(
+  int memory, std::uint64_t length, const std::string& file, const std::string& library)
+{
+  struct stat status
+  {
+  };
+  if (::fstat(memory, &status) != 0 || status.st_size < 0 ||
+    static_cast<std::uint64_t>(status.st_size) < length)
+  {
+    throw FileError(file + ": " + library + "'s process gave a broken answer (" +
+      std::to_string(status.st_size) + " bytes of " + std::to_string(length) + ")");
+  }
+  if (length == 0)
+  {
+    return IsolatedAnswer();
+  }
+  void* bytes = ::mmap(nullptr, static_cast<std::size_t>(length), PROT_READ, MAP_SHARED, memory, 0);
+  if (bytes == MAP_FAILED)
+  {
+    throw FileError(file + ": cannot map " + library + "'s answer of " + std::to_string(length) +
+      " bytes: " + std::strerror(errno));
+  }
+  return IsolatedAnswer(static_cast<const char*>(bytes), static_cast<std::size_t>(length));
+}
+} // namespace
+
+IsolatedAnswer RunIsolatedInPlace(const std::string& file, const std::string& library,
+  double seconds, std::size_t memoryBudget, const std::function<void(const AnswerRoom&)>& work)
+{
+  const Descriptor memory(::memfd_create("dgmf-answer", MFD_CLOEXEC));
+  if (memory.Fd < 0)
+  {
+    throw FileError(
+      file + ": cannot make room for " + library + "'s answer: " + std::strerror(errno));
+  }
   int fds[2];
   if (::pipe(fds) != 0)
   {
@@ -176,17 +307,17 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
   if (child == 0)
   {
     ::close(fds[0]);
-    ChildMain(fds[1], memoryBudget, work);
+    ChildMain(fds[1], memory.Fd, memoryBudget, work);
   }
   ::close(fds[1]);
-#ifdef F_SETPIPE_SZ
-  ::fcntl(fds[0], F_SETPIPE_SZ, static_cast<int>(PipeBytes)); // the default where refused
-#endif
+  Descriptor pipe(fds[0]);
+  // The header, then an error's message (an answer's bytes are in the memory file).
   char header[AnswerHeaderBytes];
   std::size_t headerRead = 0;
-  std::string body;
-  std::size_t bodyRead = 0;
-  bool tooLong = false; // bytes past the announced length, or a length beyond any answer
+  std::uint64_t length = 0;
+  std::string message;
+  std::size_t messageRead = 0;
+  bool tooLong = false; // bytes past the announced length, or a length beyond any message
   bool timedOut = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   char excess[4096];
@@ -199,7 +330,7 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
       timedOut = true;
       break;
     }
-    pollfd p{ fds[0], POLLIN, 0 };
+    pollfd p{ pipe.Fd, POLLIN, 0 };
     const int ready = ::poll(&p, 1, static_cast<int>(std::min(left * 1000.0, 1000.0)) + 1);
     if (ready < 0 && errno == EINTR)
     {
@@ -209,7 +340,6 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
     {
       continue;
     }
-    // The header first, then the body in place, then anything more into `excess` (an error).
     char* into = excess;
     std::size_t room = sizeof(excess);
     if (headerRead < AnswerHeaderBytes)
@@ -217,12 +347,12 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
       into = header + headerRead;
       room = AnswerHeaderBytes - headerRead;
     }
-    else if (bodyRead < body.size())
+    else if (messageRead < message.size())
     {
-      into = body.data() + bodyRead;
-      room = std::min(body.size() - bodyRead, PipeBytes);
+      into = message.data() + messageRead;
+      room = message.size() - messageRead;
     }
-    const ssize_t got = ::read(fds[0], into, room);
+    const ssize_t got = ::read(pipe.Fd, into, room);
     if (got < 0 && errno == EINTR)
     {
       continue;
@@ -237,22 +367,24 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
       headerRead += count;
       if (headerRead == AnswerHeaderBytes)
       {
-        std::uint64_t length = 0;
         std::memcpy(&length, header + 1, sizeof(length));
-        try
+        if (header[0] != 'O')
         {
-          body.resize(static_cast<std::size_t>(length));
-        }
-        catch (const std::exception&) // a length no answer can have (std::length_error, bad_alloc)
-        {
-          tooLong = true;
-          break;
+          try
+          {
+            message.resize(static_cast<std::size_t>(length));
+          }
+          catch (const std::exception&) // a length no message can have
+          {
+            tooLong = true;
+            break;
+          }
         }
       }
     }
-    else if (bodyRead < body.size())
+    else if (messageRead < message.size())
     {
-      bodyRead += count;
+      messageRead += count;
     }
     else
     {
@@ -260,7 +392,7 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
       break;
     }
   }
-  ::close(fds[0]);
+  pipe.Close();
   if (timedOut || tooLong)
   {
     ::kill(child, SIGKILL);
@@ -283,132 +415,174 @@ std::string RunIsolated(const std::string& file, const std::string& library, dou
   {
     throw FileError(file + ": " + library + "'s process ended without an answer");
   }
-  if (tooLong || bodyRead < body.size())
+  if (tooLong || messageRead < message.size())
   {
     throw FileError(file + ": " + library + "'s process gave a broken answer (" +
-      std::to_string(bodyRead) + " bytes of " + std::to_string(body.size()) +
+      std::to_string(messageRead) + " bytes of " + std::to_string(message.size()) +
       (tooLong ? ", or more than it announced)" : ")"));
   }
   if (header[0] == 'E')
   {
-    throw FileError(body);
+    throw FileError(message);
   }
   if (header[0] != 'O')
   {
-    throw FileError(file + ": " + body);
+    throw FileError(file + ": " + message);
   }
-  return body;
+  return MapAnswer(memory.Fd, length, file, library);
 }
 
 namespace
 {
-/// Appends the bytes of `values` after their count.
-template <typename T>
-void Put(std::string& out, const std::vector<T>& values)
+/// Every array of a mesh's bytes starts at a multiple of this from the start.
+constexpr std::size_t kAlignment = 8;
+
+constexpr std::size_t Padded(std::size_t bytes)
 {
-  const std::uint64_t count = values.size();
-  out.append(reinterpret_cast<const char*>(&count), sizeof(count));
-  if (!values.empty())
-  {
-    out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-  }
+  return (bytes + kAlignment - 1) / kAlignment * kAlignment;
 }
 
+/// The bytes Put writes for `count` values of T: the count, the values, padding.
 template <typename T>
-void Get(const std::string& in, std::size_t& at, std::vector<T>& values)
+constexpr std::size_t BytesOf(std::size_t count)
 {
-  std::uint64_t count = 0;
-  if (in.size() - at < sizeof(count))
-  {
-    throw FileError("short answer from a reader's process");
-  }
-  std::memcpy(&count, in.data() + at, sizeof(count));
-  at += sizeof(count);
-  if ((in.size() - at) / sizeof(T) < count)
-  {
-    throw FileError("short answer from a reader's process");
-  }
-  values.resize(count);
+  return sizeof(std::uint64_t) + Padded(count * sizeof(T));
+}
+
+/// Writes `count` values after their count at `out`, and pads them; moves `out` past them.
+template <typename T>
+void Put(char*& out, const T* values, std::size_t count)
+{
+  static_assert(alignof(T) <= kAlignment, "a mesh array's values must fit the alignment");
+  const std::uint64_t number = count;
+  std::memcpy(out, &number, sizeof(number));
+  out += sizeof(number);
   if (count > 0) // an empty vector's data() may be null, which memcpy does not take
   {
-    std::memcpy(values.data(), in.data() + at, count * sizeof(T));
+    std::memcpy(out, values, count * sizeof(T));
   }
-  at += count * sizeof(T);
+  std::memset(out + count * sizeof(T), 0, Padded(count * sizeof(T)) - count * sizeof(T));
+  out += Padded(count * sizeof(T));
 }
 
-/// The bytes Put appends for `values`.
 template <typename T>
-std::size_t BytesOf(const std::vector<T>& values)
+void Put(char*& out, const std::vector<T>& values)
 {
-  return sizeof(std::uint64_t) + values.size() * sizeof(T);
+  Put(out, values.data(), values.size());
+}
+
+/// Reads what Put wrote at `at` into `values`, copied once (no zero-filling first).
+template <typename T>
+void Get(const char* in, std::size_t size, std::size_t& at, std::vector<T>& values)
+{
+  std::uint64_t count = 0;
+  if (size - at < sizeof(count))
+  {
+    throw FileError("short answer from a reader's process");
+  }
+  std::memcpy(&count, in + at, sizeof(count));
+  at += sizeof(count);
+  if ((size - at) / sizeof(T) < count || size - at < Padded(count * sizeof(T)))
+  {
+    throw FileError("short answer from a reader's process");
+  }
+  // `in` is aligned and `at` a multiple of kAlignment: the values are T's in place.
+  const T* first = reinterpret_cast<const T*>(in + at);
+  values.assign(first, first + count);
+  at += Padded(count * sizeof(T));
 }
 
 std::size_t BytesOfCells(const Cells& cells)
 {
-  return BytesOf(cells.Types) + BytesOf(cells.Offsets) + BytesOf(cells.Connectivity);
+  return BytesOf<std::uint8_t>(cells.Types.size()) + BytesOf<std::int64_t>(cells.Offsets.size()) +
+    BytesOf<std::int64_t>(cells.Connectivity.size());
 }
 
-void PutCells(std::string& out, const Cells& cells)
+void PutCells(char*& out, const Cells& cells)
 {
   Put(out, cells.Types);
   Put(out, cells.Offsets);
   Put(out, cells.Connectivity);
 }
 
-void GetCells(const std::string& in, std::size_t& at, Cells& cells)
+void GetCells(const char* in, std::size_t size, std::size_t& at, Cells& cells)
 {
-  Get(in, at, cells.Types);
-  Get(in, at, cells.Offsets);
-  Get(in, at, cells.Connectivity);
+  Get(in, size, at, cells.Types);
+  Get(in, size, at, cells.Offsets);
+  Get(in, size, at, cells.Connectivity);
 }
 
 } // namespace
 
-std::string MeshToBytes(const NamedMesh& mesh)
+std::size_t MeshBytes(const NamedMesh& mesh)
 {
-  std::string out;
-  // Its exact size first: no copy as it grows (a volume of 1.3M tetrahedra is 60 MB).
-  const std::size_t number = sizeof(std::uint64_t) + sizeof(std::int64_t); // a count, a value
-  std::size_t bytes =
-    number + BytesOf(mesh.Points) + BytesOf(mesh.NodeIds) + BytesOfCells(mesh.Volume) + number;
+  const std::size_t number = BytesOf<std::int64_t>(1);
+  std::size_t bytes = number + BytesOf<double>(mesh.Points.size()) +
+    BytesOf<std::int64_t>(mesh.NodeIds.size()) + BytesOfCells(mesh.Volume) + number;
   for (const NamedBoundary& boundary : mesh.Boundaries)
   {
-    bytes += sizeof(std::uint64_t) + boundary.Name.size() + BytesOfCells(boundary.Faces);
+    bytes += BytesOf<char>(boundary.Name.size()) + BytesOfCells(boundary.Faces);
   }
-  out.reserve(bytes);
-  Put(out, std::vector<std::int64_t>{ mesh.Dimension });
+  return bytes;
+}
+
+void MeshToBytes(const NamedMesh& mesh, char* out)
+{
+  const std::int64_t dimension = mesh.Dimension;
+  Put(out, &dimension, 1);
   Put(out, mesh.Points);
   Put(out, mesh.NodeIds);
   PutCells(out, mesh.Volume);
-  Put(out, std::vector<std::int64_t>{ static_cast<std::int64_t>(mesh.Boundaries.size()) });
+  const auto boundaries = static_cast<std::int64_t>(mesh.Boundaries.size());
+  Put(out, &boundaries, 1);
   for (const NamedBoundary& boundary : mesh.Boundaries)
   {
-    Put(out, std::vector<char>(boundary.Name.begin(), boundary.Name.end()));
+    Put(out, boundary.Name.data(), boundary.Name.size());
     PutCells(out, boundary.Faces);
   }
+}
+
+std::string MeshToBytes(const NamedMesh& mesh)
+{
+  std::string out(MeshBytes(mesh), '\0');
+  MeshToBytes(mesh, out.data());
   return out;
 }
 
-NamedMesh MeshFromBytes(const std::string& in)
+NamedMesh MeshFromBytes(const char* in, std::size_t size)
 {
+  if (reinterpret_cast<std::uintptr_t>(in) % kAlignment != 0)
+  {
+    throw std::invalid_argument("MeshFromBytes: the bytes are not 8-byte aligned");
+  }
   NamedMesh mesh;
   std::size_t at = 0;
   std::vector<std::int64_t> number;
-  Get(in, at, number);
+  Get(in, size, at, number);
   mesh.Dimension = number.empty() ? 0 : static_cast<int>(number[0]);
-  Get(in, at, mesh.Points);
-  Get(in, at, mesh.NodeIds);
-  GetCells(in, at, mesh.Volume);
-  Get(in, at, number);
-  mesh.Boundaries.resize(number.empty() ? 0 : static_cast<std::size_t>(number[0]));
+  Get(in, size, at, mesh.Points);
+  Get(in, size, at, mesh.NodeIds);
+  GetCells(in, size, at, mesh.Volume);
+  Get(in, size, at, number);
+  const std::size_t boundaries = number.empty() ? 0 : static_cast<std::size_t>(number[0]);
+  if (boundaries > size / (5 * sizeof(std::uint64_t)))
+  {
+    throw FileError("short answer from a reader's process"); // (each takes at least 5 counts)
+  }
+  mesh.Boundaries.resize(boundaries);
   for (NamedBoundary& boundary : mesh.Boundaries)
   {
     std::vector<char> name;
-    Get(in, at, name);
+    Get(in, size, at, name);
     boundary.Name.assign(name.begin(), name.end());
-    GetCells(in, at, boundary.Faces);
+    GetCells(in, size, at, boundary.Faces);
   }
   return mesh;
+}
+
+NamedMesh MeshFromBytes(const std::string& bytes)
+{
+  return MeshFromBytes(bytes.data(), bytes.size());
 }
 
 } // namespace meshfile

@@ -11,6 +11,7 @@
 
 #include "dgmf/meshfile/NamedMesh.h"
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -19,14 +20,49 @@ namespace dgmf
 namespace meshfile
 {
 
+/// What a child's work writes its answer into: `room(bytes)` gives that many writable bytes
+/// (asked for once), shared with the caller's process without a copy. Throws FileError when the
+/// memory cannot be had.
+using AnswerRoom = std::function<char*(std::size_t bytes)>;
+
+/// A child's answer as the caller sees it: the bytes the child wrote into its AnswerRoom, mapped
+/// read-only (no copy), until this object goes.
+class IsolatedAnswer
+{
+public:
+  IsolatedAnswer() = default;
+  IsolatedAnswer(const char* data, std::size_t size);
+  IsolatedAnswer(IsolatedAnswer&& other) noexcept;
+  IsolatedAnswer& operator=(IsolatedAnswer&& other) noexcept;
+  IsolatedAnswer(const IsolatedAnswer&) = delete;
+  IsolatedAnswer& operator=(const IsolatedAnswer&) = delete;
+  ~IsolatedAnswer();
+
+  const char* Data() const { return this->Bytes; }
+  std::size_t Size() const { return this->Length; }
+
+private:
+  const char* Bytes = nullptr;
+  std::size_t Length = 0;
+};
+
 /**
- * Runs `work` in a forked child and returns the bytes it returned. A FileError thrown by `work`
- * is thrown again here with its message; a child that dies, exits without an answer, or takes
- * longer than `seconds` (then killed) is a FileError("<file>: <library> ..."). With
- * `memoryBudget` > 0 the child's address space may grow by that many bytes only (RLIMIT_AS), so
- * that an allocation a corrupted count drives fails instead of taking the machine's memory. The
- * child leaves with _exit: no atexit handlers, no flushing of the parent's streams.
+ * Runs `work` in a forked child and returns the bytes it wrote into its AnswerRoom (none if it
+ * asked for no room). The answer travels in a memory file shared by the two processes
+ * (`memfd_create`): the caller maps it, nothing is copied through a pipe; only the answer's kind
+ * and length (or an error's message) go through one. A FileError thrown by `work` is thrown
+ * again here with its message; a child that dies, exits without an answer, announces more bytes
+ * than it wrote, or takes longer than `seconds` (then killed) is a FileError("<file>: <library>
+ * ..."). With `memoryBudget` > 0 the child's address space may grow by that many bytes only
+ * (RLIMIT_AS), so that an allocation a corrupted count drives fails instead of taking the
+ * machine's memory. The child leaves with _exit: no atexit handlers, no flushing of the parent's
+ * streams.
  */
+IsolatedAnswer RunIsolatedInPlace(const std::string& file, const std::string& library,
+  double seconds, std::size_t memoryBudget, const std::function<void(const AnswerRoom&)>& work);
+
+/// RunIsolatedInPlace for a `work` that returns its answer as a string (copied into the room),
+/// the answer copied into a string.
 std::string RunIsolated(const std::string& file, const std::string& library, double seconds,
   std::size_t memoryBudget, const std::function<std::string()>& work);
 
@@ -50,9 +86,14 @@ NamedMesh ReadMeshIsolated(
 void WriteIsolated(const std::string& source, const std::string& target, const std::string& library,
   const std::function<void()>& write);
 
-/// A mesh as bytes, from gmsh's process to the caller's (MeshFromBytes reads them back; it throws
-/// FileError on a short answer).
+/// A mesh as bytes, from a library's process to the caller's (MeshFromBytes reads them back; it
+/// throws FileError on a short answer). Each array starts at a multiple of 8 bytes from the
+/// start. MeshBytes is the length MeshToBytes writes into `out`.
+std::size_t MeshBytes(const NamedMesh& mesh);
+void MeshToBytes(const NamedMesh& mesh, char* out);
 std::string MeshToBytes(const NamedMesh& mesh);
+/// `bytes` must be 8-byte aligned (a mapping's, or a string's heap buffer).
+NamedMesh MeshFromBytes(const char* bytes, std::size_t size);
 NamedMesh MeshFromBytes(const std::string& bytes);
 
 } // namespace meshfile
