@@ -329,7 +329,7 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
     }
   }
   std::vector<std::size_t> counts(nodes.size() + 1, 0);
-  std::vector<ActiveCell>& cells = repairer.Cells;
+  std::vector<std::size_t> activeCells; // the cells with a free node, then made once (no regrowth)
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
     const auto range = nodesOf(c);
@@ -345,10 +345,16 @@ RepairReport RepairCells(const CellMesh& mesh, const double* originalPoints, dou
     }
     if (active)
     {
-      // Only covered cells: a free node has no uncovered cell (its nodes are fixed).
-      cells.emplace_back();
-      repairer.InitializeCell(cells.back(), c, quality[c], inverted[c] != 0);
+      activeCells.push_back(c);
     }
+  }
+  std::vector<ActiveCell>& cells = repairer.Cells;
+  cells.resize(activeCells.size());
+  for (std::size_t a = 0; a < activeCells.size(); ++a)
+  {
+    // Only covered cells: a free node has no uncovered cell (its nodes are fixed).
+    const std::size_t c = activeCells[a];
+    repairer.InitializeCell(cells[a], c, quality[c], inverted[c] != 0);
   }
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {

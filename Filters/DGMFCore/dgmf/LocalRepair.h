@@ -32,10 +32,11 @@ struct RepairParameters
   /// Most Gauss-Seidel passes over the free nodes (0: only count the bad cells).
   int MaximumPasses = 20;
   /**
-   * Stop early when the passes left cannot remove the bad cells: before each pass from the
-   * fourth on, when the bad cells' count, falling by as many cells a pass as in the last pass,
-   * would not reach 0 within the passes left (or did not fall at all), while it is still at
-   * least a tenth of the count before the first pass. For callers that have something better
+   * Stop early when the passes left cannot remove the bad cells: after the first pass, when it
+   * left at least as many bad cells as it found; before each pass from the fourth on, when the
+   * bad cells' count, falling by as many cells a pass as in the last pass, would not reach 0
+   * within the passes left (or did not fall at all), while it is still at least a tenth of the
+   * count before the first pass. For callers that have something better
    * to do with such a step (sub-steps: halve it); off by default (every pass is run). See
    * GaveUp.
    */

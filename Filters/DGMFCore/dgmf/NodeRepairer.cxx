@@ -94,6 +94,16 @@ std::size_t NodeRepairer::Run(
     {
       break;
     }
+    if (giveUp && pass == 1 && bad >= first)
+    {
+      // The first pass (where the untangling does most of its work) left as many bad cells as
+      // it found, or more: a step this far is beyond the repair.
+      if (gaveUp != nullptr)
+      {
+        *gaveUp = true;
+      }
+      break;
+    }
     if (giveUp && pass >= 3)
     {
       // Passes needed at the last pass's rate (the count falls by about as many cells a pass
@@ -317,6 +327,7 @@ void NodeRepairer::PrepareForms(const FreeNode& node)
 void NodeRepairer::CollectEdgeEnds()
 {
   this->EdgeEnds.clear();
+  this->EdgeEnds.reserve(3 * this->Incident.size()); // 3 edges a corner in 3D cells (no regrowth)
   for (FreeNode& node : this->Nodes)
   {
     node.EdgeBegin = this->EdgeEnds.size();
