@@ -3,6 +3,8 @@
 #include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/NamedMesh.h"
 
+#include "NamedMeshTestHelpers.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,22 +13,11 @@
 namespace mf = dgmf::meshfile;
 namespace fs = std::filesystem;
 
-namespace
-{
-fs::path FreshDirectory(const std::string& name)
-{
-  const fs::path directory = fs::temp_directory_path() / name;
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
-} // namespace
-
 TEST(FileReplacement, PiecesOfEverySizeGiveTheFileTheyMakeTogether)
 {
   // Small pieces that fill the 1 MiB buffer across its end, pieces larger than the buffer (written
   // past it), empty pieces: the file is their concatenation, byte for byte.
-  const fs::path dir = FreshDirectory("dgmf-file-replacement-pieces");
+  const fs::path dir = dgmf_test::WorkDirectory("file-replacement");
   const std::string target = (dir / "out.txt").string();
   std::mt19937 random(7);
   std::string expected;
@@ -65,7 +56,7 @@ TEST(FileReplacement, PiecesOfEverySizeGiveTheFileTheyMakeTogether)
 
 TEST(FileReplacement, AFailureWhileWritingLeavesTheTargetAsItWas)
 {
-  const fs::path dir = FreshDirectory("dgmf-file-replacement-failure");
+  const fs::path dir = dgmf_test::WorkDirectory("file-replacement");
   const std::string target = (dir / "out.txt").string();
   mf::WriteFileAtomically(target, (dir / ".out.tmp").string(), std::string("before"));
   const std::string big(std::size_t(3) << 20, 'x');

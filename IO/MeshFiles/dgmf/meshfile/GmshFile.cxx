@@ -5,6 +5,7 @@
 #include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/LibraryIsolation.h"
+#include "dgmf/meshfile/MappedFile.h"
 #include "dgmf/meshfile/MshHeader.h"
 #include "dgmf/meshfile/MshNodes.h"
 #include "dgmf/meshfile/MshReader22.h"
@@ -59,9 +60,10 @@ NamedMesh ReadGmsh(const std::string& path)
   const bool version22 = std::fabs(format.Version - 2.2) < 1e-9;
   if (version41 || version22)
   {
-    const std::string bytes = ReadFileBytes(path);
+    const MappedFile file(path);
     NamedMesh mesh;
-    if (version41 ? ReadMsh41(bytes, format.Binary, mesh) : ReadMsh22(bytes, format.Binary, mesh))
+    if (version41 ? ReadMsh41(file.Bytes(), format.Binary, mesh)
+                  : ReadMsh22(file.Bytes(), format.Binary, mesh))
     {
       ValidateNamedMesh(mesh, path);
       return mesh;

@@ -1,6 +1,7 @@
 #include "dgmf/meshfile/SU2File.h"
 
 #include "dgmf/meshfile/FileReplacement.h"
+#include "dgmf/meshfile/MappedFile.h"
 #include "dgmf/meshfile/SU2Text.h"
 
 #include <algorithm>
@@ -39,7 +40,7 @@ struct ParsedFile
 class SU2Parser
 {
 public:
-  SU2Parser(const std::string& path, const std::string& text)
+  SU2Parser(const std::string& path, std::string_view text)
     : Path(path)
     , Reader(path, text)
   {
@@ -409,15 +410,14 @@ void SU2Parser::CheckNodeIndices(const Cells& cells, const std::vector<std::size
   }
 }
 
-/// The bytes of the file `path`.
-std::string ReadWholeFile(const std::string& path)
+/// Refuses a directory by name (before its bytes are asked for).
+void RefuseDirectory(const std::string& path)
 {
   std::error_code error;
   if (fs::is_directory(path, error))
   {
     throw FileError(path + ": is a directory, not an SU2 file");
   }
-  return ReadFileBytes(path);
 }
 
 /// Writes `value` with 17 significant digits (reads back as the same double; no locale) into
@@ -445,13 +445,13 @@ struct LastParsed
 std::mutex LastParsedMutex;
 LastParsed TheLastParsed; ///< guarded by LastParsedMutex
 
-std::size_t HashOf(const std::string& text)
+std::size_t HashOf(std::string_view text)
 {
   return std::hash<std::string_view>()(text);
 }
 
 /// The dimension and point lines of `text` (from the last read when it had these bytes).
-LastParsed PointsOf(const std::string& path, const std::string& text)
+LastParsed PointsOf(const std::string& path, std::string_view text)
 {
   const std::size_t hash = HashOf(text);
   {
@@ -469,7 +469,9 @@ LastParsed PointsOf(const std::string& path, const std::string& text)
 
 NamedMesh ReadSU2(const std::string& path)
 {
-  const std::string text = ReadWholeFile(path);
+  RefuseDirectory(path);
+  const MappedFile file(path);
+  const std::string_view text = file.Bytes();
   ParsedFile parsed = SU2Parser(path, text).Parse();
   const std::size_t hash = HashOf(text);
   const std::lock_guard<std::mutex> lock(LastParsedMutex);
@@ -480,7 +482,9 @@ NamedMesh ReadSU2(const std::string& path)
 void WriteSU2WithPoints(
   const std::string& source, const std::string& target, const double* points, std::size_t count)
 {
-  const std::string text = ReadWholeFile(source);
+  RefuseDirectory(source);
+  const MappedFile file(source);
+  const std::string_view text = file.Bytes();
   const LastParsed parsed = PointsOf(source, text);
   const std::size_t expected = parsed.PointLineBegins.size();
   if (count != expected || points == nullptr)
@@ -512,7 +516,7 @@ void WriteSU2WithPoints(
       {
         const std::size_t begin = parsed.PointLineBegins[k];
         const std::size_t end = std::min(text.find('\n', begin), text.size());
-        const Tokens tokens = Split(std::string_view(text).substr(begin, end - begin));
+        const Tokens tokens = Split(text.substr(begin, end - begin));
         for (std::size_t c = 0; c < dimension; ++c)
         {
           const std::size_t at = static_cast<std::size_t>(tokens.Items[c].data() - text.data());

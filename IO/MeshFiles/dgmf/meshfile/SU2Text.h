@@ -126,7 +126,7 @@ inline bool ToNumber(std::string_view token, T& value)
 class LineReader
 {
 public:
-  LineReader(const std::string& path, const std::string& text)
+  LineReader(const std::string& path, std::string_view text)
     : Path(path)
     , Text(text)
   {
@@ -188,7 +188,7 @@ public:
 
 private:
   const std::string& Path;
-  const std::string& Text;
+  std::string_view Text;
   std::size_t At = 0;
   std::size_t Number = 0;
 };
