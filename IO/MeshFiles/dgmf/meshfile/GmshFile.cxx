@@ -105,10 +105,12 @@ void WriteGmshWithPoints(
   const fs::path temporary = MshTemporaryBeside(target);
   // Versions 2.2 and 4.1 without parametric nodes: the source's own bytes with the coordinates
   // replaced (MshNodes.h), every other byte kept, without gmsh. Any other file through gmsh.
-  std::string bytes = ReadFileBytes(source);
-  if (WriteMshWithMovedNodes(bytes, format, points, count, target, temporary.string()))
   {
-    return;
+    const MappedFile file(source);
+    if (WriteMshWithMovedNodes(file.Bytes(), format, points, count, target, temporary.string()))
+    {
+      return;
+    }
   }
   const GmshModule gmsh = LoadGmshModule(source);
   try

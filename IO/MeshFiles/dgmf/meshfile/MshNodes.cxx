@@ -268,6 +268,23 @@ void PatchBinary(std::string& bytes, const Replacement& plan, const double* poin
   }
 }
 
+/// A binary file appended to `append(data, size)` in pieces: its bytes as they are, each node's
+/// three doubles from `points` (the records are in file order).
+template <typename Append>
+void WriteBinary(
+  std::string_view file, const Replacement& plan, const double* points, Append append)
+{
+  std::size_t copied = 0;
+  for (std::size_t r = 0; r < plan.Rank.size(); ++r)
+  {
+    const std::size_t at = plan.Records.At[r];
+    append(file.data() + copied, at - copied);
+    append(reinterpret_cast<const char*>(points + 3 * plan.Rank[r]), 3 * sizeof(double));
+    copied = at + 3 * sizeof(double);
+  }
+  append(file.data() + copied, file.size() - copied);
+}
+
 /**
  * An ASCII file appended to `append(data, size)` in pieces: the text between the coordinates as
  * it is, each coordinate written anew as the shortest decimal that reads back as the same double.
@@ -315,25 +332,26 @@ bool ReplaceMshNodeCoordinates(
   return true;
 }
 
-bool WriteMshWithMovedNodes(std::string& bytes, const MshFormat& format, const double* points,
+bool WriteMshWithMovedNodes(std::string_view file, const MshFormat& format, const double* points,
   std::size_t count, const std::string& target, const std::string& temporary)
 {
   Replacement plan;
-  if (!PlanReplacement(bytes, format, count, plan))
+  if (!PlanReplacement(file, format, count, plan))
   {
     return false;
-  }
-  if (format.Binary)
-  {
-    PatchBinary(bytes, plan, points);
-    WriteFileAtomically(target, temporary, bytes);
-    return true;
   }
   WriteFileAtomically(target, temporary,
     [&](BufferedOutput& out)
     {
-      WriteAscii(bytes, plan, points,
-        [&out](const char* data, std::size_t size) { out.Append(data, size); });
+      const auto append = [&out](const char* data, std::size_t size) { out.Append(data, size); };
+      if (format.Binary)
+      {
+        WriteBinary(file, plan, points, append);
+      }
+      else
+      {
+        WriteAscii(file, plan, points, append);
+      }
     });
   return true;
 }

@@ -34,12 +34,13 @@ bool ReplaceMshNodeCoordinates(
   std::string& bytes, const MshFormat& format, const double* points, std::size_t count);
 
 /**
- * ReplaceMshNodeCoordinates written to `target` through `temporary` (WriteFileAtomically,
- * FileReplacement.h): a binary file's bytes patched where they are, an ASCII file's text written
- * in pieces, never whole in memory. False, with nothing written and `bytes` unchanged, for a file
- * ReplaceMshNodeCoordinates cannot rewrite; throws FileError when the file cannot be written.
+ * What ReplaceMshNodeCoordinates makes of `file` (the source's bytes, a mapping as a rule), written
+ * to `target` through `temporary` (WriteFileAtomically, FileReplacement.h) in pieces, never whole
+ * in memory: the bytes between the coordinates as they are, the coordinates from `points`. False,
+ * with nothing written, for a file ReplaceMshNodeCoordinates cannot rewrite; throws FileError when
+ * the file cannot be written.
  */
-bool WriteMshWithMovedNodes(std::string& bytes, const MshFormat& format, const double* points,
+bool WriteMshWithMovedNodes(std::string_view file, const MshFormat& format, const double* points,
   std::size_t count, const std::string& target, const std::string& temporary);
 
 } // namespace meshfile
