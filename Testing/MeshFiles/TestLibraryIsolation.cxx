@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <functional>
 #include <signal.h>
@@ -11,6 +12,7 @@
 #include <string>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 namespace mf = dgmf::meshfile;
 
@@ -85,6 +87,14 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
   const std::string bytes = mf::MeshToBytes(mesh);
   EXPECT_EQ(bytes.size(), mf::MeshBytes(mesh));
   EXPECT_EQ(bytes.size() % 8, 0u);
+  // Bytes that are not 8-byte aligned are read too (from an aligned copy).
+  std::vector<char> shifted(bytes.size() + 1);
+  std::copy(bytes.begin(), bytes.end(), shifted.begin() + 1);
+  const mf::NamedMesh unaligned = mf::MeshFromBytes(shifted.data() + 1, bytes.size());
+  EXPECT_EQ(unaligned.Points, mesh.Points);
+  EXPECT_EQ(unaligned.Volume.Connectivity, mesh.Volume.Connectivity);
+  ASSERT_EQ(unaligned.Boundaries.size(), 3u);
+  EXPECT_EQ(unaligned.Boundaries[2].Name, "far field");
   // Bytes cut short anywhere are refused, not read past (each cut in a buffer of its own, so
   // that the sanitizers see a read past its end).
   for (std::size_t length = 0; length < bytes.size(); ++length)

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 namespace mf = dgmf::meshfile;
 namespace fs = std::filesystem;
@@ -59,11 +60,18 @@ TEST(MappedFile, WhatCannotBeMappedIsReadAndWhatCannotBeReadIsAFileError)
   const mf::MappedFile device("/dev/null");
   EXPECT_FALSE(device.IsMapped());
   EXPECT_EQ(device.Bytes().size(), 0u);
-  // A named pipe's bytes, read as a stream (written by a child of the shell).
+  // A named pipe's bytes, read as a stream (written by a thread: each side's open waits for the
+  // other's).
   const fs::path fifo = dir / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  ASSERT_EQ(std::system(("printf 'pipe bytes' > '" + fifo.string() + "' &").c_str()), 0);
+  std::thread writer(
+    [&fifo]()
+    {
+      std::ofstream out(fifo, std::ios::binary);
+      out << "pipe bytes";
+    });
   const mf::MappedFile piped(fifo.string());
+  writer.join();
   EXPECT_FALSE(piped.IsMapped());
   EXPECT_EQ(std::string(piped.Bytes()), "pipe bytes");
   // Missing: the reader's error.

@@ -33,7 +33,7 @@ struct RepairParameters
   int MaximumPasses = 20;
   /**
    * Stop early when the passes left cannot remove the bad cells: after the first pass, when it
-   * left at least as many bad cells as it found; before each pass from the fourth on, when the
+   * left more bad cells than it found; before each pass from the fourth on, when the
    * bad cells' count, falling by as many cells a pass as in the last pass, would not reach 0
    * within the passes left (or did not fall at all), while it is still at least a tenth of the
    * count before the first pass. For callers that have something better

@@ -94,10 +94,10 @@ std::size_t NodeRepairer::Run(
     {
       break;
     }
-    if (giveUp && pass == 1 && bad >= first)
+    if (giveUp && pass == 1 && bad > first)
     {
-      // The first pass (where the untangling does most of its work) left as many bad cells as
-      // it found, or more: a step this far is beyond the repair.
+      // The first pass (where the untangling does most of its work) left more bad cells than it
+      // found: a step this far is beyond the repair.
       if (gaveUp != nullptr)
       {
         *gaveUp = true;

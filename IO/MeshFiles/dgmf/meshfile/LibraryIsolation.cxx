@@ -255,32 +255,6 @@ struct Descriptor
     }
   }
 };
-
-/// The `length` bytes of the answer in `memory`, mapped; a FileError if the child wrote fewer.
-IsolatedAnswer MapAnswer(
-  int memory, std::uint64_t length, const std::string& file, const std::string& library)
-{
-  struct stat status
-  {
-  };
-  if (::fstat(memory, &status) != 0 || status.st_size < 0 ||
-    static_cast<std::uint64_t>(status.st_size) < length)
-  {
-    throw FileError(file + ": " + library + "'s process gave a broken answer (" +
-      std::to_string(status.st_size) + " bytes of " + std::to_string(length) + ")");
-  }
-  if (length == 0)
-  {
-    return IsolatedAnswer();
-  }
-  void* bytes = ::mmap(nullptr, static_cast<std::size_t>(length), PROT_READ, MAP_SHARED, memory, 0);
-  if (bytes == MAP_FAILED)
-  {
-    throw FileError(file + ": cannot map " + library + "'s answer of " + std::to_string(length) +
-      " bytes: " + std::strerror(errno));
-  }
-  return IsolatedAnswer(static_cast<const char*>(bytes), static_cast<std::size_t>(length));
-}
 } // namespace
 
 IsolatedAnswer RunIsolatedInPlace(const std::string& file, const std::string& library,
@@ -429,7 +403,32 @@ IsolatedAnswer RunIsolatedInPlace(const std::string& file, const std::string& li
   {
     throw FileError(file + ": " + message);
   }
-  return MapAnswer(memory.Fd, length, file, library);
+  return MapIsolatedAnswer(memory.Fd, length, file, library);
+}
+
+IsolatedAnswer MapIsolatedAnswer(
+  int memory, std::uint64_t length, const std::string& file, const std::string& library)
+{
+  struct stat status
+  {
+  };
+  if (::fstat(memory, &status) != 0 || status.st_size < 0 ||
+    static_cast<std::uint64_t>(status.st_size) < length)
+  {
+    throw FileError(file + ": " + library + "'s process gave a broken answer (" +
+      std::to_string(status.st_size) + " bytes of " + std::to_string(length) + ")");
+  }
+  if (length == 0)
+  {
+    return IsolatedAnswer();
+  }
+  void* bytes = ::mmap(nullptr, static_cast<std::size_t>(length), PROT_READ, MAP_SHARED, memory, 0);
+  if (bytes == MAP_FAILED)
+  {
+    throw FileError(file + ": cannot map " + library + "'s answer of " + std::to_string(length) +
+      " bytes: " + std::strerror(errno));
+  }
+  return IsolatedAnswer(static_cast<const char*>(bytes), static_cast<std::size_t>(length));
 }
 
 namespace
@@ -553,7 +552,14 @@ NamedMesh MeshFromBytes(const char* in, std::size_t size)
 {
   if (reinterpret_cast<std::uintptr_t>(in) % kAlignment != 0)
   {
-    throw std::invalid_argument("MeshFromBytes: the bytes are not 8-byte aligned");
+    // Bytes not 8-byte aligned (a short string's own buffer in some standard libraries): read
+    // from an aligned copy.
+    std::vector<std::uint64_t> aligned((size + kAlignment - 1) / kAlignment);
+    if (size > 0)
+    {
+      std::memcpy(aligned.data(), in, size);
+    }
+    return MeshFromBytes(reinterpret_cast<const char*>(aligned.data()), size);
   }
   NamedMesh mesh;
   std::size_t at = 0;
@@ -565,9 +571,9 @@ NamedMesh MeshFromBytes(const char* in, std::size_t size)
   GetCells(in, size, at, mesh.Volume);
   Get(in, size, at, number);
   const std::size_t boundaries = number.empty() ? 0 : static_cast<std::size_t>(number[0]);
-  if (boundaries > size / (5 * sizeof(std::uint64_t)))
+  if (boundaries > size / (4 * sizeof(std::uint64_t)))
   {
-    throw FileError("short answer from a reader's process"); // (each takes at least 5 counts)
+    throw FileError("short answer from a reader's process"); // (each takes at least 4 counts)
   }
   mesh.Boundaries.resize(boundaries);
   for (NamedBoundary& boundary : mesh.Boundaries)

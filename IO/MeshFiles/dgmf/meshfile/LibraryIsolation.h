@@ -12,6 +12,7 @@
 #include "dgmf/meshfile/NamedMesh.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -21,8 +22,8 @@ namespace meshfile
 {
 
 /// What a child's work writes its answer into: `room(bytes)` gives that many writable bytes
-/// (asked for once), shared with the caller's process without a copy. Throws FileError when the
-/// memory cannot be had.
+/// (asked for once), shared with the caller's process without a copy. Throws when the memory
+/// cannot be had, or when asked twice (the caller then gets FileError("<file>: <why>")).
 using AnswerRoom = std::function<char*(std::size_t bytes)>;
 
 /// A child's answer as the caller sees it: the bytes the child wrote into its AnswerRoom, mapped
@@ -31,7 +32,6 @@ class IsolatedAnswer
 {
 public:
   IsolatedAnswer() = default;
-  IsolatedAnswer(const char* data, std::size_t size);
   IsolatedAnswer(IsolatedAnswer&& other) noexcept;
   IsolatedAnswer& operator=(IsolatedAnswer&& other) noexcept;
   IsolatedAnswer(const IsolatedAnswer&) = delete;
@@ -42,9 +42,19 @@ public:
   std::size_t Size() const { return this->Length; }
 
 private:
+  friend IsolatedAnswer MapIsolatedAnswer(
+    int memory, std::uint64_t length, const std::string& file, const std::string& library);
+  /// Takes a mapping of `size` bytes (unmapped when this goes).
+  IsolatedAnswer(const char* data, std::size_t size);
+
   const char* Bytes = nullptr;
   std::size_t Length = 0;
 };
+
+/// The first `length` bytes of the memory file `memory`, mapped (RunIsolatedInPlace's last step);
+/// FileError("<file>: <library>'s process gave a broken answer ...") if it holds fewer.
+IsolatedAnswer MapIsolatedAnswer(
+  int memory, std::uint64_t length, const std::string& file, const std::string& library);
 
 /**
  * Runs `work` in a forked child and returns the bytes it wrote into its AnswerRoom (none if it
@@ -92,7 +102,8 @@ void WriteIsolated(const std::string& source, const std::string& target, const s
 std::size_t MeshBytes(const NamedMesh& mesh);
 void MeshToBytes(const NamedMesh& mesh, char* out);
 std::string MeshToBytes(const NamedMesh& mesh);
-/// `bytes` must be 8-byte aligned (a mapping's, or a string's heap buffer).
+/// Read in place when `bytes` is 8-byte aligned (a mapping's, a string's heap buffer), from an
+/// aligned copy otherwise.
 NamedMesh MeshFromBytes(const char* bytes, std::size_t size);
 NamedMesh MeshFromBytes(const std::string& bytes);
 

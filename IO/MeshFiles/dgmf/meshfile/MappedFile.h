@@ -15,13 +15,14 @@ namespace meshfile
 {
 
 /**
- * The bytes of a file, read-only, while this object lives. A regular file is mapped (`mmap`): its
- * pages come from the page cache without a copy or zero-filled memory of the reader's own (a
- * 61 MB .msh file's read: 1.02 - 1.08 -> 0.73 - 0.81 s on this project's machine). Anything that
- * cannot be mapped (an empty file, a named pipe, a device, a file system without `mmap`) is
- * read from the same descriptor into memory of its own. A file truncated by another program while
- * it is mapped (a mesher saving over it) is beyond what a mapping survives: the process gets SIGBUS
- * on the lost pages. A file replaced by a rename keeps the bytes it had.
+ * The bytes of a file, read-only, while this object lives. A regular file on a local file system
+ * (ext4, xfs, btrfs, tmpfs, overlayfs, f2fs, zfs) is mapped (`mmap`): its pages come from the page
+ * cache without a copy or zero-filled memory of the reader's own (a 61 MB .msh file's read: 1.02 -
+ * 1.08 -> 0.73 - 0.81 s on this project's machine). Anything else (an empty file, a named pipe, a
+ * device, a network or FUSE file system, whose I/O errors must stay errors) is read from the same
+ * descriptor into memory of its own. What a mapping cannot survive: the file truncated by another
+ * program while it is mapped (a mesher saving over it in place) or a disk's read error; the
+ * process then gets SIGBUS. A file replaced by a rename keeps the bytes it had.
  */
 class MappedFile
 {

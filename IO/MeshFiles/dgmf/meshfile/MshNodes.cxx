@@ -259,15 +259,6 @@ bool PlanReplacement(
     std::is_sorted(plan.Records.At.begin(), plan.Records.At.end());
 }
 
-/// A binary file's doubles replaced where they are.
-void PatchBinary(std::string& bytes, const Replacement& plan, const double* points)
-{
-  for (std::size_t r = 0; r < plan.Rank.size(); ++r)
-  {
-    std::memcpy(bytes.data() + plan.Records.At[r], points + 3 * plan.Rank[r], 3 * sizeof(double));
-  }
-}
-
 /// A binary file appended to `append(data, size)` in pieces: its bytes as they are, each node's
 /// three doubles from `points` (the records are in file order).
 template <typename Append>
@@ -309,6 +300,21 @@ void WriteAscii(std::string_view file, const Replacement& plan, const double* po
   }
   append(file.data() + copied, file.size() - copied);
 }
+
+/// The file of `plan` appended to `append` in pieces (WriteBinary or WriteAscii).
+template <typename Append>
+void WriteMoved(std::string_view file, const MshFormat& format, const Replacement& plan,
+  const double* points, Append append)
+{
+  if (format.Binary)
+  {
+    WriteBinary(file, plan, points, append);
+  }
+  else
+  {
+    WriteAscii(file, plan, points, append);
+  }
+}
 } // namespace
 
 bool ReplaceMshNodeCoordinates(
@@ -319,16 +325,12 @@ bool ReplaceMshNodeCoordinates(
   {
     return false;
   }
-  if (format.Binary)
-  {
-    PatchBinary(bytes, plan, points);
-    return true;
-  }
-  std::string patched;
-  patched.reserve(bytes.size() + 16 * count);
-  WriteAscii(bytes, plan, points,
-    [&patched](const char* data, std::size_t size) { patched.append(data, size); });
-  bytes.swap(patched);
+  // The writer's pieces into a string (the same code as the file's).
+  std::string moved;
+  moved.reserve(bytes.size() + (format.Binary ? 0 : 16 * count));
+  WriteMoved(bytes, format, plan, points,
+    [&moved](const char* data, std::size_t size) { moved.append(data, size); });
+  bytes.swap(moved);
   return true;
 }
 
@@ -343,15 +345,8 @@ bool WriteMshWithMovedNodes(std::string_view file, const MshFormat& format, cons
   WriteFileAtomically(target, temporary,
     [&](BufferedOutput& out)
     {
-      const auto append = [&out](const char* data, std::size_t size) { out.Append(data, size); };
-      if (format.Binary)
-      {
-        WriteBinary(file, plan, points, append);
-      }
-      else
-      {
-        WriteAscii(file, plan, points, append);
-      }
+      WriteMoved(file, format, plan, points,
+        [&out](const char* data, std::size_t size) { out.Append(data, size); });
     });
   return true;
 }

@@ -22,13 +22,13 @@ namespace meshfile
 /**
  * Replaces, in `bytes` (a .msh file whose first lines say `format`), the coordinates of the node of
  * the k-th smallest tag by points[3 k], points[3 k + 1], points[3 k + 2] (the order in which
- * ReadGmsh gives the nodes): true. A binary file's doubles are replaced where they are (no copy
- * of the file); an ASCII file's text is written anew, each coordinate as the shortest decimal
- * that reads back as the same double. False, and `bytes` unchanged, when the file is not one this
- * can rewrite in place: a version other than 2.2 and 4.1, a binary file of the other byte order,
- * parametric coordinates, a $Nodes section that does not parse to its $EndNodes (counts past the
- * end of the file included), a repeated tag, or a number of nodes other than `count`. Never reads
- * outside `bytes`.
+ * ReadGmsh gives the nodes): true (the pieces WriteMshWithMovedNodes writes, into `bytes`): a
+ * binary file's doubles replaced; an ASCII file's text written anew, each coordinate as the
+ * shortest decimal that reads back as the same double. False, and `bytes` unchanged, when the file
+ * is not one this can rewrite in place: a version other than 2.2 and 4.1, a binary file of the
+ * other byte order, parametric coordinates, a $Nodes section that does not parse to its $EndNodes
+ * (counts past the end of the file included), a repeated tag, or a number of nodes other than
+ * `count`. Never reads outside `bytes`.
  */
 bool ReplaceMshNodeCoordinates(
   std::string& bytes, const MshFormat& format, const double* points, std::size_t count);
