@@ -12,6 +12,7 @@
 #include "dgmf/meshfile/MshReader41.h"
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 namespace dgmf
@@ -27,20 +28,25 @@ NamedMesh ReadThroughGmsh(const std::string& path, const MshFormat& format)
 {
   // Loaded here, before the fork: the child only calls it.
   const GmshModule gmsh = LoadGmshModule(path);
-  const std::string answer = RunIsolated(path, "gmsh", TimeAllowed(path), 0,
-    [&]()
+  // The mesh's bytes go into the shared answer and are read from its mapping (no copy of them
+  // through a string on either side but the module's own).
+  const IsolatedAnswer answer = RunIsolatedInPlace(path, "gmsh", TimeAllowed(path), 0,
+    [&](const AnswerRoom& room)
     {
       std::string bytesOrMessage;
       if (!gmsh.Read(path, format, bytesOrMessage))
       {
         throw FileError(bytesOrMessage);
       }
-      return bytesOrMessage;
+      if (!bytesOrMessage.empty())
+      {
+        std::memcpy(room(bytesOrMessage.size()), bytesOrMessage.data(), bytesOrMessage.size());
+      }
     });
   NamedMesh mesh;
   try
   {
-    mesh = MeshFromBytes(answer);
+    mesh = MeshFromBytes(answer.Data(), answer.Size());
   }
   catch (const FileError& e)
   {
