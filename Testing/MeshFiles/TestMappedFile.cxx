@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -29,24 +30,35 @@ void WriteFile(const fs::path& path, const std::string& bytes)
 
 TEST(MappedFile, ARegularFileIsMappedWithItsBytesWhateverItsSize)
 {
-  const fs::path dir = dgmf_test::WorkDirectory("mapped-file");
-  // Sizes around a page and a large one, every byte value (zeros included).
-  for (const std::size_t size : { std::size_t(1), std::size_t(4095), std::size_t(4096),
-         std::size_t(4097), std::size_t(3) << 20 })
+  // In the temporary directory (mapped or read, depending on its file system) and in /dev/shm
+  // (tmpfs, a local file system: mapped). Sizes around a page and a large one, every byte value.
+  const fs::path shared = fs::path("/dev/shm") / ("dgmf-mapped-file-" + std::to_string(::getpid()));
+  std::error_code error;
+  fs::create_directories(shared, error);
+  ASSERT_FALSE(error) << "/dev/shm: " << error.message();
+  for (const fs::path& dir : { dgmf_test::WorkDirectory("mapped-file"), shared })
   {
-    std::string bytes(size, '\0');
-    for (std::size_t k = 0; k < size; ++k)
+    for (const std::size_t size : { std::size_t(1), std::size_t(4095), std::size_t(4096),
+           std::size_t(4097), std::size_t(3) << 20 })
     {
-      bytes[k] = static_cast<char>((k * 2654435761u) >> 11);
+      std::string bytes(size, '\0');
+      for (std::size_t k = 0; k < size; ++k)
+      {
+        bytes[k] = static_cast<char>((k * 2654435761u) >> 11);
+      }
+      const fs::path path = dir / ("file" + std::to_string(size));
+      WriteFile(path, bytes);
+      const mf::MappedFile file(path.string());
+      if (dir == shared)
+      {
+        EXPECT_TRUE(file.IsMapped()) << size;
+      }
+      ASSERT_EQ(file.Bytes().size(), size);
+      EXPECT_TRUE(file.Bytes() == bytes) << dir << " " << size;
+      EXPECT_EQ(mf::ReadFileBytes(path.string()), bytes);
     }
-    const fs::path path = dir / ("file" + std::to_string(size));
-    WriteFile(path, bytes);
-    const mf::MappedFile file(path.string());
-    EXPECT_TRUE(file.IsMapped()) << size;
-    ASSERT_EQ(file.Bytes().size(), size);
-    EXPECT_TRUE(file.Bytes() == bytes) << size;
-    EXPECT_EQ(mf::ReadFileBytes(path.string()), bytes);
   }
+  fs::remove_all(shared, error);
 }
 
 TEST(MappedFile, WhatCannotBeMappedIsReadAndWhatCannotBeReadIsAFileError)
@@ -94,7 +106,7 @@ TEST(MappedFile, TheBytesStayWhenTheFileIsReplacedWhileMapped)
   const fs::path path = dir / "mesh.su2";
   WriteFile(path, "NDIME= 3\n");
   const mf::MappedFile file(path.string());
-  ASSERT_TRUE(file.IsMapped());
+  // (mapped where the temporary directory is on a local file system, as a rule)
   WriteFile(dir / "new.su2", "NDIME= 2\nNPOIN= 0\n");
   fs::rename(dir / "new.su2", path);
   EXPECT_EQ(std::string(file.Bytes()), "NDIME= 3\n");
