@@ -1,6 +1,7 @@
 // A format library's work in a child process (LibraryIsolation.h): what comes back, whole, and
 // what each way of failing gives.
 #include "dgmf/meshfile/LibraryIsolation.h"
+#include "dgmf/meshfile/MeshBytes.h"
 
 #include <gtest/gtest.h>
 

@@ -28,7 +28,7 @@ void WriteModifiedCopy(const std::string& source, const std::string& target,
   const std::function<void(const std::string& temporary)>& modify);
 
 /**
- * The bytes of the file `path`, read at its size in one call. Throws FileError ("<path>: cannot be
+ * A copy of the bytes of the file `path` (MappedFile's). Throws FileError ("<path>: cannot be
  * opened", "... cannot be read").
  */
 std::string ReadFileBytes(const std::string& path);

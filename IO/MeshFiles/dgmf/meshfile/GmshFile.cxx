@@ -6,6 +6,7 @@
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/LibraryIsolation.h"
 #include "dgmf/meshfile/MappedFile.h"
+#include "dgmf/meshfile/MeshBytes.h"
 #include "dgmf/meshfile/MshHeader.h"
 #include "dgmf/meshfile/MshNodes.h"
 #include "dgmf/meshfile/MshReader22.h"

@@ -4,7 +4,7 @@
 // errors collected from gmsh's logger.
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/GmshSession.h"
-#include "dgmf/meshfile/LibraryIsolation.h"
+#include "dgmf/meshfile/MeshBytes.h"
 #include "dgmf/meshfile/MshElementTypes.h"
 #include "dgmf/meshfile/MshNodeIndex.h"
 
