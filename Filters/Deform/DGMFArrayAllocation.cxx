@@ -1,5 +1,7 @@
 #include "DGMFArrayAllocation.h"
 
+#include "dgmf/FirstTouch.h"
+
 #include "vtkDataArray.h"
 #include "vtkPoints.h"
 
@@ -24,6 +26,7 @@ void AllocateTuples(vtkDataArray* array, vtkIdType tuples)
   {
     throw std::bad_alloc();
   }
+  dgmf::AdviseHugePages(memory, values * static_cast<std::size_t>(array->GetDataTypeSize()));
   array->SetVoidArray(
     memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
 }
