@@ -2,6 +2,8 @@
 
 #include "DGMFWriterInputs.h"
 
+#include "dgmf/HugePages.h"
+
 #include "vtkCellArray.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
@@ -23,6 +25,17 @@ namespace mf = dgmf::meshfile;
 
 namespace
 {
+/// Gives `array` `tuples` tuples, its new memory advised huge pages before it is written.
+void SetTuples(vtkDataArray* array, std::size_t tuples)
+{
+  array->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
+  if (tuples > 0)
+  {
+    dgmf::AdviseHugePages(array->GetVoidPointer(0),
+      tuples * static_cast<std::size_t>(array->GetNumberOfComponents() * array->GetDataTypeSize()));
+  }
+}
+
 /// An unstructured grid of `cells` on the nodes `nodes` (indices into the file's points) of
 /// `mesh`; `local[node]` must map a file node to its index in `nodes` for every node used.
 vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::Cells& cells,
@@ -30,7 +43,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
 {
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(nodes.size()));
+  SetTuples(coordinates, nodes.size());
   double* xyz = coordinates->GetPointer(0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
@@ -40,9 +53,9 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
   points->SetData(coordinates);
 
   vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(cells.Offsets.size()));
+  SetTuples(offsets, cells.Offsets.size());
   std::copy(cells.Offsets.begin(), cells.Offsets.end(), offsets->GetPointer(0));
-  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(cells.Connectivity.size()));
+  SetTuples(connectivity, cells.Connectivity.size());
   vtkIdType* ids = connectivity->GetPointer(0);
   for (std::size_t k = 0; k < cells.Connectivity.size(); ++k)
   {
@@ -51,7 +64,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
   vtkNew<vtkCellArray> cellArray;
   cellArray->SetData(offsets, connectivity);
   vtkNew<vtkUnsignedCharArray> types;
-  types->SetNumberOfTuples(static_cast<vtkIdType>(cells.Types.size()));
+  SetTuples(types, cells.Types.size());
   std::copy(cells.Types.begin(), cells.Types.end(), types->GetPointer(0));
 
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -72,7 +85,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> ToBlocks(const mf::NamedMesh& mesh)
   vtkSmartPointer<vtkUnstructuredGrid> volume = Grid(mesh, mesh.Volume, all, all);
   vtkNew<vtkIdTypeArray> fileIds;
   fileIds->SetName("FileNodeId");
-  fileIds->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  SetTuples(fileIds, n);
   std::copy(mesh.NodeIds.begin(), mesh.NodeIds.end(), fileIds->GetPointer(0));
   volume->GetPointData()->AddArray(fileIds);
 

@@ -1,72 +1,16 @@
-// The first touch of new memory (dgmf/FirstTouch.h): only the range given is written, large
-// arrays are advised huge pages (and only inside their range), and the vector that does not zero
-// its new elements still keeps the values it is given.
+// The first touch of new memory (dgmf/FirstTouch.h): only the range given is written, and the
+// vector that does not zero its new elements still keeps the values it is given.
 #include "dgmf/FirstTouch.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <fstream>
-#include <sstream>
-#include <string>
 #include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #include <unistd.h>
 #endif
-
-namespace
-{
-#if defined(__linux__)
-/// The VmFlags of the mapping of this process that holds `address` (from /proc/self/smaps), or
-/// "" when none does.
-std::string MappingFlags(const void* address)
-{
-  const auto at = reinterpret_cast<std::uintptr_t>(address);
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line;
-  bool inside = false;
-  while (std::getline(smaps, line))
-  {
-    std::uintptr_t low = 0, high = 0;
-    char dash = 0;
-    std::istringstream range(line);
-    if (range >> std::hex >> low >> dash >> high && dash == '-')
-    {
-      inside = low <= at && at < high;
-    }
-    else if (inside && line.rfind("VmFlags:", 0) == 0)
-    {
-      return line;
-    }
-  }
-  return "";
-}
-
-/// True when the kernel has transparent huge pages (the advice is then recorded on mappings).
-bool KernelHasHugePages()
-{
-  return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
-}
-
-/// True when the kernel backs every large enough anonymous mapping with huge pages, advised or
-/// not (policy "always"): pages beyond an advised range may then be faulted in with it.
-bool HugePagesAlways()
-{
-  std::string policy;
-  std::getline(std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"), policy);
-  return policy.find("[always]") != std::string::npos;
-}
-
-/// Fresh anonymous memory of `bytes` bytes (no page resident), or null.
-unsigned char* MapFresh(std::size_t bytes)
-{
-  void* mapped = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  return mapped == MAP_FAILED ? nullptr : static_cast<unsigned char*>(mapped);
-}
-#endif
-} // namespace
 
 TEST(FirstTouch, WritesNothingOutsideItsRangeWhateverTheAlignment)
 {
@@ -114,80 +58,6 @@ TEST(FirstTouch, MakesEveryPageOfItsRangeResidentAndNoOther)
     ASSERT_EQ(base[i], 0) << "byte " << i; // fresh memory reads as zeros after the touch
   }
   munmap(mapped, pages * page);
-}
-#endif
-
-#if defined(__linux__)
-TEST(FirstTouch, MakesEveryPageOfALargeRangeResidentAndNoOtherWithHugePagesAdvised)
-{
-  // A range of several huge pages that starts and ends inside small pages: the huge pages it is
-  // advised must not reach beyond it, even where they would be aligned.
-  if (HugePagesAlways())
-  {
-    GTEST_SKIP() << "huge pages are the kernel's policy for all memory here, advised or not";
-  }
-  const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-  const std::size_t huge = std::size_t(2) << 20;
-  const std::size_t bytes = 8 * huge;
-  unsigned char* base = MapFresh(bytes);
-  ASSERT_NE(base, nullptr);
-  const std::size_t begin = huge - 3 * page + 5, end = 6 * huge + 2 * page + 1;
-  dgmf::FirstTouch(base + begin, end - begin);
-  const std::size_t pages = bytes / page;
-  std::vector<unsigned char> resident(pages, 0);
-  ASSERT_EQ(mincore(base, bytes, resident.data()), 0);
-  for (std::size_t p = 0; p < pages; ++p)
-  {
-    const bool inRange = p >= begin / page && p <= (end - 1) / page;
-    ASSERT_EQ((resident[p] & 1) != 0, inRange) << "page " << p << " of " << pages;
-  }
-  for (std::size_t i = begin; i < end; i += 4093)
-  {
-    ASSERT_EQ(base[i], 0) << "byte " << i;
-  }
-  munmap(base, bytes);
-}
-
-TEST(FirstTouch, LargeArraysAreAdvisedHugePagesAndSmallOnesAreNot)
-{
-  if (!KernelHasHugePages())
-  {
-    GTEST_SKIP() << "this kernel has no transparent huge pages";
-  }
-  // Separate mappings, so that each one's flags are its own.
-  const std::size_t large = 4 * dgmf::HugePageAdviceBytes;
-  unsigned char* big = MapFresh(large);
-  unsigned char* small = MapFresh(dgmf::HugePageAdviceBytes);
-  ASSERT_NE(big, nullptr);
-  ASSERT_NE(small, nullptr);
-  EXPECT_EQ(MappingFlags(big + large / 2).find(" hg"), std::string::npos);
-  dgmf::AdviseHugePages(big + 1, large - 2);
-  dgmf::AdviseHugePages(small, dgmf::HugePageAdviceBytes - 1);
-  EXPECT_NE(MappingFlags(big + large / 2).find(" hg"), std::string::npos)
-    << MappingFlags(big + large / 2);
-  EXPECT_EQ(MappingFlags(small + 4096).find(" hg"), std::string::npos)
-    << MappingFlags(small + 4096);
-  munmap(big, large);
-  munmap(small, dgmf::HugePageAdviceBytes);
-
-  // The vector that does not zero its elements asks for the advice when it allocates.
-  dgmf::UninitializedVector<double> values;
-  values.reserve(large / sizeof(double));
-  EXPECT_NE(MappingFlags(values.data() + values.capacity() / 2).find(" hg"), std::string::npos);
-}
-
-TEST(FirstTouch, TheAdviceKeepsTheValues)
-{
-  std::vector<std::uint32_t> values(3 * dgmf::HugePageAdviceBytes / sizeof(std::uint32_t));
-  for (std::size_t i = 0; i < values.size(); ++i)
-  {
-    values[i] = static_cast<std::uint32_t>(i * 2654435761u);
-  }
-  dgmf::AdviseHugePages(values.data(), values.size() * sizeof(std::uint32_t));
-  for (std::size_t i = 0; i < values.size(); ++i)
-  {
-    ASSERT_EQ(values[i], static_cast<std::uint32_t>(i * 2654435761u)) << i;
-  }
 }
 #endif
 

@@ -2,12 +2,13 @@
  * @file FirstTouch.h
  * @brief New memory made resident ahead of its use: the first touch of a large array costs page
  * faults (the kernel zeroing each page), which can run on another thread while the graph is
- * built; the advice that large arrays be backed by huge pages (one fault per 2 MiB instead of one
- * per 4 KiB); and a vector that does not zero what it allocates.
+ * built, huge pages advised first (HugePages.h); and a vector that does not zero what it
+ * allocates.
  */
 #ifndef dgmf_FirstTouch_h
 #define dgmf_FirstTouch_h
 
+#include "dgmf/HugePages.h"
 #include "dgmf/ParallelFor.h"
 
 #include <cstddef>
@@ -19,20 +20,6 @@
 
 namespace dgmf
 {
-
-/// Arrays from this size up are advised to be backed by huge pages (AdviseHugePages).
-constexpr std::size_t HugePageAdviceBytes = std::size_t(4) << 20;
-
-/**
- * Asks the kernel to back the whole 2 MiB pages inside [begin, begin + bytes) with transparent
- * huge pages (Linux's madvise(MADV_HUGEPAGE)), when `bytes` is at least HugePageAdviceBytes:
- * where the system's policy is "madvise" (Ubuntu's and many distributions' default), new memory
- * is otherwise faulted in 4 KiB pages, and on virtual machines each fault is costly (measured on
- * this project's VM: 1 GiB first touched in 3.0-3.3 s in 4 KiB pages, 0.13-2.3 s advised). Call
- * it on new memory before its first touch. Values are unchanged; a no-op elsewhere, where the
- * policy is "never", and when the kernel refuses.
- */
-void AdviseHugePages(void* begin, std::size_t bytes) noexcept;
 
 /**
  * Faults in the pages of [begin, begin + bytes) for writing, huge pages advised first

@@ -1,6 +1,8 @@
 // A mesh as bytes (MeshBytes.h): the answer of a library's child process.
 #include "dgmf/meshfile/MeshBytes.h"
 
+#include "dgmf/HugePages.h"
+
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -66,6 +68,8 @@ void Get(const char* in, std::size_t size, std::size_t& at, std::vector<T>& valu
   }
   // `in` is aligned and `at` a multiple of kAlignment: the values are T's in place.
   const T* first = reinterpret_cast<const T*>(in + at);
+  values.clear();
+  ReserveOnHugePages(values, count);
   values.assign(first, first + count);
   at += Padded(count * sizeof(T));
 }

@@ -3,6 +3,7 @@
 // gmsh.MshReader22.*).
 #include "dgmf/meshfile/MshModel.h"
 
+#include "dgmf/HugePages.h"
 #include "dgmf/meshfile/MshElementTypes.h"
 #include "dgmf/meshfile/MshNodeIndex.h"
 
@@ -214,8 +215,8 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
       [&](std::size_t a, std::size_t b) { return model.NodeTags[a] < model.NodeTags[b]; });
   }
   std::vector<std::size_t> tags(n);
-  mesh.Points.resize(3 * n);
-  mesh.NodeIds.resize(n);
+  ResizeOnHugePages(mesh.Points, 3 * n);
+  ResizeOnHugePages(mesh.NodeIds, n);
   for (std::size_t k = 0; k < n; ++k)
   {
     tags[k] = static_cast<std::size_t>(model.NodeTags[order[k]]);

@@ -4,6 +4,7 @@
 // them: MshModel.h.
 #include "dgmf/meshfile/MshReader22.h"
 
+#include "dgmf/HugePages.h"
 #include "dgmf/meshfile/MshElementTypes.h"
 #include "dgmf/meshfile/MshModel.h"
 
@@ -29,8 +30,8 @@ bool ParseNodes(Cursor& cursor, bool binary, MshModel& model)
     return false; // a second $Nodes, or more nodes than the file can hold
   }
   const auto n = static_cast<std::size_t>(count);
-  model.NodeTags.resize(n);
-  model.Coordinates.resize(3 * n);
+  ResizeOnHugePages(model.NodeTags, n);
+  ResizeOnHugePages(model.Coordinates, 3 * n);
   Values values(cursor, binary);
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -65,8 +66,8 @@ public:
     : Model(model)
   {
     const std::size_t elements = std::min<std::size_t>(count, bytes / 16);
-    this->Numbers.reserve(elements);
-    this->Model.ElementNodes.reserve(4 * elements);
+    ReserveOnHugePages(this->Numbers, elements);
+    ReserveOnHugePages(this->Model.ElementNodes, 4 * elements);
   }
 
   /// An element of gmsh type `type` whose node tags end at `end` in Model.ElementNodes.
@@ -218,7 +219,7 @@ bool ParseBinaryElements(Cursor& cursor, std::uint64_t count, MshModel& model)
     }
     // (The block's size was checked against the file's: every read below succeeds.)
     std::size_t at = model.ElementNodes.size();
-    model.ElementNodes.resize(at + static_cast<std::size_t>(header[1]) * mapping.Nodes);
+    ResizeOnHugePages(model.ElementNodes, at + static_cast<std::size_t>(header[1]) * mapping.Nodes);
     for (std::int32_t e = 0; e < header[1]; ++e)
     {
       std::int32_t number = 0, physical = 0, elementary = 0, node = 0;

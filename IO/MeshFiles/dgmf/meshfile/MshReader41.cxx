@@ -2,6 +2,7 @@
 // "MSH file format"; the mesh made of it: MshModel.h.
 #include "dgmf/meshfile/MshReader41.h"
 
+#include "dgmf/HugePages.h"
 #include "dgmf/meshfile/MshElementTypes.h"
 #include "dgmf/meshfile/MshModel.h"
 
@@ -108,7 +109,7 @@ bool ParseNodes(Cursor& cursor, bool binary, MshModel& model)
       return false;
     }
     const std::size_t first = model.NodeTags.size();
-    model.NodeTags.resize(first + static_cast<std::size_t>(inBlock));
+    ResizeOnHugePages(model.NodeTags, first + static_cast<std::size_t>(inBlock));
     for (std::size_t k = first; k < model.NodeTags.size(); ++k)
     {
       if (!values.Size(model.NodeTags[k]))
@@ -116,7 +117,7 @@ bool ParseNodes(Cursor& cursor, bool binary, MshModel& model)
         return false;
       }
     }
-    model.Coordinates.resize(3 * model.NodeTags.size());
+    ResizeOnHugePages(model.Coordinates, 3 * model.NodeTags.size());
     for (std::size_t k = 3 * first; k < model.Coordinates.size(); ++k)
     {
       if (!values.Real(model.Coordinates[k]))
@@ -151,7 +152,8 @@ bool ParseElements(Cursor& cursor, bool binary, MshModel& model)
     }
     block.First = model.ElementNodes.size();
     block.Count = static_cast<std::size_t>(inBlock);
-    model.ElementNodes.resize(block.First + block.Count * static_cast<std::size_t>(mapping.Nodes));
+    ResizeOnHugePages(
+      model.ElementNodes, block.First + block.Count * static_cast<std::size_t>(mapping.Nodes));
     std::uint64_t* nodes = model.ElementNodes.data() + block.First;
     for (std::size_t e = 0; e < block.Count; ++e)
     {

@@ -8,6 +8,8 @@
 #ifndef dgmf_meshfile_NamedMesh_h
 #define dgmf_meshfile_NamedMesh_h
 
+#include "dgmf/HugePages.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -40,12 +42,13 @@ struct Cells
   std::vector<std::int64_t> Connectivity;
 
   std::size_t Size() const { return this->Types.size(); }
-  /// Room for `cells` more cells of `nodes` nodes in all, so that adding them copies nothing.
+  /// Room for `cells` more cells of `nodes` nodes in all, so that adding them copies nothing
+  /// (large arrays on huge pages: dgmf/HugePages.h).
   void Reserve(std::size_t cells, std::size_t nodes)
   {
-    this->Types.reserve(this->Types.size() + cells);
-    this->Offsets.reserve(this->Offsets.size() + cells);
-    this->Connectivity.reserve(this->Connectivity.size() + nodes);
+    dgmf::ReserveOnHugePages(this->Types, this->Types.size() + cells);
+    dgmf::ReserveOnHugePages(this->Offsets, this->Offsets.size() + cells);
+    dgmf::ReserveOnHugePages(this->Connectivity, this->Connectivity.size() + nodes);
   }
   void Add(std::uint8_t type, const std::int64_t* nodes, std::size_t count)
   {

@@ -1,5 +1,6 @@
 #include "dgmf/meshfile/SU2File.h"
 
+#include "dgmf/HugePages.h"
 #include "dgmf/meshfile/FileReplacement.h"
 #include "dgmf/meshfile/MappedFile.h"
 #include "dgmf/meshfile/SU2Text.h"
@@ -255,9 +256,10 @@ void SU2Parser::ParseElements(const TextLine& line, const Keyword& keyword)
   const std::string section = "NELEM= " + std::to_string(count);
   const std::size_t reserved =
     std::min(static_cast<std::size_t>(count), this->Reader.MaxRemainingLines());
-  this->Result.Mesh.Volume.Types.reserve(reserved);
-  this->Result.Mesh.Volume.Offsets.reserve(reserved + 1);
-  this->VolumeLines.reserve(reserved);
+  // Room for hexahedra (8 nodes, the most an SU2 element has): memory never written is never
+  // faulted in, so the room that tetrahedra leave costs address space only.
+  this->Result.Mesh.Volume.Reserve(reserved, 8 * reserved);
+  ReserveOnHugePages(this->VolumeLines, reserved);
   const std::string where = "element of " + section;
   for (std::int64_t k = 0; k < count; ++k)
   {
@@ -276,8 +278,8 @@ void SU2Parser::ParsePoints(const TextLine& line, const Keyword& keyword)
   const std::size_t reserved =
     std::min(static_cast<std::size_t>(count), this->Reader.MaxRemainingLines());
   NamedMesh& mesh = this->Result.Mesh;
-  mesh.Points.reserve(3 * reserved);
-  this->Result.PointLineBegins.reserve(reserved);
+  ReserveOnHugePages(mesh.Points, 3 * reserved);
+  ReserveOnHugePages(this->Result.PointLineBegins, reserved);
   const std::size_t coordinates = static_cast<std::size_t>(this->Dimension);
   for (std::int64_t k = 0; k < count; ++k)
   {

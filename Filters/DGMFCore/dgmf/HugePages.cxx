@@ -1,0 +1,38 @@
+#include "dgmf/HugePages.h"
+
+#include <cstdint>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace dgmf
+{
+namespace
+{
+/// The size of an x86-64 or AArch64 (4 KiB granule) transparent huge page.
+constexpr std::uintptr_t HugePage = std::uintptr_t(2) << 20;
+} // namespace
+
+void AdviseHugePages(void* begin, std::size_t bytes) noexcept
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (bytes < HugePageAdviceBytes)
+  {
+    return;
+  }
+  const auto start = reinterpret_cast<std::uintptr_t>(begin);
+  const std::uintptr_t first = (start + HugePage - 1) / HugePage * HugePage;
+  const std::uintptr_t last = (start + bytes) / HugePage * HugePage;
+  if (last > first)
+  {
+    // Advice only: a refusal (EINVAL where THP is not built in) leaves 4 KiB pages.
+    (void)madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  }
+#else
+  (void)begin;
+  (void)bytes;
+#endif
+}
+
+} // namespace dgmf

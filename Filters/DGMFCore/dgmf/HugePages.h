@@ -1,0 +1,62 @@
+/**
+ * @file HugePages.h
+ * @brief The advice that large arrays be backed by transparent huge pages: one page fault per
+ * 2 MiB of new memory instead of one per 4 KiB, and fewer TLB misses when the array is read out of
+ * order. Used by the core, the filter's VTK arrays and the mesh-file readers (a library of its own,
+ * DGMFHugePages, so that the readers need not link the core).
+ */
+#ifndef dgmf_HugePages_h
+#define dgmf_HugePages_h
+
+#include <algorithm>
+#include <cstddef>
+
+namespace dgmf
+{
+
+/// Arrays from this size up are advised to be backed by huge pages (AdviseHugePages).
+constexpr std::size_t HugePageAdviceBytes = std::size_t(4) << 20;
+
+/**
+ * Asks the kernel to back the whole 2 MiB pages inside [begin, begin + bytes) with transparent
+ * huge pages (Linux's madvise(MADV_HUGEPAGE)), when `bytes` is at least HugePageAdviceBytes:
+ * where the system's policy is "madvise" (Ubuntu's and many distributions' default), new memory
+ * is otherwise faulted in 4 KiB pages, and on virtual machines each fault is costly (measured on
+ * this project's VM: 1 GiB first touched in 3.0-3.3 s in 4 KiB pages, 0.13-2.3 s advised). Call
+ * it on new memory before its first touch. Values are unchanged; a no-op elsewhere, where the
+ * policy is "never", and when the kernel refuses. Pages outside the range are never affected.
+ */
+void AdviseHugePages(void* begin, std::size_t bytes) noexcept;
+
+/**
+ * Gives `values` (a std::vector) room for at least `count` elements, its new storage advised huge
+ * pages before anything is written into it (std::vector::reserve would copy the elements into the
+ * new storage first). Grows geometrically, as std::vector does, so that calls with growing counts
+ * cost amortised linear time.
+ */
+template <typename Vector>
+void ReserveOnHugePages(Vector& values, std::size_t count)
+{
+  if (count <= values.capacity())
+  {
+    return;
+  }
+  Vector grown;
+  grown.reserve(std::max(count, 2 * values.capacity()));
+  AdviseHugePages(grown.data(), grown.capacity() * sizeof(typename Vector::value_type));
+  grown.insert(grown.end(), values.begin(), values.end());
+  values.swap(grown);
+}
+
+/// Resizes `values` (a std::vector) to `count` elements, new storage advised huge pages first
+/// (ReserveOnHugePages); new elements are value-initialised as by resize().
+template <typename Vector>
+void ResizeOnHugePages(Vector& values, std::size_t count)
+{
+  ReserveOnHugePages(values, count);
+  values.resize(count);
+}
+
+} // namespace dgmf
+
+#endif
