@@ -3,6 +3,8 @@
 #include "DGMFAppendedData.h"
 #include "DGMFCompressedArray.h"
 
+#include "dgmf/HugePages.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -130,6 +132,7 @@ public:
     }
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
+    dgmf::AdviseHugePages(target, bytes); // before the jobs' first touch
     AppendedData::CompressedBlocks blocks =
       this->Appended.Queue(static_cast<std::size_t>(offset), target, bytes);
     // alive until its bytes are written, whatever the caller keeps
