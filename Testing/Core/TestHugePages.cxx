@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -106,6 +107,7 @@ TEST(HugePages, LargeArraysAreAdvisedAndSmallOnesAreNot)
   {
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   }
+  unsetenv("DGMF_HUGE_PAGES"); // whatever the environment of the tests says
   // Separate mappings, so that each one's flags are its own.
   const std::size_t large = 4 * dgmf::HugePageAdviceBytes;
   unsigned char* big = MapFresh(large);
@@ -121,6 +123,15 @@ TEST(HugePages, LargeArraysAreAdvisedAndSmallOnesAreNot)
     << MappingFlags(small + 4096);
   munmap(big, large);
   munmap(small, dgmf::HugePageAdviceBytes);
+
+  // Not when the environment turns it off.
+  unsigned char* off = MapFresh(large);
+  ASSERT_NE(off, nullptr);
+  setenv("DGMF_HUGE_PAGES", "0", 1);
+  dgmf::AdviseHugePages(off, large);
+  unsetenv("DGMF_HUGE_PAGES");
+  EXPECT_EQ(MappingFlags(off + large / 2).find(" hg"), std::string::npos);
+  munmap(off, large);
 
   // The vector that does not zero its elements asks for the advice when it allocates.
   dgmf::UninitializedVector<double> values;
@@ -144,6 +155,7 @@ TEST(HugePages, TheAdviceKeepsTheValues)
 
 TEST(HugePages, AVectorGrownOnHugePagesKeepsItsValuesAndGrowsGeometrically)
 {
+  unsetenv("DGMF_HUGE_PAGES"); // whatever the environment of the tests says
   std::vector<std::int64_t> values{ 7, -3, 11 };
   dgmf::ReserveOnHugePages(values, 2); // room enough already: nothing changes
   EXPECT_EQ(values.capacity(), 3u);

@@ -1,6 +1,8 @@
 #include "dgmf/HugePages.h"
 
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -12,12 +14,20 @@ namespace
 {
 /// The size of an x86-64 or AArch64 (4 KiB granule) transparent huge page.
 constexpr std::uintptr_t HugePage = std::uintptr_t(2) << 20;
+
+/// False when the environment says DGMF_HUGE_PAGES=0 (read at each call: calls are few, one per
+/// large array, and tests and comparisons switch it while running).
+bool AdviceWanted()
+{
+  const char* setting = std::getenv("DGMF_HUGE_PAGES");
+  return !(setting && std::strcmp(setting, "0") == 0);
+}
 } // namespace
 
 void AdviseHugePages(void* begin, std::size_t bytes) noexcept
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (bytes < HugePageAdviceBytes)
+  if (bytes < HugePageAdviceBytes || !AdviceWanted())
   {
     return;
   }

@@ -24,7 +24,8 @@ constexpr std::size_t HugePageAdviceBytes = std::size_t(4) << 20;
  * is otherwise faulted in 4 KiB pages, and on virtual machines each fault is costly (measured on
  * this project's VM: 1 GiB first touched in 3.0-3.3 s in 4 KiB pages, 0.13-2.3 s advised). Call
  * it on new memory before its first touch. Values are unchanged; a no-op elsewhere, where the
- * policy is "never", and when the kernel refuses. Pages outside the range are never affected.
+ * policy is "never", when the kernel refuses, and when the environment variable DGMF_HUGE_PAGES
+ * is "0" (default: advised). Pages outside the range are never affected.
  */
 void AdviseHugePages(void* begin, std::size_t bytes) noexcept;
 
