@@ -134,8 +134,9 @@ TEST(HugePages, LargeArraysAreAdvisedAndSmallOnesAreNot)
   munmap(off, large);
 
   // The vector that does not zero its elements asks for the advice when it allocates.
+  // (Larger than malloc's largest mapping threshold, 32 MiB: a new mapping, not advised heap.)
   dgmf::UninitializedVector<double> values;
-  values.reserve(large / sizeof(double));
+  values.reserve((std::size_t(64) << 20) / sizeof(double));
   EXPECT_NE(MappingFlags(values.data() + values.capacity() / 2).find(" hg"), std::string::npos);
 }
 
@@ -159,7 +160,9 @@ TEST(HugePages, AVectorGrownOnHugePagesKeepsItsValuesAndGrowsGeometrically)
   std::vector<std::int64_t> values{ 7, -3, 11 };
   dgmf::ReserveOnHugePages(values, 2); // room enough already: nothing changes
   EXPECT_EQ(values.capacity(), 3u);
-  const std::size_t large = dgmf::HugePageAdviceBytes / sizeof(std::int64_t) + 5;
+  // Larger than malloc's largest mapping threshold (32 MiB), so that the memory is a new mapping,
+  // not heap that an earlier test may have advised.
+  const std::size_t large = (std::size_t(64) << 20) / sizeof(std::int64_t) + 5;
   dgmf::ResizeOnHugePages(values, large);
   ASSERT_EQ(values.size(), large);
   EXPECT_EQ(values[0], 7);
