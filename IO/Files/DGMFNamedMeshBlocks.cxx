@@ -29,7 +29,7 @@ namespace
 void SetTuples(vtkDataArray* array, std::size_t tuples)
 {
   array->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
-  if (tuples > 0)
+  if (tuples > 0 && array->GetVoidPointer(0))
   {
     dgmf::AdviseHugePages(array->GetVoidPointer(0),
       tuples * static_cast<std::size_t>(array->GetNumberOfComponents() * array->GetDataTypeSize()));

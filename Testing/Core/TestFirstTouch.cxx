@@ -65,11 +65,14 @@ TEST(FirstTouch, PartsCoverTheRangeOnceInPiecesOfAtMostThePartSize)
 {
   // Sizes below, at and around multiples of the part size; parts are appended to what is there.
   const std::size_t part = dgmf::FirstTouchPartBytes;
+  // Memory of this process's own (the parts are advised huge pages; nothing is written).
+  std::vector<char> room;
+  room.reserve(3 * part + 17);
   for (const std::size_t bytes :
     { std::size_t{ 0 }, std::size_t{ 1 }, part - 1, part, part + 1, 3 * part, 3 * part + 17 })
   {
     std::vector<dgmf::FirstTouchPart> parts{ { nullptr, 5 } };
-    char* begin = reinterpret_cast<char*>(std::uintptr_t{ 1 } << 20);
+    char* begin = room.data();
     dgmf::AppendFirstTouchParts(begin, bytes, parts);
     ASSERT_EQ(parts.front().Bytes, 5u);
     ASSERT_EQ(parts.size() - 1, (bytes + part - 1) / part) << bytes << " bytes";

@@ -63,7 +63,6 @@ void FirstTouch(void* begin, std::size_t bytes)
   // Populate faults in), and when the kernel cannot populate, a store at each page boundary:
   // every page is faulted once, for writing (reading first would map the shared zero page, then
   // copy it on the write: two faults a page, measured 4 times slower beside CGAL's insertion).
-  AdviseHugePages(begin, bytes);
   volatile unsigned char* bytesOf = static_cast<unsigned char*>(begin);
   bytesOf[0] = 0;
   bytesOf[bytes - 1] = 0;
@@ -80,7 +79,10 @@ void FirstTouch(void* begin, std::size_t bytes)
 
 void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouchPart>& parts)
 {
-  AdviseHugePages(begin, bytes); // the whole range: the parts' ends need not fall on huge pages
+  // The whole range, once, on the caller's thread: the parts' ends need not fall on huge pages,
+  // and the advice takes the address space's lock for writing, which the parts' threads must not
+  // contend for beside CGAL's insertion (see DelaunayGraph.cxx, ReserveStorage).
+  AdviseHugePages(begin, bytes);
   for (std::size_t offset = 0; offset < bytes; offset += FirstTouchPartBytes)
   {
     parts.push_back(

@@ -22,14 +22,15 @@ namespace dgmf
 {
 
 /**
- * Faults in the pages of [begin, begin + bytes) for writing, huge pages advised first
- * (AdviseHugePages): with Linux's madvise(MADV_POPULATE_WRITE) (5.14 and later), one call for the
- * range, else one store per page. The range's values are unspecified afterwards (zero on fresh
- * memory): for arrays whose every value is written later. Much cheaper than zeroing the array after
- * the kernel did (std::vector's value-initialisation, memset). While the call runs it holds the
- * address space's lock for reading: another thread that grows its heap meanwhile waits (measured:
- * CGAL's insertion in a new process, 0.15 s at 8.26M nodes, whatever the size of the calls;
- * DelaunayGraph reserves CGAL's storage first for that reason).
+ * Faults in the pages of [begin, begin + bytes) for writing (huge pages are advised by the
+ * allocation or by AppendFirstTouchParts, not here): with Linux's madvise(MADV_POPULATE_WRITE)
+ * (5.14 and later), one call for the range, else one store per page. The range's values are
+ * unspecified afterwards (zero on fresh memory): for arrays whose every value is written later.
+ * Much cheaper than zeroing the array after the kernel did (std::vector's value-initialisation,
+ * memset). While the call runs it holds the address space's lock for reading: another thread that
+ * grows its heap meanwhile waits (measured: CGAL's insertion in a new process, 0.15 s at 8.26M
+ * nodes, whatever the size of the calls; DelaunayGraph reserves CGAL's storage first for that
+ * reason).
  */
 void FirstTouch(void* begin, std::size_t bytes);
 
@@ -44,7 +45,8 @@ struct FirstTouchPart
   std::size_t Bytes;
 };
 
-/// Appends [begin, begin + bytes) to `parts`, cut into parts of at most FirstTouchPartBytes.
+/// Appends [begin, begin + bytes) to `parts`, cut into parts of at most FirstTouchPartBytes, and
+/// advises the whole range huge pages (AdviseHugePages).
 void AppendFirstTouchParts(void* begin, std::size_t bytes, std::vector<FirstTouchPart>& parts);
 
 /// First touches every part of `parts` (FirstTouch), the parts shared by the threads of

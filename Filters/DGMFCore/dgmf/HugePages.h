@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 
 namespace dgmf
 {
@@ -30,14 +31,16 @@ constexpr std::size_t HugePageAdviceBytes = std::size_t(4) << 20;
 void AdviseHugePages(void* begin, std::size_t bytes) noexcept;
 
 /**
- * Gives `values` (a std::vector) room for at least `count` elements, its new storage advised huge
- * pages before anything is written into it (std::vector::reserve would copy the elements into the
- * new storage first). Grows geometrically, as std::vector does, so that calls with growing counts
- * cost amortised linear time.
+ * Gives `values` (a std::vector of numbers) room for at least `count` elements, its new storage
+ * advised huge pages before anything is written into it (std::vector::reserve would copy the
+ * elements into the new storage first). Grows geometrically, as std::vector does, so that calls
+ * with growing counts cost amortised linear time.
  */
 template <typename Vector>
 void ReserveOnHugePages(Vector& values, std::size_t count)
 {
+  static_assert(std::is_trivially_copyable<typename Vector::value_type>::value,
+    "for arrays of numbers: the elements are copied into the new storage");
   if (count <= values.capacity())
   {
     return;

@@ -257,8 +257,10 @@ void SU2Parser::ParseElements(const TextLine& line, const Keyword& keyword)
   const std::size_t reserved =
     std::min(static_cast<std::size_t>(count), this->Reader.MaxRemainingLines());
   // Room for hexahedra (8 nodes, the most an SU2 element has): memory never written is never
-  // faulted in, so the room that tetrahedra leave costs address space only.
-  this->Result.Mesh.Volume.Reserve(reserved, 8 * reserved);
+  // faulted in, so the room that tetrahedra leave costs address space only. No more node indices
+  // than the rest of the file can hold (two bytes each at least), whatever NELEM says.
+  this->Result.Mesh.Volume.Reserve(
+    reserved, std::min(8 * reserved, this->Reader.MaxRemainingLines()));
   ReserveOnHugePages(this->VolumeLines, reserved);
   const std::string where = "element of " + section;
   for (std::int64_t k = 0; k < count; ++k)
