@@ -1,6 +1,6 @@
 #include "DGMFArrayAllocation.h"
 
-#include "dgmf/FirstTouch.h"
+#include "dgmf/HugePages.h"
 
 #include "vtkDataArray.h"
 #include "vtkPoints.h"

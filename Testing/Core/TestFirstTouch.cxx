@@ -8,8 +8,7 @@
 #include <vector>
 
 #if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
+#include "FreshPages.h"
 #endif
 
 TEST(FirstTouch, WritesNothingOutsideItsRangeWhateverTheAlignment)
@@ -39,25 +38,13 @@ TEST(FirstTouch, MakesEveryPageOfItsRangeResidentAndNoOther)
   // Fresh anonymous memory: no page is resident until touched. The range starts and ends inside
   // pages, so the pages at both ends are only partly in it.
   const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-  const std::size_t pages = 64;
-  void* mapped =
-    mmap(nullptr, pages * page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  ASSERT_NE(mapped, MAP_FAILED);
-  auto* base = static_cast<unsigned char*>(mapped);
+  const std::size_t bytes = 64 * page;
+  unsigned char* base = dgmf_test::MapFresh(bytes);
+  ASSERT_NE(base, nullptr);
   const std::size_t begin = 3 * page + 100, end = 40 * page + 7; // pages 3 to 40
   dgmf::FirstTouch(base + begin, end - begin);
-  std::vector<unsigned char> resident(pages, 0);
-  ASSERT_EQ(mincore(mapped, pages * page, resident.data()), 0);
-  for (std::size_t p = 0; p < pages; ++p)
-  {
-    const bool inRange = p >= begin / page && p <= (end - 1) / page;
-    EXPECT_EQ((resident[p] & 1) != 0, inRange) << "page " << p;
-  }
-  for (std::size_t i = begin; i < end; i += 997)
-  {
-    ASSERT_EQ(base[i], 0) << "byte " << i; // fresh memory reads as zeros after the touch
-  }
-  munmap(mapped, pages * page);
+  dgmf_test::ExpectOnlyRangeResident(base, bytes, begin, end);
+  munmap(base, bytes);
 }
 #endif
 
