@@ -1,9 +1,8 @@
 #include "DGMFVTUReader.h"
 
 #include "DGMFAppendedData.h"
+#include "DGMFArrayAllocation.h"
 #include "DGMFCompressedArray.h"
-
-#include "dgmf/HugePages.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -124,7 +123,8 @@ public:
         array->SetComponentName(c, name);
       }
     }
-    array->SetNumberOfTuples(tuples + skip); // not initialised: the jobs touch the pages first
+    // Not initialised: the jobs touch the pages first, huge pages when large.
+    dgmf_vtk::AllocateTuples(array, tuples + skip);
     const std::size_t bytes = static_cast<std::size_t>(tuples) * components * valueBytes;
     if (array->GetNumberOfTuples() != tuples + skip || (bytes > 0 && !array->GetVoidPointer(0)))
     {
@@ -132,7 +132,6 @@ public:
     }
     auto* target = static_cast<unsigned char*>(array->GetVoidPointer(0)) +
       static_cast<std::size_t>(skip) * valueBytes;
-    dgmf::AdviseHugePages(target, bytes); // before the jobs' first touch
     AppendedData::CompressedBlocks blocks =
       this->Appended.Queue(static_cast<std::size_t>(offset), target, bytes);
     // alive until its bytes are written, whatever the caller keeps

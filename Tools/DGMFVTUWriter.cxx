@@ -1,5 +1,6 @@
 #include "DGMFVTUWriter.h"
 
+#include "DGMFArrayAllocation.h"
 #include "DGMFCompressedArray.h"
 #include "DGMFLookAheadCompressor.h"
 
@@ -10,6 +11,7 @@
 #include "vtkDataArrayRange.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -149,6 +151,23 @@ void DGMFVTUWriter::CacheRange(vtkDataArray* array)
   }
 }
 
+namespace
+{
+/**
+ * Adds to `data` the array VTK's AllocatePointGhostArray and AllocateCellGhostArray make (named
+ * vtkGhostType, `count` zeros), on huge pages before the zeros are written (AllocateTuples): 16
+ * MB at 8.26M nodes, which VTK faults in 4 KiB pages (4,000 faults, costly on a VM).
+ */
+void AddZeroGhostArray(vtkDataSetAttributes* data, vtkIdType count)
+{
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  dgmf_vtk::AllocateTuples(ghosts, count);
+  std::fill_n(ghosts->GetPointer(0), count, static_cast<unsigned char>(0));
+  data->AddArray(ghosts);
+}
+} // namespace
+
 bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
 {
   this->PreparedGrid = nullptr;
@@ -161,8 +180,8 @@ bool DGMFVTUWriter::SkipCellTypeScan(vtkUnstructuredGrid* grid)
   {
     return false;
   }
-  grid->AllocatePointGhostArray();
-  grid->AllocateCellGhostArray();
+  AddZeroGhostArray(grid->GetPointData(), grid->GetNumberOfPoints());
+  AddZeroGhostArray(grid->GetCellData(), grid->GetNumberOfCells());
   this->PreparedGrid = grid;
   this->AddedPointGhosts = grid->GetPointGhostArray();
   this->AddedCellGhosts = grid->GetCellGhostArray();

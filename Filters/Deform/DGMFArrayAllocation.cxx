@@ -21,12 +21,12 @@ void AllocateTuples(vtkDataArray* array, vtkIdType tuples)
     array->SetNumberOfTuples(tuples);
     return;
   }
-  void* memory = std::malloc(values * static_cast<std::size_t>(array->GetDataTypeSize()));
+  void* memory =
+    dgmf::AllocateOnHugePages(values * static_cast<std::size_t>(array->GetDataTypeSize()));
   if (!memory)
   {
     throw std::bad_alloc();
   }
-  dgmf::AdviseHugePages(memory, values * static_cast<std::size_t>(array->GetDataTypeSize()));
   array->SetVoidArray(
     memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
 }

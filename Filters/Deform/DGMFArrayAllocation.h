@@ -21,8 +21,8 @@ namespace dgmf_vtk
 {
 /**
  * Gives `array` `tuples` tuples of its number of components (values not initialised). Arrays
- * with VTK's standard memory layout get memory from malloc (freed by VTK), advised huge pages when
- * large (dgmf::AdviseHugePages); std::bad_alloc when it cannot be had.
+ * with VTK's standard memory layout get memory from the malloc family (freed by VTK), made of
+ * whole huge pages when large (dgmf::AllocateOnHugePages); std::bad_alloc when it cannot be had.
  */
 void AllocateTuples(vtkDataArray* array, vtkIdType tuples);
 

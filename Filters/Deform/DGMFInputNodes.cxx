@@ -2,6 +2,7 @@
 
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
+#include "dgmf/HugePages.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkArrayDispatch.h"
@@ -373,7 +374,7 @@ void InputGatherer::GatherKinds(
   const std::size_t n = nodes.NumberOfNodes;
   if (options.Roles)
   {
-    nodes.Kinds = options.Roles->Kinds;
+    dgmf::AssignOnHugePages(nodes.Kinds, options.Roles->Kinds.begin(), options.Roles->Kinds.end());
     // The mesh's own boundary where no block was read (a reader asked for the moving patch only)
     // is static: it must not follow the body. Pieces of a distributed mesh need ghost cells.
     if ((!options.Distributed || mesh->GetCellGhostArray()) &&
@@ -390,13 +391,16 @@ void InputGatherer::GatherKinds(
     }
     return;
   }
-  nodes.Kinds.assign(n, dgmf::NodeKind::Interior);
+  // 8 MB at 8M nodes, three times (the kinds, the marker's kept copy, the mapping's): new storage
+  // on huge pages (each 4 KiB fault is costly on a virtual machine: HugePages.h).
   if (marker && this->Marker == marker && this->MarkerMTime == marker->GetMTime() &&
     this->MarkerKinds.size() == n)
   {
-    nodes.Kinds = this->MarkerKinds; // converted and checked before
+    // converted and checked before
+    dgmf::AssignOnHugePages(nodes.Kinds, this->MarkerKinds.begin(), this->MarkerKinds.end());
     return;
   }
+  dgmf::AssignOnHugePages(nodes.Kinds, n, dgmf::NodeKind::Interior);
   if (marker)
   {
     try
@@ -414,7 +418,7 @@ void InputGatherer::GatherKinds(
     }
     this->Marker = marker;
     this->MarkerMTime = marker->GetMTime();
-    this->MarkerKinds = nodes.Kinds;
+    dgmf::AssignOnHugePages(this->MarkerKinds, nodes.Kinds.begin(), nodes.Kinds.end());
     return;
   }
   // No marker: the nodes of the mesh's boundary, moving where their displacement is non-zero.

@@ -17,7 +17,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 
 namespace dgmf_vtk
 {
@@ -25,15 +27,25 @@ namespace mf = dgmf::meshfile;
 
 namespace
 {
-/// Gives `array` `tuples` tuples, its new memory advised huge pages before it is written.
+/// Gives `array` (of numbers) `tuples` tuples, not initialised, on whole huge pages when large
+/// (dgmf::AllocateOnHugePages; the filters' dgmf_vtk::AllocateTuples, whose module this one
+/// does not link, does the same); std::bad_alloc when the memory cannot be had.
 void SetTuples(vtkDataArray* array, std::size_t tuples)
 {
-  array->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
-  if (tuples > 0 && array->GetVoidPointer(0))
+  const std::size_t values = tuples * static_cast<std::size_t>(array->GetNumberOfComponents());
+  if (values == 0)
   {
-    dgmf::AdviseHugePages(array->GetVoidPointer(0),
-      tuples * static_cast<std::size_t>(array->GetNumberOfComponents() * array->GetDataTypeSize()));
+    array->SetNumberOfTuples(0);
+    return;
   }
+  void* memory =
+    dgmf::AllocateOnHugePages(values * static_cast<std::size_t>(array->GetDataTypeSize()));
+  if (!memory)
+  {
+    throw std::bad_alloc();
+  }
+  array->SetVoidArray(
+    memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
 }
 
 /// An unstructured grid of `cells` on the nodes `nodes` (indices into the file's points) of

@@ -1,11 +1,12 @@
 // The advice that large arrays be backed by huge pages (dgmf/HugePages.h): recorded on large
 // ranges only, never beyond them, values kept; the vectors grown on huge pages and the first touch
-// of a large range (dgmf/FirstTouch.h) with it.
+// of a large range (dgmf/FirstTouch.h) with it; allocations made of whole huge pages.
 #include "dgmf/FirstTouch.h"
 #include "dgmf/HugePages.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -182,6 +183,64 @@ TEST(HugePages, AVectorGrownOnHugePagesKeepsItsValuesAndGrowsGeometrically)
   for (std::size_t n = 1; n <= 100000; n += 997)
   {
     ASSERT_EQ(bytes[n - 1], static_cast<std::uint8_t>(n)) << n;
+  }
+}
+
+TEST(HugePages, AllocationsFromAMebibyteUpAreWholeAdvisedHugePages)
+{
+  unsetenv("DGMF_HUGE_PAGES"); // whatever the environment of the tests says
+  const std::uintptr_t hugePage = std::uintptr_t(2) << 20;
+  // Just above the size, so that the last page is mostly beyond what was asked for: the first
+  // and the last byte lie in advised memory, so no part of the array is faulted in 4 KiB pages.
+  const std::size_t bytes = dgmf::HugePageAllocationBytes + 2 * hugePage + 12345;
+  auto* memory = static_cast<unsigned char*>(dgmf::AllocateOnHugePages(bytes));
+  ASSERT_NE(memory, nullptr);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(memory) % hugePage, 0u);
+  if (KernelHasHugePages())
+  {
+    EXPECT_NE(MappingFlags(memory).find(" hg"), std::string::npos) << MappingFlags(memory);
+    EXPECT_NE(MappingFlags(memory + bytes - 1).find(" hg"), std::string::npos)
+      << MappingFlags(memory + bytes - 1);
+  }
+  std::fill_n(memory, bytes, static_cast<unsigned char>(7));
+  EXPECT_EQ(memory[bytes - 1], 7);
+  std::free(memory);
+
+  // Small ones are malloc's, at the alignment asked for.
+  for (const std::size_t alignment : { std::size_t(8), std::size_t(16), std::size_t(128) })
+  {
+    void* small = dgmf::AllocateOnHugePages(1000, alignment);
+    ASSERT_NE(small, nullptr);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(small) % alignment, 0u) << alignment;
+    std::free(small);
+  }
+
+  // Nothing advised when the environment turns it off (64 MiB: beyond malloc's largest mapping
+  // threshold, a new mapping, not heap that an earlier allocation may have advised).
+  setenv("DGMF_HUGE_PAGES", "0", 1);
+  const std::size_t large = std::size_t(64) << 20;
+  auto* off = static_cast<unsigned char*>(dgmf::AllocateOnHugePages(large));
+  unsetenv("DGMF_HUGE_PAGES");
+  ASSERT_NE(off, nullptr);
+  EXPECT_EQ(MappingFlags(off + large / 2).find(" hg"), std::string::npos);
+  std::free(off);
+}
+
+TEST(HugePages, TheUninitialisedVectorKeepsItsElementsAlignment)
+{
+  unsetenv("DGMF_HUGE_PAGES"); // whatever the environment of the tests says
+  struct alignas(128) Padded
+  {
+    double Value[3];
+  };
+  for (const std::size_t count : { std::size_t(3), std::size_t(40000) }) // 384 B and 5 MB
+  {
+    dgmf::UninitializedVector<Padded> values(count);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values.data()) % alignof(Padded), 0u) << count;
+    values.back().Value[2] = 1.5;
+    values.push_back(values.back()); // grows: the old storage freed as it was allocated
+    EXPECT_EQ(values.back().Value[2], 1.5);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values.data()) % alignof(Padded), 0u) << count;
   }
 }
 #endif

@@ -115,11 +115,12 @@ using PairSortTraits = std::conditional_t<std::is_same<Point, Kernel::Point_2>::
  * vertices on the curve, and the curve is drawn through the vertices given in the order of their
  * coordinates, so the order is a function of the points alone: not of CGAL's storage (whose
  * iteration order changes with ReserveTriangulation), nor of the input's numbering. The
- * vertices' info() must be their numbers 0 .. vertices - 1.
+ * vertices' info() must be their numbers 0 .. vertices - 1; `atMost` bounds the number of
+ * elements (storage reserved once).
  */
 template <typename Handle, typename Triangulation, typename ElementIterator>
 std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator begin,
-  ElementIterator end, int corners, const ParallelFor& parallelFor)
+  ElementIterator end, std::size_t atMost, int corners, const ParallelFor& parallelFor)
 {
   using Vertex = typename Triangulation::Vertex_handle;
   using Point = typename Triangulation::Point;
@@ -141,6 +142,7 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
     rank[static_cast<std::size_t>(vertices[r].second->info())] = r;
   }
   std::vector<Handle> elements;
+  elements.reserve(atMost);
   for (ElementIterator e = begin; e != end; ++e)
   {
     elements.push_back(e);
@@ -161,7 +163,8 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
     }
   };
   std::vector<std::uint32_t> first(elements.size());
-  std::vector<Keyed> keyed(elements.size());
+  // The two largest arrays (16 B an element) on huge pages: HugePages.h.
+  UninitializedVector<Keyed> keyed(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
     [&](std::size_t e)
     {
@@ -195,7 +198,7 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   // Each vertex's few elements, in contiguous memory, put in order by an insertion sort.
-  std::vector<Keyed> sorted(elements.size());
+  UninitializedVector<Keyed> sorted(elements.size());
   {
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for (std::size_t e = 0; e < elements.size(); ++e)
@@ -435,7 +438,7 @@ void DelaunayGraph::BuildElements(
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
     faces = HilbertOrderedElements<Delaunay2::Face_handle>(
-      t, t.finite_faces_begin(), t.finite_faces_end(), 3, parallelFor);
+      t, t.finite_faces_begin(), t.finite_faces_end(), t.tds().number_of_faces(), 3, parallelFor);
     NumberElements(faces, n, this->ElementVertices, parallelFor);
     this->Records.resize(faces.size());
     ForEachIndex(parallelFor, faces.size(), ElementBlock,
@@ -465,7 +468,7 @@ void DelaunayGraph::BuildElements(
       this->VertexOfPoint, this->PointOfVertex);
     std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
     cells = HilbertOrderedElements<Delaunay3::Cell_handle>(
-      t, t.finite_cells_begin(), t.finite_cells_end(), 4, parallelFor);
+      t, t.finite_cells_begin(), t.finite_cells_end(), t.number_of_cells(), 4, parallelFor);
     // Infinite cells keep -1, so a walk ending outside the hull is recognised.
     for (auto c = t.all_cells_begin(); c != t.all_cells_end(); ++c)
     {

@@ -111,7 +111,7 @@ public:
   /// The kind of node `i`, as given.
   NodeKind GetNodeKind(std::size_t i) const { return this->Kinds[i]; }
   /// The kinds of all nodes, as given.
-  const std::vector<NodeKind>& GetNodeKinds() const { return this->Kinds; }
+  const UninitializedVector<NodeKind>& GetNodeKinds() const { return this->Kinds; }
   /// True if node `i` is a boundary node (a graph vertex).
   bool IsBoundaryNode(std::size_t i) const { return this->NodeElement[i] < 0; }
   /// The graph vertex of boundary node `i` (only valid when IsBoundaryNode(i)).
@@ -155,7 +155,7 @@ public:
 private:
   std::unique_ptr<DelaunayGraph> Graph;
   std::vector<std::int32_t> BoundaryNodes;
-  std::vector<NodeKind> Kinds;
+  UninitializedVector<NodeKind> Kinds; ///< written in blocks on the threads
   /// >= 0: element of an interior node; < 0: -(vertex + 1) for a boundary node.
   UninitializedVector<std::int32_t> NodeElement;
   UninitializedVector<double> Weights; ///< dim+1 per node

@@ -12,6 +12,8 @@
 #include "dgmf/ParallelFor.h"
 
 #include <cstddef>
+#include <cstdlib>
+#include <limits>
 #include <memory>
 #include <new>
 #include <type_traits>
@@ -57,7 +59,7 @@ void FirstTouchParts(const std::vector<FirstTouchPart>& parts, const ParallelFor
  * An allocator whose default construction leaves trivial values uninitialised: a
  * std::vector<T, DefaultInitAllocator<T>> resized to n elements neither writes nor touches them
  * (FirstTouch can then fault the pages in parts, on the threads). Values given explicitly are
- * constructed as usual. Large allocations are advised huge pages (AdviseHugePages).
+ * constructed as usual. Large allocations are made of whole huge pages (AllocateOnHugePages).
  */
 template <typename T>
 struct DefaultInitAllocator : std::allocator<T>
@@ -74,10 +76,18 @@ struct DefaultInitAllocator : std::allocator<T>
   }
   T* allocate(std::size_t n)
   {
-    T* memory = std::allocator<T>::allocate(n);
-    AdviseHugePages(memory, n * sizeof(T));
-    return memory;
+    if (n > std::numeric_limits<std::size_t>::max() / sizeof(T))
+    {
+      throw std::bad_array_new_length();
+    }
+    void* memory = AllocateOnHugePages(n * sizeof(T), alignof(T));
+    if (!memory)
+    {
+      throw std::bad_alloc();
+    }
+    return static_cast<T*>(memory);
   }
+  void deallocate(T* memory, std::size_t) noexcept { std::free(memory); }
   template <typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
   {

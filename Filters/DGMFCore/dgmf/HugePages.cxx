@@ -45,4 +45,30 @@ void AdviseHugePages(void* begin, std::size_t bytes) noexcept
 #endif
 }
 
+void* AllocateOnHugePages(std::size_t bytes, std::size_t alignment) noexcept
+{
+  if (bytes > SIZE_MAX - HugePage || alignment > HugePage)
+  {
+    return nullptr;
+  }
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (bytes >= HugePageAllocationBytes && AdviceWanted())
+  {
+    const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
+    void* memory = std::aligned_alloc(HugePage, rounded);
+    if (memory)
+    {
+      // Advice only: a refusal (EINVAL where THP is not built in) leaves 4 KiB pages.
+      (void)madvise(memory, rounded, MADV_HUGEPAGE);
+    }
+    return memory;
+  }
+#endif
+  if (alignment > alignof(std::max_align_t))
+  {
+    return std::aligned_alloc(alignment, (bytes + alignment - 1) / alignment * alignment);
+  }
+  return std::malloc(bytes == 0 ? 1 : bytes);
+}
+
 } // namespace dgmf

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <type_traits>
 
 namespace dgmf
@@ -29,6 +30,22 @@ constexpr std::size_t HugePageAdviceBytes = std::size_t(4) << 20;
  * is "0" (default: advised). Pages outside the range are never affected.
  */
 void AdviseHugePages(void* begin, std::size_t bytes) noexcept;
+
+/// Allocations from this size up are made of whole huge pages (AllocateOnHugePages).
+constexpr std::size_t HugePageAllocationBytes = std::size_t(1) << 20;
+
+/**
+ * Allocates `bytes` bytes aligned to `alignment` (a power of two), to be freed with std::free;
+ * null when they cannot be had. From HugePageAllocationBytes up (and unless DGMF_HUGE_PAGES is
+ * "0"), the memory starts on a 2 MiB boundary, is rounded up to whole 2 MiB pages and advised
+ * huge pages, so none of it is faulted in 4 KiB pages: a range advised where it lies
+ * (AdviseHugePages) still faults the parts of its first and last 2 MiB pages that it covers in
+ * 4 KiB pages, 2 MiB on average (512 faults). The cost: at most 2 MiB of memory more than asked
+ * for (the rest of the last page, once touched). Smaller allocations, and all outside Linux, are
+ * std::malloc's (std::aligned_alloc's beyond its alignment).
+ */
+void* AllocateOnHugePages(
+  std::size_t bytes, std::size_t alignment = alignof(std::max_align_t)) noexcept;
 
 /**
  * Gives `values` (a std::vector of numbers) room for at least `count` elements, its new storage
@@ -59,6 +76,29 @@ void ResizeOnHugePages(Vector& values, std::size_t count)
 {
   ReserveOnHugePages(values, count);
   values.resize(count);
+}
+
+/**
+ * Makes `values` (a std::vector of numbers) a copy of [first, last), new storage advised huge
+ * pages before the copy writes it (the vector's own assignment would fault it in 4 KiB pages).
+ * Storage it already has is reused.
+ */
+template <typename Vector, typename Iterator>
+void AssignOnHugePages(Vector& values, Iterator first, Iterator last)
+{
+  values.clear();
+  ReserveOnHugePages(values, static_cast<std::size_t>(std::distance(first, last)));
+  values.assign(first, last);
+}
+
+/// Makes `values` (a std::vector of numbers) `count` copies of `value`, new storage advised huge
+/// pages before it is written (AssignOnHugePages).
+template <typename Vector>
+void AssignOnHugePages(Vector& values, std::size_t count, const typename Vector::value_type& value)
+{
+  values.clear();
+  ReserveOnHugePages(values, count);
+  values.assign(count, value);
 }
 
 } // namespace dgmf
