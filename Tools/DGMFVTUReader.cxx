@@ -1,8 +1,8 @@
 #include "DGMFVTUReader.h"
 
 #include "DGMFAppendedData.h"
-#include "DGMFArrayAllocation.h"
 #include "DGMFCompressedArray.h"
+#include "DGMFTupleAllocation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

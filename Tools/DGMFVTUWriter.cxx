@@ -1,8 +1,8 @@
 #include "DGMFVTUWriter.h"
 
-#include "DGMFArrayAllocation.h"
 #include "DGMFCompressedArray.h"
 #include "DGMFLookAheadCompressor.h"
+#include "DGMFTupleAllocation.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"

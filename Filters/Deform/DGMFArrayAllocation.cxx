@@ -1,4 +1,5 @@
 #include "DGMFArrayAllocation.h"
+#include "DGMFTupleAllocation.h"
 
 #include "dgmf/HugePages.h"
 
@@ -11,25 +12,6 @@
 
 namespace dgmf_vtk
 {
-
-void AllocateTuples(vtkDataArray* array, vtkIdType tuples)
-{
-  const auto values =
-    static_cast<std::size_t>(tuples) * static_cast<std::size_t>(array->GetNumberOfComponents());
-  if (values == 0 || !array->HasStandardMemoryLayout())
-  {
-    array->SetNumberOfTuples(tuples);
-    return;
-  }
-  void* memory =
-    dgmf::AllocateOnHugePages(values * static_cast<std::size_t>(array->GetDataTypeSize()));
-  if (!memory)
-  {
-    throw std::bad_alloc();
-  }
-  array->SetVoidArray(
-    memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
-}
 
 void AllocatePoints(vtkPoints* points, vtkIdType count)
 {

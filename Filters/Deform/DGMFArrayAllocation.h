@@ -19,12 +19,7 @@ class vtkPoints;
 
 namespace dgmf_vtk
 {
-/**
- * Gives `array` `tuples` tuples of its number of components (values not initialised). Arrays
- * with VTK's standard memory layout get memory from the malloc family (freed by VTK), made of
- * whole huge pages when large (dgmf::AllocateOnHugePages); std::bad_alloc when it cannot be had.
- */
-void AllocateTuples(vtkDataArray* array, vtkIdType tuples);
+// AllocateTuples: DGMFTupleAllocation.h, shared with the mesh-file module and dgmf-deform.
 
 /// AllocateTuples on the points' data array.
 void AllocatePoints(vtkPoints* points, vtkIdType count);

@@ -1,6 +1,7 @@
 #include "DGMFCellQuality.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFTupleAllocation.h"
 
 #include "DGMFMeshConversion.h"
 

@@ -4,6 +4,7 @@
 #include "DGMFMergedCells.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
+#include "DGMFTupleAllocation.h"
 
 #include "dgmf/CoincidentPoints.h"
 #include "dgmf/FirstTouch.h"

@@ -1,6 +1,7 @@
 #include "DGMFCoreDeformation.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFTupleAllocation.h"
 
 #include "DGMFBoundaryDetection.h"
 #include "DGMFMemoryGuard.h"

@@ -3,6 +3,7 @@
 #include "DGMFArrayAllocation.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
+#include "DGMFTupleAllocation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"

@@ -3,6 +3,7 @@
 #include "DGMFArrayAllocation.h"
 #include "DGMFFaceCells.h"
 #include "DGMFOutputArrays.h"
+#include "DGMFTupleAllocation.h"
 
 #include "dgmf/ResultNames.h"
 

@@ -1,6 +1,7 @@
 #include "DGMFOutputArrays.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFTupleAllocation.h"
 
 #include "DGMFCellQuality.h"
 #include "DGMFNonOrthogonality.h"

@@ -1,6 +1,7 @@
 #include "DGMFOutputBuffers.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFTupleAllocation.h"
 
 #include "dgmf/ResultNames.h"
 

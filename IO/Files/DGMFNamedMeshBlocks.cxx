@@ -2,7 +2,7 @@
 
 #include "DGMFWriterInputs.h"
 
-#include "dgmf/HugePages.h"
+#include "DGMFTupleAllocation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCompositeDataSet.h"
@@ -17,9 +17,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstring>
-#include <new>
 
 namespace dgmf_vtk
 {
@@ -27,27 +25,6 @@ namespace mf = dgmf::meshfile;
 
 namespace
 {
-/// Gives `array` (of numbers) `tuples` tuples, not initialised, on whole huge pages when large
-/// (dgmf::AllocateOnHugePages; the filters' dgmf_vtk::AllocateTuples, whose module this one
-/// does not link, does the same); std::bad_alloc when the memory cannot be had.
-void SetTuples(vtkDataArray* array, std::size_t tuples)
-{
-  const std::size_t values = tuples * static_cast<std::size_t>(array->GetNumberOfComponents());
-  if (values == 0)
-  {
-    array->SetNumberOfTuples(0);
-    return;
-  }
-  void* memory =
-    dgmf::AllocateOnHugePages(values * static_cast<std::size_t>(array->GetDataTypeSize()));
-  if (!memory)
-  {
-    throw std::bad_alloc();
-  }
-  array->SetVoidArray(
-    memory, static_cast<vtkIdType>(values), 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
-}
-
 /// An unstructured grid of `cells` on the nodes `nodes` (indices into the file's points) of
 /// `mesh`; `local[node]` must map a file node to its index in `nodes` for every node used.
 vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::Cells& cells,
@@ -55,7 +32,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
 {
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
-  SetTuples(coordinates, nodes.size());
+  AllocateTuples(coordinates, static_cast<vtkIdType>(nodes.size()));
   double* xyz = coordinates->GetPointer(0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
@@ -65,9 +42,9 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
   points->SetData(coordinates);
 
   vtkNew<vtkIdTypeArray> offsets, connectivity;
-  SetTuples(offsets, cells.Offsets.size());
+  AllocateTuples(offsets, static_cast<vtkIdType>(cells.Offsets.size()));
   std::copy(cells.Offsets.begin(), cells.Offsets.end(), offsets->GetPointer(0));
-  SetTuples(connectivity, cells.Connectivity.size());
+  AllocateTuples(connectivity, static_cast<vtkIdType>(cells.Connectivity.size()));
   vtkIdType* ids = connectivity->GetPointer(0);
   for (std::size_t k = 0; k < cells.Connectivity.size(); ++k)
   {
@@ -76,7 +53,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Grid(const mf::NamedMesh& mesh, const mf::C
   vtkNew<vtkCellArray> cellArray;
   cellArray->SetData(offsets, connectivity);
   vtkNew<vtkUnsignedCharArray> types;
-  SetTuples(types, cells.Types.size());
+  AllocateTuples(types, static_cast<vtkIdType>(cells.Types.size()));
   std::copy(cells.Types.begin(), cells.Types.end(), types->GetPointer(0));
 
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -97,7 +74,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> ToBlocks(const mf::NamedMesh& mesh)
   vtkSmartPointer<vtkUnstructuredGrid> volume = Grid(mesh, mesh.Volume, all, all);
   vtkNew<vtkIdTypeArray> fileIds;
   fileIds->SetName("FileNodeId");
-  SetTuples(fileIds, n);
+  AllocateTuples(fileIds, static_cast<vtkIdType>(n));
   std::copy(mesh.NodeIds.begin(), mesh.NodeIds.end(), fileIds->GetPointer(0));
   volume->GetPointData()->AddArray(fileIds);
 
