@@ -68,9 +68,7 @@ void Get(const char* in, std::size_t size, std::size_t& at, std::vector<T>& valu
   }
   // `in` is aligned and `at` a multiple of kAlignment: the values are T's in place.
   const T* first = reinterpret_cast<const T*>(in + at);
-  values.clear();
-  ReserveOnHugePages(values, count);
-  values.assign(first, first + count);
+  AssignOnHugePages(values, first, first + count);
   at += Padded(count * sizeof(T));
 }
 
