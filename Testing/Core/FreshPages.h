@@ -1,7 +1,8 @@
 /**
  * @file FreshPages.h
  * @brief Fresh anonymous memory for the first-touch tests (Linux): mapped with no page resident,
- * and the check that exactly the pages of a range became resident, reading as zeros.
+ * and the check that exactly the pages of a range became resident, reading as zeros; the flags
+ * of the mapping that holds an address (huge pages advised: "hg").
  */
 #ifndef dgmf_test_FreshPages_h
 #define dgmf_test_FreshPages_h
@@ -12,6 +13,10 @@
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace dgmf_test
@@ -42,6 +47,37 @@ inline void ExpectOnlyRangeResident(
   {
     ASSERT_EQ(base[i], 0) << "byte " << i;
   }
+}
+
+/// The VmFlags of the mapping of this process that holds `address` (from /proc/self/smaps), or
+/// "" when none does.
+inline std::string MappingFlags(const void* address)
+{
+  const auto at = reinterpret_cast<std::uintptr_t>(address);
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool inside = false;
+  while (std::getline(smaps, line))
+  {
+    std::uintptr_t low = 0, high = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> low >> dash >> high && dash == '-')
+    {
+      inside = low <= at && at < high;
+    }
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+    {
+      return line;
+    }
+  }
+  return "";
+}
+
+/// True when the kernel has transparent huge pages (the advice is then recorded on mappings).
+inline bool KernelHasHugePages()
+{
+  return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
 }
 
 } // namespace dgmf_test

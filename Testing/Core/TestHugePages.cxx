@@ -18,43 +18,14 @@
 #include "FreshPages.h"
 
 using dgmf_test::ExpectOnlyRangeResident;
+using dgmf_test::KernelHasHugePages;
 using dgmf_test::MapFresh;
+using dgmf_test::MappingFlags;
 #endif
 
 namespace
 {
 #if defined(__linux__)
-/// The VmFlags of the mapping of this process that holds `address` (from /proc/self/smaps), or
-/// "" when none does.
-std::string MappingFlags(const void* address)
-{
-  const auto at = reinterpret_cast<std::uintptr_t>(address);
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line;
-  bool inside = false;
-  while (std::getline(smaps, line))
-  {
-    std::uintptr_t low = 0, high = 0;
-    char dash = 0;
-    std::istringstream range(line);
-    if (range >> std::hex >> low >> dash >> high && dash == '-')
-    {
-      inside = low <= at && at < high;
-    }
-    else if (inside && line.rfind("VmFlags:", 0) == 0)
-    {
-      return line;
-    }
-  }
-  return "";
-}
-
-/// True when the kernel has transparent huge pages (the advice is then recorded on mappings).
-bool KernelHasHugePages()
-{
-  return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
-}
-
 /// True when the kernel backs every large enough anonymous mapping with huge pages, advised or
 /// not (policy "always"): pages beyond an advised range may then be faulted in with it.
 bool HugePagesAlways()

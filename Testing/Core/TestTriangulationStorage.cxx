@@ -1,12 +1,11 @@
 // CGAL's storage for the graph's triangulation, reserved before the insertion
 // (DelaunayGraph::ReserveTriangulation): the same triangulation, whether the storage was enough or
 // had to grow. (CGAL's iteration order does change with it; the graph's element order does not:
-// core.DelaunayGraph.TheElementsNumberingDoesNotDependOnThePointsOrder, speed.md.)
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Delaunay_triangulation_cell_base_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+// core.DelaunayGraph.TheElementsNumberingDoesNotDependOnThePointsOrder, speed.md.) That storage
+// is in the huge-page arena, and goes back to it with the graph.
+#include "dgmf/DelaunayGraph.h"
+#include "dgmf/DelaunayGraphCgal.h"
+#include "dgmf/HugePageArena.h"
 
 #include <gtest/gtest.h>
 
@@ -20,14 +19,9 @@
 
 namespace
 {
-// The graph's own types (DelaunayGraph.cxx).
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb3 = CGAL::Triangulation_vertex_base_with_info_3<std::int32_t, Kernel>;
-using Cb3 = CGAL::Triangulation_cell_base_with_info_3<std::int32_t, Kernel,
-  CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
-using Tds3 = CGAL::Triangulation_data_structure_3<Vb3, Cb3>;
-using Delaunay3 = CGAL::Delaunay_triangulation_3<Kernel, Tds3>;
-using Point = Kernel::Point_3;
+// The graph's own types.
+using dgmf::graph_cgal::Delaunay3;
+using Point = dgmf::graph_cgal::Kernel::Point_3;
 
 /// Points of the degenerate kind the graph meets: a sphere's nodes and a box's surface grid,
 /// moved by a little noise (as the graph's perturbation does).
@@ -97,4 +91,31 @@ TEST(TriangulationStorage, ReservedStorageGivesTheSameTriangulation)
     EXPECT_TRUE(reserved.is_valid());
     EXPECT_EQ(Cells(reserved), expected) << perPoint << " cells per point reserved";
   }
+}
+
+TEST(TriangulationStorage, TheGraphsCellsAndVerticesAreInTheHugePageArena)
+{
+  const std::vector<std::pair<Point, std::int32_t>> points = SphereInBox();
+  const std::size_t before = dgmf::HugePageArenaBytes();
+  {
+    Delaunay3 t;
+    t.insert(points.begin(), points.end());
+    // CGAL's containers allocate through std::allocator of the element type, which the graph's
+    // cell and vertex types specialise (DelaunayGraphCgal.h): without it, the arena is empty.
+    const std::size_t cells = t.tds().cells().capacity() * sizeof(Delaunay3::Cell);
+    const std::size_t vertices = t.tds().vertices().capacity() * sizeof(Delaunay3::Vertex);
+    EXPECT_GE(dgmf::HugePageArenaBytes() - before, cells + vertices);
+  }
+  EXPECT_EQ(dgmf::HugePageArenaBytes(), before);
+  // The same through the graph itself.
+  std::vector<double> xyz;
+  for (const auto& point : points)
+  {
+    xyz.insert(xyz.end(), { point.first.x(), point.first.y(), point.first.z() });
+  }
+  {
+    const dgmf::DelaunayGraph graph(3, xyz.data(), points.size());
+    EXPECT_GE(dgmf::HugePageArenaBytes() - before, 6 * points.size() * sizeof(Delaunay3::Cell));
+  }
+  EXPECT_EQ(dgmf::HugePageArenaBytes(), before);
 }
