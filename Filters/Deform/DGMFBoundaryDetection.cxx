@@ -377,7 +377,7 @@ std::vector<vtkIdType> CanonicalPointIds(vtkUnstructuredGrid* mesh)
   const vtkIdType n = mesh->GetNumberOfPoints();
   std::vector<double> copy;
   const double* xyz = PointsAsDouble(mesh->GetPoints(), copy);
-  const std::vector<std::int64_t> first =
+  const dgmf::UninitializedVector<std::int64_t> first =
     dgmf::FirstCoincidentPoints(xyz, static_cast<std::size_t>(n), MakeSMPParallelFor());
   for (std::size_t i = 0; i < first.size(); ++i)
   {

@@ -83,7 +83,8 @@ std::map<unsigned int, std::string> PartitionNames(vtkCompositeDataSet* input)
  * before, then every other point given its first point's node.
  */
 dgmf::UninitializedVector<vtkIdType> NumberNodes(
-  const std::vector<std::int64_t>& first, vtkIdType& nodes, const dgmf::ParallelFor& parallelFor)
+  const dgmf::UninitializedVector<std::int64_t>& first, vtkIdType& nodes,
+  const dgmf::ParallelFor& parallelFor)
 {
   constexpr std::size_t block = std::size_t(1) << 16;
   const std::size_t total = first.size();
@@ -296,7 +297,8 @@ CompositeMesh::CompositeMesh(
   }
 
   // 2. Points at the same place are one node, numbered in the order they are first met.
-  const std::vector<std::int64_t> first = dgmf::FirstCoincidentPoints(pieces, parallelFor);
+  const dgmf::UninitializedVector<std::int64_t> first =
+    dgmf::FirstCoincidentPoints(pieces, parallelFor);
   vtkIdType nodes = 0;
   dgmf::UninitializedVector<vtkIdType> nodeOfPoint = NumberNodes(first, nodes, parallelFor);
   for (std::size_t l = 0; l < blocks.size(); ++l)

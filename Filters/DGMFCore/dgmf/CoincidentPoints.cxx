@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <memory>
 
 namespace dgmf
 {
@@ -43,7 +42,7 @@ struct Block
 };
 } // namespace
 
-std::vector<std::int64_t> FirstCoincidentPoints(
+UninitializedVector<std::int64_t> FirstCoincidentPoints(
   const PointPieces& pieces, const ParallelFor& parallelFor)
 {
   std::vector<Block> blocks;
@@ -104,7 +103,7 @@ std::vector<std::int64_t> FirstCoincidentPoints(
   partStart[parts] = position;
   // 3. The points' hashes and indices spread over the parts, in their order within each part.
   //    Not initialised: the threads that fill them touch their pages first.
-  std::unique_ptr<Record[]> records(new Record[count]);
+  UninitializedVector<Record> records(count);
   ForEachBlock(parallelFor, blocks.size(),
     [&](std::size_t b)
     {
@@ -120,13 +119,13 @@ std::vector<std::int64_t> FirstCoincidentPoints(
     });
   // 4. Each part through its own table (slots: -1, or a record's position in the part and 23
   //    bits of its hash): a point found there takes the first one's index.
-  std::vector<std::int64_t> first(count);
+  UninitializedVector<std::int64_t> first(count);
   ForEachIndex(parallelFor, count, PointsPerBlock,
     [&](std::size_t i) { first[i] = static_cast<std::int64_t>(i); });
   ForEachBlock(parallelFor, parts,
     [&](std::size_t part)
     {
-      const Record* part0 = records.get() + partStart[part];
+      const Record* part0 = records.data() + partStart[part];
       const std::size_t size = partStart[part + 1] - partStart[part];
       std::size_t capacity = 16;
       while (capacity < 2 * size)
@@ -162,7 +161,7 @@ std::vector<std::int64_t> FirstCoincidentPoints(
   return first;
 }
 
-std::vector<std::int64_t> FirstCoincidentPoints(
+UninitializedVector<std::int64_t> FirstCoincidentPoints(
   const double* xyz, std::size_t count, const ParallelFor& parallelFor)
 {
   PointPieces pieces;

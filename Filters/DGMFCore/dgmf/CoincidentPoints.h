@@ -6,6 +6,7 @@
 #ifndef dgmf_CoincidentPoints_h
 #define dgmf_CoincidentPoints_h
 
+#include "dgmf/FirstTouch.h"
 #include "dgmf/ParallelFor.h"
 
 #include <cstddef>
@@ -32,13 +33,14 @@ struct PointPieces
  * each part, on its own thread, goes through an open-addressing table small enough to stay in
  * cache, which reads coordinates only when 23 bits of two hashes agree. The parts and blocks
  * depend on the counts only, so the result does not depend on the threads. About 18 bytes per
- * point while it runs, besides the result.
+ * point while it runs, besides the result. The result and the records are allocated unwritten
+ * (UninitializedVector, on huge pages when large) and first touched by the threads that fill them.
  */
-std::vector<std::int64_t> FirstCoincidentPoints(
+UninitializedVector<std::int64_t> FirstCoincidentPoints(
   const PointPieces& pieces, const ParallelFor& parallelFor);
 
 /// FirstCoincidentPoints of `count` points in one piece (x, y, z at xyz[3 i]).
-std::vector<std::int64_t> FirstCoincidentPoints(
+UninitializedVector<std::int64_t> FirstCoincidentPoints(
   const double* xyz, std::size_t count, const ParallelFor& parallelFor);
 
 } // namespace dgmf
