@@ -119,7 +119,7 @@ using PairSortTraits = std::conditional_t<std::is_same<Point, Kernel::Point_2>::
  * elements (storage reserved once).
  */
 template <typename Handle, typename Triangulation, typename ElementIterator>
-std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator begin,
+UninitializedVector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator begin,
   ElementIterator end, std::size_t atMost, int corners, const ParallelFor& parallelFor)
 {
   using Vertex = typename Triangulation::Vertex_handle;
@@ -141,7 +141,7 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
   {
     rank[static_cast<std::size_t>(vertices[r].second->info())] = r;
   }
-  std::vector<Handle> elements;
+  UninitializedVector<Handle> elements;
   elements.reserve(atMost);
   for (ElementIterator e = begin; e != end; ++e)
   {
@@ -162,8 +162,8 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
         (this->Second == other.Second && this->Fourth < other.Fourth);
     }
   };
-  std::vector<std::uint32_t> first(elements.size());
-  // The two largest arrays (16 B an element) on huge pages: HugePages.h.
+  // The arrays on huge pages (HugePages.h), written by the threads.
+  UninitializedVector<std::uint32_t> first(elements.size());
   UninitializedVector<Keyed> keyed(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
     [&](std::size_t e)
@@ -224,7 +224,7 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
         }
       }
     });
-  std::vector<Handle> ordered(elements.size());
+  UninitializedVector<Handle> ordered(elements.size());
   ForEachIndex(parallelFor, elements.size(), ElementBlock,
     [&](std::size_t e) { ordered[e] = elements[sorted[e].Element]; });
   return ordered;
@@ -233,7 +233,7 @@ std::vector<Handle> HilbertOrderedElements(Triangulation& t, ElementIterator beg
 /// Numbers the ordered elements (their info() becomes their index) and lists their `corners`
 /// vertices, element after element.
 template <typename Handle>
-void NumberElements(const std::vector<Handle>& elements, int corners,
+void NumberElements(const UninitializedVector<Handle>& elements, int corners,
   std::vector<std::int32_t>& elementVertices, const ParallelFor& parallelFor)
 {
   const auto n = static_cast<std::size_t>(corners);
@@ -436,7 +436,7 @@ void DelaunayGraph::BuildElements(
         return f->vertex(li);
       },
       this->VertexOfPoint, this->PointOfVertex);
-    std::vector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
+    UninitializedVector<Delaunay2::Face_handle>& faces = this->Triangulation2->Faces;
     faces = HilbertOrderedElements<Delaunay2::Face_handle>(
       t, t.finite_faces_begin(), t.finite_faces_end(), t.tds().number_of_faces(), 3, parallelFor);
     NumberElements(faces, n, this->ElementVertices, parallelFor);
@@ -466,7 +466,7 @@ void DelaunayGraph::BuildElements(
         return c->vertex(li);
       },
       this->VertexOfPoint, this->PointOfVertex);
-    std::vector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
+    UninitializedVector<Delaunay3::Cell_handle>& cells = this->Triangulation3->Cells;
     cells = HilbertOrderedElements<Delaunay3::Cell_handle>(
       t, t.finite_cells_begin(), t.finite_cells_end(), t.number_of_cells(), 4, parallelFor);
     // Infinite cells keep -1, so a walk ending outside the hull is recognised.

@@ -131,14 +131,14 @@ using Delaunay3 = CGAL::Delaunay_triangulation_3<Kernel, Tds3>;
 struct DelaunayGraph::Impl2
 {
   graph_cgal::Delaunay2 Triangulation;
-  std::vector<graph_cgal::Delaunay2::Face_handle> Faces;
+  UninitializedVector<graph_cgal::Delaunay2::Face_handle> Faces;
 };
 
 /// The 3D triangulation, and its cells by element number.
 struct DelaunayGraph::Impl3
 {
   graph_cgal::Delaunay3 Triangulation;
-  std::vector<graph_cgal::Delaunay3::Cell_handle> Cells;
+  UninitializedVector<graph_cgal::Delaunay3::Cell_handle> Cells;
 };
 
 } // namespace dgmf
