@@ -124,7 +124,7 @@ UninitializedVector<Handle> HilbertOrderedElements(Triangulation& t, ElementIter
 {
   using Vertex = typename Triangulation::Vertex_handle;
   using Point = typename Triangulation::Point;
-  std::vector<std::pair<Point, Vertex>> vertices;
+  UninitializedVector<std::pair<Point, Vertex>> vertices;
   vertices.reserve(t.number_of_vertices());
   for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v)
   {
@@ -136,7 +136,7 @@ UninitializedVector<Handle> HilbertOrderedElements(Triangulation& t, ElementIter
     [](const auto& a, const auto& b) { return a.first < b.first; });
   CGAL::hilbert_sort(vertices.begin(), vertices.end(), PairSortTraits<Point, Vertex>(),
     CGAL::Hilbert_sort_middle_policy());
-  std::vector<std::size_t> rank(vertices.size());
+  UninitializedVector<std::size_t> rank(vertices.size()); // every vertex's, below
   for (std::size_t r = 0; r < vertices.size(); ++r)
   {
     rank[static_cast<std::size_t>(vertices[r].second->info())] = r;
@@ -234,7 +234,7 @@ UninitializedVector<Handle> HilbertOrderedElements(Triangulation& t, ElementIter
 /// vertices, element after element.
 template <typename Handle>
 void NumberElements(const UninitializedVector<Handle>& elements, int corners,
-  std::vector<std::int32_t>& elementVertices, const ParallelFor& parallelFor)
+  UninitializedVector<std::int32_t>& elementVertices, const ParallelFor& parallelFor)
 {
   const auto n = static_cast<std::size_t>(corners);
   elementVertices.resize(n * elements.size());

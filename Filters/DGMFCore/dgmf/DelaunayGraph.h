@@ -190,10 +190,10 @@ private:
   std::unique_ptr<Impl3> Triangulation3;
   std::vector<std::int32_t> VertexOfPoint;
   std::vector<std::int32_t> PointOfVertex;
-  std::vector<double> VertexPositions;
-  std::vector<double> OriginalPositions;
+  UninitializedVector<double> VertexPositions;
+  UninitializedVector<double> OriginalPositions;
   std::size_t FlatElements = 0;
-  std::vector<std::int32_t> ElementVertices;
+  UninitializedVector<std::int32_t> ElementVertices;
   UninitializedVector<WalkRecord> Records; ///< corners and neighbours of each element
   /// Seed grid (see GetSeedElement): origin, inverse cell size, cells per axis, element per cell.
   double SeedOrigin[3] = { 0, 0, 0 };

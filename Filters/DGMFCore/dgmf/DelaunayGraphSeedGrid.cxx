@@ -51,7 +51,7 @@ void DelaunayGraph::BuildSeedGrid(const ParallelFor& parallelFor)
   // elements' cells found on the threads)...
   this->SeedGrid.assign(total, -1);
   const int n = this->Dimension + 1;
-  std::vector<std::size_t> cellOf(elements);
+  UninitializedVector<std::size_t> cellOf(elements); // written by the threads
   ForEachIndex(parallelFor, elements, SeedBlock,
     [&](std::size_t e)
     {

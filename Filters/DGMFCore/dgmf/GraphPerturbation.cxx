@@ -102,6 +102,7 @@ std::vector<double> PerturbPoints(
   };
   std::sort(order.begin(), order.end(), less);
   std::vector<std::array<double, 3>> unique;
+  unique.reserve(count); // no regrowth (each new block of memory is faulted in again)
   std::vector<std::size_t> uniqueOf(count);
   for (std::size_t k = 0; k < count; ++k)
   {

@@ -12,7 +12,9 @@ namespace dgmf
 namespace
 {
 constexpr std::size_t Alignment = alignof(std::max_align_t);
-constexpr std::size_t MinimumChunkBytes = std::size_t(256) << 10;
+// From the first chunk on whole huge pages: the first mebibyte of a large triangulation's storage
+// would otherwise be faulted in 4 KiB pages (256 faults); a small one shares the 2 MiB chunk.
+constexpr std::size_t MinimumChunkBytes = std::size_t(2) << 20;
 constexpr std::size_t MaximumChunkBytes = std::size_t(8) << 20;
 /// Chunks from HugePageAllocationBytes up are rounded to whole huge pages (AllocateOnHugePages
 /// makes them that large anyway).

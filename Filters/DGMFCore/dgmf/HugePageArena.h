@@ -22,8 +22,8 @@ namespace dgmf
  * Allocates `bytes` bytes aligned to alignof(std::max_align_t) from the process's arena, to be
  * returned with DeallocateToHugePageArena. The arena hands out blocks one after the other from
  * its current chunk. A new chunk, when a block does not fit, comes from AllocateOnHugePages (whole
- * huge pages from 1 MiB up) and is as large as the blocks in use (at least 256 KiB, at most 8
- * MiB, or the block's size when larger), so the chunks grow with the demand. Thread-safe (one
+ * huge pages from 1 MiB up) and is as large as the blocks in use (at least 2 MiB, at most 8 MiB,
+ * or the block's size when larger), so the chunks grow with the demand. Thread-safe (one
  * mutex). Throws std::bad_alloc when the memory cannot be had.
  */
 void* AllocateFromHugePageArena(std::size_t bytes);
