@@ -72,6 +72,7 @@ public:
     this->StopWorkers(); // no worker reads the ranges' memory after this
     this->Ranges.clear();
     this->Compressed.clear();
+    this->Spare.clear(); // the buffers' memory back after each write
   }
 
   std::size_t GetBlocksHandedAsRead() const override { return this->HandedAsRead; }
@@ -120,7 +121,9 @@ protected:
       return this->Base::CompressBuffer(data, size, compressed, space); // as VTK would
     }
     std::copy(block->Bytes.begin(), block->Bytes.end(), compressed);
-    return block->Bytes.size();
+    const std::size_t length = block->Bytes.size();
+    this->Recycle(std::move(block->Bytes));
+    return length;
   }
 
 private:
@@ -252,6 +255,20 @@ private:
     this->Threads.clear();
   }
 
+  /// Keeps a block's buffer for the next block a worker compresses (under Mutex): a new buffer
+  /// of a block's size is new memory, faulted in page by page. At most one per block in flight.
+  void Recycle(std::vector<unsigned char>&& bytes)
+  {
+    const std::lock_guard<std::mutex> lock(this->Mutex);
+    const std::size_t inFlight =
+      std::max<std::size_t>(1, this->WindowBytes / std::max<std::size_t>(1, this->Size)) +
+      static_cast<std::size_t>(this->Workers);
+    if (this->Spare.size() < inFlight)
+    {
+      this->Spare.push_back(std::move(bytes));
+    }
+  }
+
   /// A worker: compresses the queued blocks in order until stopped.
   void Work()
   {
@@ -265,6 +282,11 @@ private:
       }
       std::shared_ptr<Block> block = std::move(this->Queue.front());
       this->Queue.pop_front();
+      if (!this->Spare.empty())
+      {
+        block->Bytes = std::move(this->Spare.back());
+        this->Spare.pop_back();
+      }
       lock.unlock();
       try
       {
@@ -297,6 +319,7 @@ private:
   std::mutex Mutex;
   std::condition_variable WorkQueued, BlockDone;
   std::deque<std::shared_ptr<Block>> Ahead, Queue;
+  std::vector<std::vector<unsigned char>> Spare; ///< buffers of blocks handed out (Recycle)
   const unsigned char* Next = nullptr;
   const unsigned char* End = nullptr;
   std::size_t Size = 1;
