@@ -19,6 +19,9 @@ mkdir -p "$OUT"
   grep MemTotal /proc/meminfo
   echo "compiler: $(c++ --version | head -1)"
   echo "VTK (ParaView): $(pvpython --version 2>/dev/null | head -1)"
+  # The cost of new memory, which varies from day to day on virtual machines (speed.md).
+  /usr/bin/python3 "$SOURCE_DIR/scripts/page-fault-probe.py"
+  echo "transparent huge pages: $(cat /sys/kernel/mm/transparent_hugepage/enabled 2>/dev/null)"
 } > "$OUT/machine.txt"
 # Node numbering (issue 18): the largest mesh, DGMF, numbered three ways.
 "$BUILD_DIR/bin/dgmf-benchmark" --sizes "${NUMBERING_SIZES:-3}" --methods dgmf --threads 1,2 \
