@@ -16,8 +16,7 @@ constexpr std::size_t Alignment = alignof(std::max_align_t);
 // would otherwise be faulted in 4 KiB pages (256 faults); a small one shares the 2 MiB chunk.
 constexpr std::size_t MinimumChunkBytes = std::size_t(2) << 20;
 constexpr std::size_t MaximumChunkBytes = std::size_t(8) << 20;
-/// Chunks from HugePageAllocationBytes up are rounded to whole huge pages (AllocateOnHugePages
-/// makes them that large anyway).
+/// Chunks are rounded to whole huge pages (AllocateOnHugePages makes them that large anyway).
 constexpr std::size_t HugePage = std::size_t(2) << 20;
 
 /// The head of a chunk: its size, the bytes handed out from its start, its blocks in use.
@@ -76,10 +75,7 @@ void* AllocateFromHugePageArena(std::size_t bytes)
   {
     std::size_t size = std::max(sizeof(Chunk) + need,
       std::min(MaximumChunkBytes, std::max(MinimumChunkBytes, arena.BlockBytes)));
-    if (size >= HugePageAllocationBytes)
-    {
-      size = (size + HugePage - 1) / HugePage * HugePage;
-    }
+    size = (size + HugePage - 1) / HugePage * HugePage;
     void* memory = AllocateOnHugePages(size);
     if (!memory)
     {
@@ -87,10 +83,8 @@ void* AllocateFromHugePageArena(std::size_t bytes)
     }
     Chunk* fresh = new (memory) Chunk{ size, sizeof(Chunk), 0 };
     arena.ChunkBytes += size;
-    if (chunk && chunk->Blocks == 0)
-    {
-      FreeChunk(arena, chunk);
-    }
+    // The chunk that was current keeps its blocks (an empty chunk is freed at once), its rest
+    // unused until they are all returned.
     arena.Current = chunk = fresh;
   }
   char* at = reinterpret_cast<char*>(chunk) + chunk->Used;
