@@ -197,10 +197,16 @@ private:
     return block;
   }
 
+  /// The blocks queued ahead at most: the window's bytes in blocks of the current size.
+  std::size_t WindowBlocks() const
+  {
+    return std::max<std::size_t>(1, this->WindowBytes / this->Size);
+  }
+
   /// Queues blocks up to the window (when half of it is left, or `now`), and wakes the workers.
   void Refill(bool now)
   {
-    const std::size_t window = std::max<std::size_t>(1, this->WindowBytes / this->Size);
+    const std::size_t window = this->WindowBlocks();
     if (this->Next == this->End || (!now && 2 * this->Ahead.size() > window))
     {
       return;
@@ -260,10 +266,7 @@ private:
   void Recycle(std::vector<unsigned char>&& bytes)
   {
     const std::lock_guard<std::mutex> lock(this->Mutex);
-    const std::size_t inFlight =
-      std::max<std::size_t>(1, this->WindowBytes / std::max<std::size_t>(1, this->Size)) +
-      static_cast<std::size_t>(this->Workers);
-    if (this->Spare.size() < inFlight)
+    if (this->Spare.size() < this->WindowBlocks() + static_cast<std::size_t>(this->Workers))
     {
       this->Spare.push_back(std::move(bytes));
     }
