@@ -213,7 +213,7 @@ NodeRoles AssignRoles(
   }
 
   NodeRoles roles;
-  dgmf::ResizeOnHugePages(roles.Kinds, n);
+  roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());
   roles.SlipNames = selection.Slip;
   const auto kindOf = [&](std::size_t i)

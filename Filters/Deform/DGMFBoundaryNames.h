@@ -8,6 +8,7 @@
 #define DGMFBoundaryNames_h
 
 #include "dgmf/ExtrudedLayers.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
 
 #include <cstdint>
@@ -53,7 +54,7 @@ struct BoundarySelection
 /// The role of every merged node, from the selection.
 struct NodeRoles
 {
-  std::vector<dgmf::NodeKind> Kinds;
+  dgmf::UninitializedVector<dgmf::NodeKind> Kinds;  ///< written in blocks on the threads
   std::vector<std::int32_t> BodyIds;                ///< with several moving bodies, else empty
   std::vector<std::vector<std::int32_t>> SlipNodes; ///< per slip entry, its slip nodes
   std::vector<std::string> SlipNames;               ///< the entries, for messages

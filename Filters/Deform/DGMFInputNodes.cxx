@@ -57,6 +57,14 @@ vtkDataArray* FindPointArray(
       std::to_string(array->GetNumberOfComponents()) + " components; it must have " +
       std::to_string(components) + ".");
   }
+  // A malformed input (pipelines check this, hand-made grids may not): its values per node are
+  // read by index.
+  if (array->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+  {
+    throw std::invalid_argument("The " + what + " array '" + name + "' has " +
+      std::to_string(array->GetNumberOfTuples()) + " tuples; the mesh has " +
+      std::to_string(mesh->GetNumberOfPoints()) + " points.");
+  }
   return array;
 }
 
@@ -391,24 +399,23 @@ void InputGatherer::GatherKinds(
     }
     return;
   }
-  // 8 MB at 8M nodes, three times (the kinds, the marker's kept copy, the mapping's): new storage
-  // on huge pages (each 4 KiB fault is costly on a virtual machine: HugePages.h).
-  if (marker && this->Marker == marker && this->MarkerMTime == marker->GetMTime() &&
-    this->MarkerKinds.size() == n)
+  // 8 MB at 8M nodes, three times (the kinds, the marker's kept copy, the mapping's). The marker
+  // is converted on the threads into the kept copy, whose storage (whole huge pages, not
+  // zero-filled: UninitializedVector) stays while the marker does; the nodes' kinds are a copy
+  // of it (new storage on huge pages: each 4 KiB fault is costly on a virtual machine,
+  // HugePages.h).
+  if (marker &&
+    !(this->Marker == marker && this->MarkerMTime == marker->GetMTime() &&
+      this->MarkerKinds.size() == n))
   {
-    // converted and checked before
-    dgmf::AssignOnHugePages(nodes.Kinds, this->MarkerKinds.begin(), this->MarkerKinds.end());
-    return;
-  }
-  dgmf::AssignOnHugePages(nodes.Kinds, n, dgmf::NodeKind::Interior);
-  if (marker)
-  {
+    this->Marker = nullptr;      // until the conversion succeeds
+    this->MarkerKinds.resize(n); // every kind written by the conversion
     try
     {
       MarkerToKinds worker;
-      if (!vtkArrayDispatch::Dispatch::Execute(marker, worker, nodes.Kinds.data()))
+      if (!vtkArrayDispatch::Dispatch::Execute(marker, worker, this->MarkerKinds.data()))
       {
-        worker(marker, nodes.Kinds.data()); // an array type outside the dispatch list
+        worker(marker, this->MarkerKinds.data()); // an array type outside the dispatch list
       }
     }
     catch (const std::invalid_argument& e)
@@ -418,9 +425,13 @@ void InputGatherer::GatherKinds(
     }
     this->Marker = marker;
     this->MarkerMTime = marker->GetMTime();
-    dgmf::AssignOnHugePages(this->MarkerKinds, nodes.Kinds.begin(), nodes.Kinds.end());
+  }
+  if (marker)
+  {
+    dgmf::AssignOnHugePages(nodes.Kinds, this->MarkerKinds.begin(), this->MarkerKinds.end());
     return;
   }
+  dgmf::AssignOnHugePages(nodes.Kinds, n, dgmf::NodeKind::Interior);
   // No marker: the nodes of the mesh's boundary, moving where their displacement is non-zero.
   if (options.Distributed && !mesh->GetCellGhostArray())
   {

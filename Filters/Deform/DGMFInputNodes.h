@@ -14,6 +14,7 @@
 
 #include "dgmf/DeformationProblem.h"
 #include "dgmf/ExtrudedLayers.h"
+#include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
 
 #include "vtkType.h"
@@ -131,7 +132,7 @@ private:
   // The kinds of the last marker array (checked once).
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;
-  std::vector<dgmf::NodeKind> MarkerKinds;
+  dgmf::UninitializedVector<dgmf::NodeKind> MarkerKinds; ///< converted on the threads
   // The boundary facets depend on the cells only (and on whether points may coincide).
   bool DistinctPoints = false;
   ContentKey Cells;

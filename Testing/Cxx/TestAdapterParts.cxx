@@ -11,6 +11,7 @@
 #include "DGMFOutputArrays.h"
 #include "DGMFOutputBuffers.h"
 #include "DGMFSMPTools.h"
+#include "TwoSquares.h"
 
 #include "dgmf/ResultNames.h"
 
@@ -44,33 +45,6 @@
 
 namespace
 {
-/// Two unit squares side by side in the plane z = 0 (6 nodes, 2 quads), with a marker: the left
-/// edge static, the right edge moving.
-vtkSmartPointer<vtkUnstructuredGrid> TwoSquares(double x0 = 0.0)
-{
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (int j = 0; j < 2; ++j)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      points->InsertNextPoint(x0 + i, j, 0.0);
-    }
-  }
-  grid->SetPoints(points);
-  const vtkIdType left[4] = { 0, 1, 4, 3 }, right[4] = { 1, 2, 5, 4 };
-  grid->InsertNextCell(VTK_QUAD, 4, left);
-  grid->InsertNextCell(VTK_QUAD, 4, right);
-  vtkNew<vtkIntArray> marker;
-  marker->SetName("BoundaryMarker");
-  for (int value : { 1, 0, 2, 1, 0, 2 })
-  {
-    marker->InsertNextValue(value);
-  }
-  grid->GetPointData()->AddArray(marker);
-  return grid;
-}
 
 void SetEnvironment(const char* name, const char* value)
 {
@@ -547,108 +521,4 @@ TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChan
   blocks->SetBlock(1, TwoSquares(2.0));
   cache.Get(blocks, "", "");
   EXPECT_FALSE(cache.WasReused());
-}
-
-TEST(InputNodes, AMarkerOfManyBlocksIsConvertedOnTheThreadsAndItsFirstBadValueNamed)
-{
-  // 200,000 points in the plane z = 0 (and a triangle: a 2D mesh), a marker of 1s and 2s: converted
-  // in blocks of 65,536 on two threads.
-  const vtkIdType n = 200000;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkIntArray> marker;
-  marker->SetName("BoundaryMarker");
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->InsertNextPoint(double(i % 1000), double(i / 1000), 0.0);
-    marker->InsertNextValue(i % 3 == 0 ? 2 : i % 3 == 1 ? 1 : 0);
-  }
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(points);
-  const vtkIdType triangle[3] = { 0, 1, 1000 };
-  grid->InsertNextCell(VTK_TRIANGLE, 3, triangle);
-  grid->GetPointData()->AddArray(marker);
-  dgmf_vtk::GatherOptions options;
-  options.Arrays.Marker = "BoundaryMarker";
-  const auto gather = [&]()
-  {
-    std::string error = "no error";
-    dgmf_vtk::InputGatherer gatherer;
-    dgmf_vtk::InputNodes nodes;
-    dgmf_vtk::RunWithThreads(2,
-      [&]()
-      {
-        try
-        {
-          gatherer.Gather(grid, options, nodes);
-        }
-        catch (const std::invalid_argument& e)
-        {
-          error = e.what();
-        }
-      });
-    return std::make_pair(nodes.Kinds, error);
-  };
-  const auto good = gather();
-  ASSERT_EQ(good.second, "no error");
-  ASSERT_EQ(good.first.size(), static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const dgmf::NodeKind expected = i % 3 == 0 ? dgmf::NodeKind::MovingBoundary
-      : i % 3 == 1                             ? dgmf::NodeKind::StaticBoundary
-                                               : dgmf::NodeKind::Interior;
-    ASSERT_EQ(good.first[static_cast<std::size_t>(i)], expected) << "point " << i;
-  }
-  // Bad values in the second and third blocks (and a later one in the second): the first is
-  // named, whichever block a thread finishes first.
-  marker->SetValue(150000, 9);
-  marker->SetValue(70001, 5);
-  marker->SetValue(131000, 4);
-  marker->Modified();
-  EXPECT_NE(
-    gather().second.find("'BoundaryMarker' has the value 5 at point 70001"), std::string::npos);
-}
-
-TEST(InputNodes, ArraysAreFoundCheckedForShapeAndNamedInErrors)
-{
-  auto grid = TwoSquares();
-  dgmf_vtk::InputGatherer gatherer;
-  dgmf_vtk::InputNodes nodes;
-  dgmf_vtk::GatherOptions options;
-  options.Arrays.Marker = "BoundaryMarker";
-  const dgmf_vtk::SelectedArrays arrays = options.Arrays;
-  gatherer.Gather(grid, options, nodes);
-  EXPECT_EQ(nodes.NumberOfNodes, 6u);
-  EXPECT_EQ(nodes.Dimension, 2);
-  EXPECT_EQ(nodes.Kinds[2], dgmf::NodeKind::MovingBoundary);
-  EXPECT_EQ(nodes.Displacement, nullptr);
-  const auto message = [&](const dgmf_vtk::SelectedArrays& selected)
-  {
-    try
-    {
-      dgmf_vtk::InputNodes ignored;
-      dgmf_vtk::GatherOptions given;
-      given.Arrays = selected;
-      gatherer.Gather(grid, given, ignored);
-    }
-    catch (const std::invalid_argument& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(
-    message(dgmf_vtk::SelectedArrays()).find("Select a boundary-marker array"), std::string::npos);
-  dgmf_vtk::SelectedArrays wrong;
-  wrong.Displacement = "BoundaryMarker";
-  EXPECT_NE(
-    message(wrong).find("'BoundaryMarker' has 1 components; it must have 3"), std::string::npos);
-  wrong = arrays;
-  wrong.BodyIds = "Nope";
-  EXPECT_NE(
-    message(wrong).find("The body-id array 'Nope' is not a point array"), std::string::npos);
-  grid->GetPointData()->GetArray("BoundaryMarker")->SetTuple1(1, 7);
-  grid->GetPointData()->GetArray("BoundaryMarker")->Modified();
-  EXPECT_NE(
-    message(arrays).find("The boundary-marker array 'BoundaryMarker' has the value 7 at point 1"),
-    std::string::npos);
 }
