@@ -396,3 +396,37 @@ TEST(DGMFDeformation, DampedRotationMatchesSinAndCosForSmallAndLargeAngles)
     EXPECT_LT(worst, 1e-14) << degrees << " degrees"; // |x| = 5.1: a few units in the last place
   }
 }
+
+TEST(DGMFDeformation, RAndFInOnePassAreTheBitsOfTheirOwnPasses)
+{
+  // A first deformation makes r and f in one pass (ComputeDampingField); a new damping function
+  // or r0s makes them apart. Every function, two values of r0s, two threads.
+  const dgmf_test::NodeSet set = dgmf_test::SphereInBox(5000);
+  const dgmf::DelaunayMapping mapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), TwoThreadFor);
+  for (const double r0s : { 1.0, 2.5 })
+  {
+    for (int u = 1; u <= 7; ++u)
+    {
+      const auto damping = static_cast<dgmf::DampingFunction>(u);
+      std::vector<double> r(set.Size()), f(set.Size()), rTogether(set.Size(), -1.0),
+        fTogether(set.Size(), -1.0);
+      dgmf::ComputeBoundaryDistanceField(mapping, r0s, r.data(), TwoThreadFor);
+      dgmf::ComputeDampingFactor(mapping, damping, r.data(), f.data(), TwoThreadFor);
+      dgmf::ComputeDampingField(
+        mapping, r0s, damping, rTogether.data(), fTogether.data(), TwoThreadFor);
+      EXPECT_EQ(std::memcmp(r.data(), rTogether.data(), r.size() * sizeof(double)), 0) << u;
+      EXPECT_EQ(std::memcmp(f.data(), fTogether.data(), f.size() * sizeof(double)), 0) << u;
+      // f is the scalar function's value at every interior node, and exactly 0 or 1 on the
+      // boundary.
+      for (std::size_t i = 0; i < set.Size(); ++i)
+      {
+        const double expected = set.Kinds[i] == dgmf::NodeKind::Interior
+          ? dgmf::EvaluateDamping(damping, r[i])
+          : set.Kinds[i] == dgmf::NodeKind::MovingBoundary ? 1.0
+                                                           : 0.0;
+        ASSERT_EQ(fTogether[i], expected) << "node " << i << ", u" << u;
+      }
+    }
+  }
+}

@@ -27,6 +27,13 @@ const double* UpdateDampingField(const DelaunayMapping& mapping, const MethodPar
   const FieldKey rKey{ p.StaticR0, 0 };
   const FieldKey fKey{ p.StaticR0, static_cast<int>(p.Damping) };
   const double* r = store.Find(names::R, rKey);
+  if (!r && !store.Find(names::F, fKey)) // a new mapping, as a rule: both in one pass
+  {
+    double* rWritten = store.Store(names::R, rKey);
+    double* fWritten = store.Store(names::F, fKey);
+    ComputeDampingField(mapping, p.StaticR0, p.Damping, rWritten, fWritten, parallelFor);
+    return fWritten;
+  }
   if (!r)
   {
     double* written = store.Store(names::R, rKey);
