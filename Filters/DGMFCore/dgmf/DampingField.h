@@ -56,7 +56,7 @@ void ComputeDampingFactor(const DelaunayMapping& mapping, DampingFunction u, con
 /**
  * ComputeBoundaryDistanceField and ComputeDampingFactor in one pass over the nodes (the same
  * values, bit for bit): each node's f from its r while both are at hand, instead of a second
- * pass that reads r and the kinds again (about 0.02 s of a first deformation at 8.26M nodes).
+ * pass that reads r and the kinds again (what a first deformation needs).
  */
 void ComputeDampingField(const DelaunayMapping& mapping, double staticR0, DampingFunction u,
   double* r, double* f, const ParallelFor& parallelFor);
