@@ -102,12 +102,6 @@ void FindBoundaryFacesByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets
   }
 }
 
-/// The 2D cell types the boundary takes as they are (as polygons).
-bool IsPolygonType(int type)
-{
-  return type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_PIXEL || type == VTK_POLYGON;
-}
-
 /// Whether `types` (CellTypesPresent) has 2D cells, and whether they are all polygons.
 void Find2DTypes(const std::array<bool, 256>& types, bool& any, bool& polygonsOnly)
 {
@@ -155,15 +149,14 @@ void AddFacesOfOneCell(
  * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
  * `canonical` ones when given.
  */
-void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
-  bool has2DCells, BoundaryFacets& facets)
+/// The polygons of `mesh` as boundary facets, as they are (vtkGeometryFilter passes 2D cells
+/// through), but ghost cells; point ids through `canonical` when it is not empty.
+void AddPolygons(
+  vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical, BoundaryFacets& facets)
 {
-  AddFacesOfOneCell(VTKFaceCells(mesh, &canonical), mesh, facets);
   vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
   std::vector<vtkIdType> ids;
-  // 2D cells are boundary facets as they are (vtkGeometryFilter passes them through).
-  const vtkIdType numberOfCells = has2DCells ? mesh->GetNumberOfCells() : 0;
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
     const int type = mesh->GetCellType(c);
     if (!IsPolygonType(type) || IsGhostCell(ghosts, c))
@@ -186,45 +179,72 @@ void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vt
   }
 }
 
-/// The faces of a grid's 3D cells (VTKFaceCells), and each of its polygons as one face.
+void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
+  bool has2DCells, BoundaryFacets& facets)
+{
+  AddFacesOfOneCell(VTKFaceCells(mesh, &canonical), mesh, facets);
+  if (has2DCells)
+  {
+    AddPolygons(mesh, canonical, facets);
+  }
+}
+
+/**
+ * The faces of a grid's 3D cells (VTKFaceCells), and each of its polygons as one face; then each
+ * polygon of `patches` (on the same points; may be null) as one face, numbered after the grid's
+ * cells.
+ */
 class FacesAndPolygons : public dgmf::FaceCells
 {
 public:
-  explicit FacesAndPolygons(vtkUnstructuredGrid* mesh)
+  FacesAndPolygons(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
     : Mesh(mesh)
+    , Patches(patches)
     , Faces(mesh)
+    , MeshCells(static_cast<std::size_t>(mesh->GetNumberOfCells()))
   {
   }
-  std::size_t GetNumberOfCells() const override { return this->Faces.GetNumberOfCells(); }
+  std::size_t GetNumberOfCells() const override
+  {
+    return this->MeshCells +
+      (this->Patches ? static_cast<std::size_t>(this->Patches->GetNumberOfCells()) : 0);
+  }
   const std::int64_t* GetCornerFaces(
     std::size_t cell, std::vector<std::int64_t>& corners) const override
   {
-    return this->Faces.GetCornerFaces(cell, corners); // polygons: none (not a 3D shape)
+    // Polygons: none (not a 3D shape).
+    return cell < this->MeshCells ? this->Faces.GetCornerFaces(cell, corners) : nullptr;
   }
   const std::int64_t* GetCornerRun(std::size_t cell, std::size_t maxCells, const void*& ids,
     std::size_t& count, int& cornersPerCell) const override
   {
-    return this->Faces.GetCornerRun(cell, maxCells, ids, count, cornersPerCell);
+    return cell < this->MeshCells
+      ? this->Faces.GetCornerRun(
+          cell, std::min(maxCells, this->MeshCells - cell), ids, count, cornersPerCell)
+      : nullptr;
   }
   void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
   {
-    const auto id = static_cast<vtkIdType>(cell);
-    if (!IsPolygonType(this->Mesh->GetCellType(id)))
+    vtkUnstructuredGrid* grid = cell < this->MeshCells ? this->Mesh : this->Patches;
+    const auto id = static_cast<vtkIdType>(cell < this->MeshCells ? cell : cell - this->MeshCells);
+    if (!IsPolygonType(grid->GetCellType(id)))
     {
-      this->Faces.GetFaces(cell, stream);
+      this->Faces.GetFaces(cell, stream); // a cell of the mesh
       return;
     }
     vtkIdType npts = 0;
     const vtkIdType* pts = nullptr;
     thread_local vtkNew<vtkIdList> scratch; // called for every cell, on every thread
-    this->Mesh->GetCells()->GetCellAtId(id, npts, pts, scratch);
+    grid->GetCells()->GetCellAtId(id, npts, pts, scratch);
     stream.assign({ 1, static_cast<std::int64_t>(npts) }); // the order of the points is no matter
     stream.insert(stream.end(), pts, pts + npts);
   }
 
 private:
   vtkUnstructuredGrid* Mesh;
+  vtkUnstructuredGrid* Patches;
   VTKFaceCells Faces;
+  std::size_t MeshCells;
 };
 
 /**
@@ -489,18 +509,41 @@ BoundaryFacets FindBoundaryFacetsByGeometryFilter(
                         : FacetsByGeometryFilter(mesh, std::move(facets));
 }
 
+BoundaryFacets FindBoundaryFacets(
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches, int dimension, bool distinctPoints)
+{
+  BoundaryFacets facets = FindBoundaryFacets(mesh, dimension, distinctPoints);
+  if (!patches || dimension != 3 || patches->GetNumberOfCells() == 0)
+  {
+    return facets;
+  }
+  AddPolygons(patches, facets.Canonical, facets);
+  return SortedFacets(facets);
+}
+
 bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh)
 {
-  const std::array<bool, 256> types = CellTypesPresent(mesh);
+  return PolygonsCloseTheMesh(mesh, nullptr);
+}
+
+bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
+{
+  std::array<bool, 256> types = CellTypesPresent(mesh);
+  const std::array<bool, 256> patchTypes =
+    patches ? CellTypesPresent(patches) : std::array<bool, 256>{};
   bool has2DCells = false;
   bool polygonsOnly = true;
+  for (int type = 0; type < 256; ++type)
+  {
+    types[type] = types[type] || patchTypes[type];
+  }
   Find2DTypes(types, has2DCells, polygonsOnly);
   if (!has2DCells || !polygonsOnly || !VTKFaceCells::CoversAll3DCells(types) ||
     mesh->GetCellGhostArray())
   {
     return false;
   }
-  return dgmf::FacesPairUp(FacesAndPolygons(mesh),
+  return dgmf::FacesPairUp(FacesAndPolygons(mesh, patches),
     static_cast<std::size_t>(mesh->GetNumberOfPoints()), MakeSMPParallelFor());
 }
 

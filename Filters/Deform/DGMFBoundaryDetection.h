@@ -49,6 +49,14 @@ BoundaryFacets FindBoundaryFacets(
   vtkUnstructuredGrid* mesh, int dimension, bool distinctPoints = false);
 
 /**
+ * FindBoundaryFacets of `mesh` with the polygons of `patches` (a composite input's boundary
+ * patches, kept apart on the same points: CompositeMesh::GetPatches) as 2D cells of it: the
+ * same facets as for one grid with both grids' cells. `patches` may be null.
+ */
+BoundaryFacets FindBoundaryFacets(
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches, int dimension, bool distinctPoints);
+
+/**
  * The boundary of a mesh as FindBoundaryFacets gives it, always by VTK's own means: 3D faces from
  * vtkGeometryFilter, 2D edges by counting each edge's cells in a hash map (the paths for cells the
  * face matching does not read, and the reference the tests compare it with).
@@ -66,6 +74,10 @@ BoundaryFacets FindBoundaryFacetsByGeometryFilter(
  * other than polygons).
  */
 bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh);
+
+/// PolygonsCloseTheMesh of `mesh` with the polygons of `patches` (on the same points; may be
+/// null) as 2D cells of it.
+bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches);
 
 /// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
 std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);

@@ -11,7 +11,9 @@
 #include "dgmf/ResultNames.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -253,8 +255,6 @@ CompositeMesh::CompositeMesh(
   const std::map<unsigned int, std::string> partitionNames = PartitionNames(input);
   std::vector<vtkPointSet*> blocks;
   std::vector<std::size_t> firstPoint{ 0 };
-  vtkIdType totalCells = 0;
-  vtkIdType totalIds = 0;
   auto iterator = vtk::TakeSmartPointer(input->NewIterator());
   iterator->SkipEmptyNodesOn();
   for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
@@ -277,11 +277,6 @@ CompositeMesh::CompositeMesh(
     {
       leaf.Name = partition->second; // a partition of a named partitioned data set (IOSS reader)
     }
-    vtkIdType cells = 0;
-    vtkIdType ids = 0;
-    CountCells(block, cells, ids);
-    totalCells += cells;
-    totalIds += ids;
     blocks.push_back(block);
     firstPoint.push_back(firstPoint.back() + static_cast<std::size_t>(block->GetNumberOfPoints()));
     this->Leaves.push_back(std::move(leaf));
@@ -383,23 +378,92 @@ CompositeMesh::CompositeMesh(
     }
   }
 
-  // 5. The cells, their points renumbered.
-  MergedCells cells(totalCells, totalIds);
+  // 5. The cells. A 3D mesh's patches (leaves of polygons only) go to a grid of their own on the
+  //    same points, so that the volume's cells can be shared rather than copied.
+  std::vector<std::uint8_t> polygonsOnly(blocks.size());
+  int largest = 0;
   for (std::size_t l = 0; l < blocks.size(); ++l)
+  {
+    bool polygons = true;
+    this->Leaves[l].CellDimension = CellDimensionOf(blocks[l], polygons);
+    polygonsOnly[l] = polygons ? 1 : 0;
+    largest = std::max(largest, this->Leaves[l].CellDimension);
+  }
+  std::vector<std::size_t> volume, patches;
+  for (std::size_t l = 0; l < blocks.size(); ++l)
+  {
+    (largest == 3 && this->Leaves[l].CellDimension < 3 ? patches : volume).push_back(l);
+  }
+  if (!std::all_of(patches.begin(), patches.end(), [&](std::size_t l) { return polygonsOnly[l]; }))
+  {
+    // Lines or other lower-dimensional cells: every cell in the merged grid, as the single-grid
+    // path sees such a mesh.
+    volume.resize(blocks.size());
+    std::iota(volume.begin(), volume.end(), std::size_t(0));
+    patches.clear();
+  }
+  this->SetCells(blocks, volume, this->Merged);
+  if (!patches.empty())
+  {
+    this->Patches = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    this->Patches->SetPoints(mergedPoints);
+    for (std::size_t l : patches)
+    {
+      this->Leaves[l].InPatches = true;
+    }
+    this->SetCells(blocks, patches, this->Patches);
+  }
+}
+
+void CompositeMesh::SetCells(const std::vector<vtkPointSet*>& blocks,
+  const std::vector<std::size_t>& merged, vtkUnstructuredGrid* grid)
+{
+  if (merged.size() == 1 && grid == this->Merged)
+  {
+    // One grid leaf on the merged nodes in their order (a CFD reader's volume): its cells as
+    // they are. 64-bit storage only (the face matching's fast path reads it), no polyhedra (their
+    // face arrays are checked while copied).
+    Leaf& leaf = this->Leaves[merged[0]];
+    auto* leafGrid = vtkUnstructuredGrid::SafeDownCast(blocks[merged[0]]);
+    vtkCellArray* cells = leafGrid ? leafGrid->GetCells() : nullptr;
+    if (leaf.SameNumbering && cells && cells->IsStorage64Bit() && leafGrid->GetCellTypesArray() &&
+      leafGrid->GetNumberOfCells() > 0 && !CellTypesPresent(leafGrid)[VTK_POLYHEDRON])
+    {
+      grid->SetCells(leafGrid->GetCellTypesArray(), cells);
+      leaf.FirstCell = 0;
+      leaf.Cells = leafGrid->GetNumberOfCells();
+      this->SharedCells = true;
+      return;
+    }
+  }
+  vtkIdType totalCells = 0;
+  vtkIdType totalIds = 0;
+  for (std::size_t l : merged)
+  {
+    vtkIdType cells = 0;
+    vtkIdType ids = 0;
+    CountCells(blocks[l], cells, ids);
+    totalCells += cells;
+    totalIds += ids;
+  }
+  MergedCells cells(totalCells, totalIds);
+  for (std::size_t l : merged)
   {
     Leaf& leaf = this->Leaves[l];
     leaf.FirstCell = cells.NumberOfCells;
-    leaf.CellDimension = cells.Append(blocks[l], leaf);
+    cells.Append(blocks[l], leaf);
     leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
   }
-  cells.SetOn(this->Merged);
+  cells.SetOn(grid);
 }
 
-void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDataSet* output) const
+void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed,
+  vtkUnstructuredGrid* deformedPatches, vtkCompositeDataSet* output) const
 {
   namespace names = dgmf::names;
   output->Initialize();
-  this->Scatter(deformed, { names::R, names::F }, { names::SizeSkew, names::Inverted }, output);
+  this->Scatter(deformed, deformedPatches, { names::R, names::F },
+    { names::SizeSkew, names::Inverted }, output);
   vtkNew<vtkFieldData> fieldData;
   fieldData->PassData(this->Input->GetFieldData());
   for (int k = 0; k < deformed->GetFieldData()->GetNumberOfArrays(); ++k)
@@ -409,7 +473,7 @@ void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDat
   output->SetFieldData(fieldData);
 }
 
-void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
+void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed, vtkUnstructuredGrid* deformedPatches,
   const std::vector<std::string>& pointArrays, const std::vector<std::string>& cellArrays,
   vtkCompositeDataSet* output) const
 {
@@ -434,7 +498,9 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     // A leaf whose points are the merged grid's, in its order (the volume of a CFD reader's
     // output, as a rule), shares the deformed points and arrays; the others get copies.
     const bool allPoints = leaf.SameNumbering && n == deformed->GetNumberOfPoints();
-    const bool allCells = leaf.FirstCell == 0 && leaf.Cells == deformed->GetNumberOfCells();
+    vtkUnstructuredGrid* cellsFrom = leaf.InPatches ? deformedPatches : deformed;
+    const bool allCells =
+      cellsFrom && leaf.FirstCell == 0 && leaf.Cells == cellsFrom->GetNumberOfCells();
     if (allPoints)
     {
       copy->SetPoints(deformed->GetPoints());
@@ -454,7 +520,8 @@ void CompositeMesh::Scatter(vtkUnstructuredGrid* deformed,
     }
     for (const std::string& name : cellArrays)
     {
-      if (vtkDataArray* result = deformed->GetCellData()->GetArray(name.c_str()))
+      if (vtkDataArray* result =
+            cellsFrom ? cellsFrom->GetCellData()->GetArray(name.c_str()) : nullptr)
       {
         copy->GetCellData()->AddArray(
           allCells ? result : Range(result, leaf.FirstCell, leaf.Cells).Get());

@@ -14,6 +14,7 @@
 #include <vector>
 
 class vtkCompositeDataSet;
+class vtkPointSet;
 class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
@@ -23,6 +24,10 @@ namespace dgmf_vtk
  * The blocks of a composite dataset as one unstructured grid. Every leaf with explicit points
  * (unstructured grids, polydata such as boundary patches, structured grids) contributes its cells;
  * nodes at exactly the same coordinates, in the same or different blocks, become one node.
+ * A 3D mesh's boundary patches (leaves of polygons only: the OpenFOAM, CGNS and Exodus readers'
+ * patches, zones' boundaries and side sets) keep their cells in a grid of their own on the same
+ * points (GetPatches()), so that the volume's cells need no copy when one leaf has them all on
+ * the merged nodes in order (a CFD reader's internal mesh): the merged grid then shares them.
  * The merged grid carries the point arrays `displacementName` and `markerName` when they are not
  * empty (first non-zero value found for each merged node, except the boundary marker, which
  * keeps the largest: a node that moves in any block moves); a block without the array
@@ -34,8 +39,18 @@ public:
   CompositeMesh(
     vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName);
 
-  /// The merged grid (empty when no leaf has points).
+  /// The merged grid (empty when no leaf has points): every leaf's cells but the patches'.
   vtkUnstructuredGrid* GetMergedMesh() const { return this->Merged; }
+
+  /**
+   * The boundary patches' polygons, on the merged grid's points (the same vtkPoints), or null
+   * when the cells are all in the merged grid (no 3D cells, no patches, or a lower-dimensional
+   * leaf with cells other than polygons, such as lines).
+   */
+  vtkUnstructuredGrid* GetPatches() const { return this->Patches; }
+
+  /// Whether the merged grid's cells are an input leaf's (shared, not copied).
+  bool SharesInputCells() const { return this->SharedCells; }
 
   /// Whether the merged grid's points are an input leaf's (a leaf with all of them, in order).
   bool SharesInputPoints() const { return this->SharedPoints; }
@@ -47,17 +62,20 @@ public:
    * The deformation's result as the composite output: Scatter() with the filters' point arrays
    * (r, f) and cell arrays (SizeSkew, Inverted), and the input's field data with the result's.
    */
-  void ScatterResult(vtkUnstructuredGrid* deformed, vtkCompositeDataSet* output) const;
+  void ScatterResult(vtkUnstructuredGrid* deformed, vtkUnstructuredGrid* deformedPatches,
+    vtkCompositeDataSet* output) const;
 
   /**
    * Builds the output: `output` gets the structure of the input; every merged leaf becomes a copy
    * of the input leaf (all its arrays) with the deformed points and the merged result's point
-   * arrays `pointArrays` and cell arrays `cellArrays`; the other leaves are passed as they are.
-   * A leaf with all the merged points in the merged order (all its cells) shares the deformed
-   * points and point arrays (cell arrays) instead of copying them.
+   * arrays `pointArrays` and cell arrays `cellArrays` (a patch's from `deformedPatches`, the
+   * deformed GetPatches(); may be null without patches); the other leaves are passed as they
+   * are. A leaf with all the merged points in the merged order (all its grid's cells) shares the
+   * deformed points and point arrays (cell arrays) instead of copying them.
    */
-  void Scatter(vtkUnstructuredGrid* deformed, const std::vector<std::string>& pointArrays,
-    const std::vector<std::string>& cellArrays, vtkCompositeDataSet* output) const;
+  void Scatter(vtkUnstructuredGrid* deformed, vtkUnstructuredGrid* deformedPatches,
+    const std::vector<std::string>& pointArrays, const std::vector<std::string>& cellArrays,
+    vtkCompositeDataSet* output) const;
 
   /// A leaf of the input merged into the grid.
   struct Leaf
@@ -69,9 +87,10 @@ public:
     /// Node().
     std::vector<vtkIdType> NodeOf;
     vtkIdType NumberOfPoints;   ///< the leaf's points
-    vtkIdType FirstCell, Cells; ///< the leaf's cells in the merged grid
+    vtkIdType FirstCell, Cells; ///< the leaf's cells in its grid (merged grid or patches)
     int CellDimension;          ///< largest dimension of its cells (0 without cells)
     bool SameNumbering;         ///< point i is merged node i, for every point
+    bool InPatches = false;     ///< its cells are in GetPatches(), not in the merged grid
 
     /// The merged node of the leaf's point `i`.
     vtkIdType Node(vtkIdType i) const
@@ -87,11 +106,18 @@ public:
   vtkCompositeDataSet* GetInput() const { return this->Input; }
 
 private:
+  /// The cells of the leaves `merged` (their indices in Leaves) into `grid`: for the merged grid,
+  /// shared when one grid leaf has them all on the merged nodes in order; else copied.
+  void SetCells(const std::vector<vtkPointSet*>& blocks, const std::vector<std::size_t>& merged,
+    vtkUnstructuredGrid* grid);
+
   vtkCompositeDataSet* Input;
   vtkSmartPointer<vtkUnstructuredGrid> Merged;
+  vtkSmartPointer<vtkUnstructuredGrid> Patches; // null: every cell in Merged
   std::vector<Leaf> Leaves;
   int Skipped = 0;
   bool SharedPoints = false;
+  bool SharedCells = false;
 };
 
 } // namespace dgmf_vtk

@@ -1,9 +1,11 @@
 #include "DGMFCompositeMeshCache.h"
 
+#include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkInformation.h"
 #include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 namespace dgmf_vtk
@@ -52,11 +54,24 @@ std::size_t CompositeMeshCache::GetMemorySize() const
   {
     return 0;
   }
+  // What the input holds is not the cache's: its points, its volume's cells when shared.
+  const auto kib = [](unsigned long size) { return 1024 * static_cast<std::size_t>(size); };
   vtkUnstructuredGrid* merged = this->Mesh->GetMergedMesh();
-  std::size_t bytes = 1024 * static_cast<std::size_t>(merged->GetActualMemorySize());
-  if (this->Mesh->SharesInputPoints() && merged->GetPoints()) // the input's, not the cache's
+  std::size_t bytes = kib(merged->GetActualMemorySize());
+  const std::size_t points =
+    merged->GetPoints() ? kib(merged->GetPoints()->GetActualMemorySize()) : 0;
+  if (this->Mesh->SharesInputPoints())
   {
-    bytes -= 1024 * static_cast<std::size_t>(merged->GetPoints()->GetActualMemorySize());
+    bytes -= points;
+  }
+  if (this->Mesh->SharesInputCells())
+  {
+    bytes -= kib(merged->GetCells()->GetActualMemorySize()) +
+      kib(merged->GetCellTypesArray()->GetActualMemorySize());
+  }
+  if (vtkUnstructuredGrid* patches = this->Mesh->GetPatches())
+  {
+    bytes += kib(patches->GetActualMemorySize()) - points; // on the merged grid's points
   }
   for (const CompositeMesh::Leaf& leaf : this->Mesh->GetLeaves())
   {

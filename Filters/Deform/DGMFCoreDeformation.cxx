@@ -105,14 +105,16 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
         "Sub-steps and the quality guard are not available in distributed runs.");
     }
     cells = extruded
-      ? LayerCells(caches.Inputs.GetBoundaryFacets(mesh, nodes.Dimension), nodes.Points, layers)
-      : ToCellMesh(mesh);
+      ? LayerCells(caches.Inputs.GetBoundaryFacets(mesh, nodes.Patches, nodes.Dimension),
+          nodes.Points, layers)
+      : ToCellMesh(mesh, nodes.Patches);
     solved.Cells = &cells;
   }
   std::vector<double> weights;
   if (needs.BoundaryWeights)
   {
-    const BoundaryFacets& facets = caches.Inputs.GetBoundaryFacets(mesh, nodes.Dimension);
+    const BoundaryFacets& facets =
+      caches.Inputs.GetBoundaryFacets(mesh, nodes.Patches, nodes.Dimension);
     weights = ComputeBoundaryNodeWeights(
       extruded ? SelectFacets(facets, nodes.Points, layers, false, 0.0) : facets, nodes.Points,
       static_cast<vtkIdType>(nodes.NumberOfNodes), nodes.Dimension);

@@ -40,6 +40,7 @@ struct DeformationCaches
   InternalFacesCache Faces;                ///< for the non-orthogonality
   HexReferenceCache HexReferences;         ///< the hexahedra's original half of the quality
   QualityArrays Quality;                   ///< the quality's arrays, reused
+  QualityArrays PatchQuality;              ///< those of a composite input's patches
   CompositeMeshCache Composite;            ///< a composite input's merged grid
   /// The node roles of the named boundaries, while the merge and the selection are unchanged.
   struct

@@ -106,6 +106,13 @@ struct MarkerToKinds
     }
   }
 };
+
+/// What tells a composite input's boundary patches apart between executions: 0 without them, else
+/// a hash of their cells (polygons only: a fraction of a millisecond).
+std::uint64_t PatchesKey(vtkUnstructuredGrid* patches)
+{
+  return patches ? (HashCells(patches) | 1u) : 0;
+}
 } // namespace
 
 SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm)
@@ -147,6 +154,7 @@ void InputGatherer::Gather(
   }
   nodes.NumberOfNodes = n;
   nodes.LocalNodes = n;
+  nodes.Patches = options.Patches;
   this->DistinctPoints = options.DistinctPoints;
   nodes.Points = PointsAsDouble(mesh->GetPoints(), nodes.PointCopy);
   nodes.Dimension =
@@ -297,7 +305,7 @@ std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
   vtkUnstructuredGrid* mesh, const InputNodes& nodes)
 {
   const std::size_t n = nodes.NumberOfNodes;
-  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Dimension);
+  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Patches, nodes.Dimension);
   std::vector<std::uint8_t> flags = FlagBoundaryNodes(facets, static_cast<vtkIdType>(n));
   if (nodes.Layers.Found())
   {
@@ -329,20 +337,35 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
     return false;
   }
   vtkCellArray* cells = mesh->GetCells();
-  if (!this->ClosingCells.Matches(cells, [&]() { return HashCells(mesh); }))
+  vtkUnstructuredGrid* patches = nodes.Patches;
+  const std::uint64_t patchesKey = PatchesKey(patches);
+  if (!this->ClosingCells.Matches(cells, [&]() { return HashCells(mesh); }) ||
+    this->ClosingPatches != patchesKey)
   {
     this->ClosingPolygons.clear();
-    if (PolygonsCloseTheMesh(mesh))
+    if (PolygonsCloseTheMesh(mesh, patches))
     {
-      std::array<bool, 256> is2D = CellTypesPresent(mesh);
-      for (int type = 0; type < 256; ++type)
+      const auto polygonsOf = [](vtkUnstructuredGrid* grid)
       {
-        is2D[type] =
-          is2D[type] && vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 2;
+        std::array<bool, 256> is2D = CellTypesPresent(grid);
+        for (int type = 0; type < 256; ++type)
+        {
+          is2D[type] =
+            is2D[type] && vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == 2;
+        }
+        return CellsOfTypes(grid, is2D);
+      };
+      this->ClosingPolygons = polygonsOf(mesh);
+      if (patches) // numbered after the mesh's cells
+      {
+        for (vtkIdType c : polygonsOf(patches))
+        {
+          this->ClosingPolygons.push_back(mesh->GetNumberOfCells() + c);
+        }
       }
-      this->ClosingPolygons = CellsOfTypes(mesh, is2D);
     }
     this->ClosingCells.Set(cells, [&]() { return HashCells(mesh); });
+    this->ClosingPatches = patchesKey;
   }
   if (this->ClosingPolygons.empty())
   {
@@ -352,11 +375,19 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
   // planes of a one-cell-thick mesh.
   const dgmf::ExtrudedLayers& layers = nodes.Layers;
   vtkNew<vtkIdList> scratch;
+  const vtkIdType meshCells = mesh->GetNumberOfCells();
   for (vtkIdType c : this->ClosingPolygons)
   {
     vtkIdType npts = 0;
     const vtkIdType* pts = nullptr;
-    cells->GetCellAtId(c, npts, pts, scratch);
+    if (c < meshCells)
+    {
+      cells->GetCellAtId(c, npts, pts, scratch);
+    }
+    else
+    {
+      patches->GetCells()->GetCellAtId(c - meshCells, npts, pts, scratch);
+    }
     const auto onPlane = [&](double plane)
     {
       return std::all_of(
@@ -460,15 +491,18 @@ void InputGatherer::GatherKinds(
   }
 }
 
-const BoundaryFacets& InputGatherer::GetBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension)
+const BoundaryFacets& InputGatherer::GetBoundaryFacets(
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches, int dimension)
 {
   vtkCellArray* cells = mesh->GetCells();
   const auto hashCells = [&]() { return HashCells(mesh); };
-  if (!this->Facets || !this->Cells.Matches(cells, hashCells))
+  const std::uint64_t patchesKey = PatchesKey(patches);
+  if (!this->Facets || !this->Cells.Matches(cells, hashCells) || this->FacetPatches != patchesKey)
   {
-    this->Facets =
-      std::make_unique<BoundaryFacets>(FindBoundaryFacets(mesh, dimension, this->DistinctPoints));
+    this->Facets = std::make_unique<BoundaryFacets>(
+      FindBoundaryFacets(mesh, patches, dimension, this->DistinctPoints));
     this->Cells.Set(cells, hashCells);
+    this->FacetPatches = patchesKey;
   }
   return *this->Facets;
 }

@@ -68,6 +68,8 @@ struct InputNodes
   dgmf::SlipConstraint Slip;         ///< the slip boundaries' nodes and planes
   dgmf::ExtrudedLayers Layers;       ///< the two layers of a one-cell-thick mesh, if it is one
   std::vector<std::string> Warnings; ///< for the user
+  /// A composite input's boundary patches on the mesh's points (GatherOptions::Patches), or null.
+  vtkUnstructuredGrid* Patches = nullptr;
 
   /// The nodes as a core problem (one default rigid motion: the caller sets the motions).
   dgmf::DeformationProblem ToProblem() const;
@@ -90,6 +92,9 @@ struct GatherOptions
   const NodeRoles* Roles = nullptr; ///< node roles from boundary names (then no marker is read)
   int OneCellThick = OneCellThickDetect;
   bool DistinctPoints = false; ///< no two points coincide (a merged composite input)
+  /// A composite input's boundary patches, kept apart from the mesh on its points
+  /// (CompositeMesh::GetPatches): their polygons are the mesh's 2D cells as well.
+  vtkUnstructuredGrid* Patches = nullptr;
 };
 
 /**
@@ -112,8 +117,10 @@ public:
    */
   void Gather(vtkUnstructuredGrid* mesh, const GatherOptions& options, InputNodes& nodes);
 
-  /// The boundary facets of `mesh` (cached while its cells are unchanged).
-  const BoundaryFacets& GetBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension);
+  /// The boundary facets of `mesh` with the polygons of `patches` (may be null; cached while
+  /// the cells of both are unchanged).
+  const BoundaryFacets& GetBoundaryFacets(
+    vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches, int dimension);
 
   /// Memory kept between executions, in bytes.
   std::size_t GetMemorySize() const;
@@ -136,10 +143,12 @@ private:
   // The boundary facets depend on the cells only (and on whether points may coincide).
   bool DistinctPoints = false;
   ContentKey Cells;
+  std::uint64_t FacetPatches = 0; // PatchesKey of the facets' patches
   std::unique_ptr<BoundaryFacets> Facets;
   // Whether the polygons close the mesh (PolygonsCloseTheMesh) depends on the cells only: then
-  // the polygons' cell ids, else none.
+  // the polygons' cell ids (the patches' numbered after the mesh's cells), else none.
   ContentKey ClosingCells;
+  std::uint64_t ClosingPatches = 0; // PatchesKey of the closing polygons' patches
   std::vector<vtkIdType> ClosingPolygons;
   // The layers of a one-cell-thick mesh depend on the points only (looking for them takes one
   // pass over the points; a repeated deformation need not pay it).

@@ -7,7 +7,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
-#include "vtkCellTypes.h"
 #include "vtkIdList.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -73,7 +72,7 @@ MergedCells::MergedCells(vtkIdType cells, vtkIdType ids)
   this->Offsets->SetValue(0, 0);
 }
 
-int MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
+void MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
   if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
@@ -81,10 +80,11 @@ int MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
     const std::array<bool, 256> present = CellTypesPresent(grid);
     if (!present[VTK_POLYHEDRON] || (grid->GetFaceLocations() && grid->GetFaces()))
     {
-      return this->AppendGrid(grid, leaf, present);
+      this->AppendGrid(grid, leaf, present);
+      return;
     }
   }
-  return this->AppendCellByCell(block, leaf);
+  this->AppendCellByCell(block, leaf);
 }
 
 void MergedCells::SetOn(vtkUnstructuredGrid* grid)
@@ -107,7 +107,7 @@ void MergedCells::SetOn(vtkUnstructuredGrid* grid)
   grid->SetCells(this->Types, cells, idArray(this->FaceLocations), idArray(this->Faces));
 }
 
-int MergedCells::AppendGrid(
+void MergedCells::AppendGrid(
   vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf, const std::array<bool, 256>& present)
 {
   const vtkIdType cells = grid->GetNumberOfCells();
@@ -144,15 +144,6 @@ int MergedCells::AppendGrid(
   }
   this->NumberOfCells += cells;
   this->NumberOfIds += ids;
-  int dimension = 0;
-  for (int type = 0; type < 256; ++type)
-  {
-    if (present[type])
-    {
-      dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-    }
-  }
-  return dimension;
 }
 
 void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf)
@@ -200,9 +191,8 @@ void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const Composi
   }
 }
 
-int MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
+void MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
 {
-  int dimension = 0;
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
   auto* polyData = vtkPolyData::SafeDownCast(block);
   vtkNew<vtkIdList> ids;
@@ -234,7 +224,6 @@ int MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf&
     const int type = block->GetCellType(c);
     types[this->NumberOfCells++] = static_cast<unsigned char>(type);
     offsets[this->NumberOfCells] = this->NumberOfIds;
-    dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
     if (type == VTK_POLYHEDRON && grid)
     {
       // Polyhedra need their faces, renumbered like their points.
@@ -255,7 +244,6 @@ int MergedCells::AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf&
       }
     }
   }
-  return dimension;
 }
 
 } // namespace dgmf_vtk

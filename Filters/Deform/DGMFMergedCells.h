@@ -37,8 +37,8 @@ public:
   MergedCells(vtkIdType cells, vtkIdType ids);
 
   /// Appends the cells of `block`, their points renumbered to the merged nodes of `leaf`
-  /// (CompositeMesh::Leaf::Node); returns the largest dimension of its cells.
-  int Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
+  /// (CompositeMesh::Leaf::Node).
+  void Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 
   /// Gives `grid` the cells.
   void SetOn(vtkUnstructuredGrid* grid);
@@ -49,12 +49,12 @@ public:
 private:
   /// A grid: its types, offsets and connectivity array by array, and its polyhedra's faces
   /// (VTK's face locations and faces arrays) polyhedron by polyhedron.
-  int AppendGrid(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf,
+  void AppendGrid(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf,
     const std::array<bool, 256>& present);
   /// The faces of the grid's polyhedra, renumbered; std::runtime_error when a polyhedron's faces
   /// run past the faces array.
   void AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf);
-  int AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
+  void AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 
   vtkNew<vtkUnsignedCharArray> Types;
   vtkNew<vtkIdTypeArray> Offsets;

@@ -130,6 +130,41 @@ std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh)
   return present;
 }
 
+bool IsPolygonType(int vtkCellType)
+{
+  return vtkCellType == VTK_TRIANGLE || vtkCellType == VTK_QUAD || vtkCellType == VTK_PIXEL ||
+    vtkCellType == VTK_POLYGON;
+}
+
+int CellDimensionOf(vtkPointSet* block, bool& polygonsOnly)
+{
+  std::array<bool, 256> present{};
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
+  {
+    present = CellTypesPresent(grid);
+  }
+  else
+  {
+    vtkNew<vtkCellTypes> types;
+    block->GetCellTypes(types);
+    for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
+    {
+      present[types->GetCellType(k)] = true;
+    }
+  }
+  int dimension = 0;
+  polygonsOnly = true;
+  for (int type = 0; type < 256; ++type)
+  {
+    if (present[type] && type != VTK_EMPTY_CELL)
+    {
+      dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+      polygonsOnly = polygonsOnly && IsPolygonType(type);
+    }
+  }
+  return dimension;
+}
+
 std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted)
 {
   vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
@@ -156,25 +191,28 @@ std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<
   return cells;
 }
 
-dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh)
+dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
 {
   dgmf::CellMesh cells;
   cells.NumberOfPoints = static_cast<std::size_t>(mesh->GetNumberOfPoints());
   cells.Offsets.push_back(0);
   vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  for (vtkUnstructuredGrid* grid : { mesh, patches })
   {
-    mesh->GetCellPoints(c, ids);
-    dgmf::CellShape shape = dgmf::CellShape::Triangle;
-    const int* order = nullptr;
-    const bool covered = CellShapeOf(mesh->GetCellType(c), shape, order);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    for (vtkIdType c = 0; grid && c < grid->GetNumberOfCells(); ++c)
     {
-      cells.Connectivity.push_back(ids->GetId(covered && k < 8 ? order[k] : k));
+      grid->GetCellPoints(c, ids);
+      dgmf::CellShape shape = dgmf::CellShape::Triangle;
+      const int* order = nullptr;
+      const bool covered = CellShapeOf(grid->GetCellType(c), shape, order);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        cells.Connectivity.push_back(ids->GetId(covered && k < 8 ? order[k] : k));
+      }
+      cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
+      cells.Shapes.push_back(shape);
+      cells.Covered.push_back(covered ? 1 : 0);
     }
-    cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
-    cells.Shapes.push_back(shape);
-    cells.Covered.push_back(covered ? 1 : 0);
   }
   return cells;
 }

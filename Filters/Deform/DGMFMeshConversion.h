@@ -44,11 +44,23 @@ vtkSmartPointer<vtkUnstructuredGrid> AsUnstructuredGrid(vtkPointSet* points);
  */
 std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh);
 
+/// The 2D cell types a boundary takes as they are, as polygons: triangles, quads, pixels, polygons.
+bool IsPolygonType(int vtkCellType);
+
+/**
+ * The largest dimension of the cells of `block` (0 without cells), and whether all its cells are
+ * polygons (IsPolygonType; true without cells).
+ */
+int CellDimensionOf(vtkPointSet* block, bool& polygonsOnly);
+
 /// The ids of the cells whose type is `wanted`, in increasing order (one pass on the threads).
 std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted);
 
-/// The grid's cells in the corner order of the size-skew metric (the quality guard's input).
-dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh);
+/**
+ * The grid's cells in the corner order of the size-skew metric (the quality guard's input), then
+ * those of `patches` (a composite input's boundary patches on the same points) when not null.
+ */
+dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches = nullptr);
 
 /// 2 when the mesh is planar (no 3D cell, all z equal), 3 otherwise; -1 for 2D cells off a z plane.
 int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n);

@@ -326,7 +326,8 @@ int vtkDGMFDeformFilter::RequestData(
   // global.
   const dgmf_vtk::CompositeMesh* composite = nullptr;
   vtkNew<vtkUnstructuredGrid> mergedOutput;
-  vtkNew<vtkUnstructuredGrid> noMesh; // a process whose merge failed takes part with it
+  vtkNew<vtkUnstructuredGrid> patchesOutput; // the merged input's patches, deformed
+  vtkNew<vtkUnstructuredGrid> noMesh;        // a process whose merge failed takes part with it
   if (merged)
   {
     output = mergedOutput;
@@ -368,7 +369,7 @@ int vtkDGMFDeformFilter::RequestData(
           // reused.
           compositeOutput->Initialize();
         }
-        status = this->Execute(input, output, composite, mergeFailure);
+        status = this->Execute(input, output, patchesOutput, composite, mergeFailure);
       });
   }
   catch (const dgmf::Aborted& e)
@@ -403,7 +404,7 @@ int vtkDGMFDeformFilter::RequestData(
   }
   else if (composite)
   {
-    composite->ScatterResult(output, compositeOutput);
+    composite->ScatterResult(output, patchesOutput, compositeOutput);
   }
   if (status && internal.TimeDependent)
   {
@@ -413,7 +414,8 @@ int vtkDGMFDeformFilter::RequestData(
 }
 
 int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
-  const dgmf_vtk::CompositeMesh* composite, const std::string& failure)
+  vtkUnstructuredGrid* patchesOutput, const dgmf_vtk::CompositeMesh* composite,
+  const std::string& failure)
 {
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds =
@@ -429,6 +431,8 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   options.Distributed = distributed;
   options.OneCellThick = this->OneCellThickMode;
   options.DistinctPoints = composite != nullptr; // the merge made every point distinct
+  vtkUnstructuredGrid* patches = composite ? composite->GetPatches() : nullptr;
+  options.Patches = patches;
   if (distributed)
   {
     double z = 0.0;
@@ -499,6 +503,10 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   // 4. The outputs: the input's cells and arrays, the new points, the method's results, the
   // quality.
   dgmf_vtk::SetDeformedGrid(input, output, newPoints, nodes.LocalNodes);
+  if (patches)
+  {
+    dgmf_vtk::SetDeformedGrid(patches, patchesOutput, newPoints, nodes.LocalNodes);
+  }
   dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
   if (internal.TimeDependent)
@@ -516,6 +524,14 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     dgmf_vtk::AddOutputQuality(input, nodes.Points, newCoordinates->GetPointer(0), output,
       this->ComputeQuality, hexReferences, this->ComputeNonOrthogonality ? &cache.Faces : nullptr,
       dgmf_vtk::MakeSMPParallelFor(), &cache.Quality);
+  if (patches && this->ComputeQuality)
+  {
+    // The patches' polygons get their SizeSkew; the summary is the volume's, as for one grid
+    // (ComputeCellQuality leaves the cells of a lower dimension out of it).
+    dgmf_vtk::AddCellQuality(patches, nodes.Points, newCoordinates->GetPointer(0),
+      patchesOutput->GetCellData(), patchesOutput->GetFieldData(), dgmf_vtk::HexReferences(),
+      dgmf_vtk::MakeSMPParallelFor(), &cache.PatchQuality);
+  }
   this->LastQualitySeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - qualityStart).count();
   if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)

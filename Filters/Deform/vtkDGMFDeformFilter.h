@@ -599,9 +599,11 @@ private:
   void operator=(const vtkDGMFDeformFilter&) = delete;
 
   /// Steps 2-4 on the merged or given grid; `failure`, when not empty, is an error of the merge
-  /// (this process then fails, and in a distributed run every process with it).
+  /// (this process then fails, and in a distributed run every process with it). A composite
+  /// input's boundary patches, deformed, go to `patchesOutput`.
   int Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output,
-    const dgmf_vtk::CompositeMesh* composite, const std::string& failure);
+    vtkUnstructuredGrid* patchesOutput, const dgmf_vtk::CompositeMesh* composite,
+    const std::string& failure);
 
   struct Internals; ///< the caches (graph, r and f, boundary, output points) and body motions
   std::unique_ptr<Internals> Internal;

@@ -419,10 +419,8 @@ TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFac
   ASSERT_EQ(facets.Size(), static_cast<std::size_t>(6 * 2 * 16 * 16));
   // The volume and its boundary triangles (a reader's boundary patches) in one grid, the
   // triangles' points in reverse order; `skip` leaves out one, `twice` repeats one.
-  const auto withPatches = [&](std::size_t skip, std::size_t twice)
+  const auto addTriangles = [&](vtkUnstructuredGrid* mesh, std::size_t skip, std::size_t twice)
   {
-    auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    mesh->DeepCopy(volume);
     for (std::size_t f = 0; f < facets.Size(); ++f)
     {
       std::vector<vtkIdType> ids(
@@ -433,7 +431,23 @@ TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFac
         mesh->InsertNextCell(VTK_TRIANGLE, static_cast<vtkIdType>(ids.size()), ids.data());
       }
     }
+  };
+  const auto withPatches = [&](std::size_t skip, std::size_t twice)
+  {
+    auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    mesh->DeepCopy(volume);
+    addTriangles(mesh, skip, twice);
     return mesh;
+  };
+  // The same triangles kept apart, on the volume's points (a composite input's patches:
+  // CompositeMesh::GetPatches).
+  const auto patchesApart = [&](std::size_t skip, std::size_t twice)
+  {
+    auto patches = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    patches->SetPoints(volume->GetPoints());
+    patches->Allocate(static_cast<vtkIdType>(facets.Size()));
+    addTriangles(patches, skip, twice);
+    return patches;
   };
   const std::size_t none = facets.Size();
   for (int threads : { 1, 2 })
@@ -445,8 +459,21 @@ TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFac
         EXPECT_TRUE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(none, none))) << "closed";
         EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(17, none))) << "one missing";
         EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(withPatches(none, 17))) << "one twice";
+        EXPECT_TRUE(dgmf_vtk::PolygonsCloseTheMesh(volume, patchesApart(none, none)))
+          << "closed apart";
+        EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(volume, patchesApart(17, none)))
+          << "one missing apart";
+        EXPECT_FALSE(dgmf_vtk::PolygonsCloseTheMesh(volume, patchesApart(none, 17)))
+          << "one twice apart";
       });
   }
+  // The boundary facets with the patches apart are those of the one grid, in the same order.
+  const dgmf_vtk::BoundaryFacets one = dgmf_vtk::FindBoundaryFacets(withPatches(none, 17), 3);
+  const dgmf_vtk::BoundaryFacets apart =
+    dgmf_vtk::FindBoundaryFacets(volume, patchesApart(none, 17), 3, false);
+  EXPECT_EQ(one.Size(), 2 * facets.Size() + 1); // each face, as a face and as its triangle(s)
+  EXPECT_EQ(apart.Ids, one.Ids);
+  EXPECT_EQ(apart.Offsets, one.Offsets);
   // Ghost cells (a piece of a distributed mesh): their outer faces are not the boundary.
   auto ghosted = withPatches(none, none);
   vtkNew<vtkUnsignedCharArray> ghosts;

@@ -5,6 +5,7 @@
 
 #include "ErrorMessages.h"
 #include "FieldValue.h"
+#include "HexBoxBlocks.h"
 #include "HexahedraOfGrid.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
@@ -467,70 +468,6 @@ TEST(BoundaryNames, TheMeshsOwnBoundaryIsStaticWhenOnlyTheMovingPatchWasRead)
 
 namespace
 {
-/**
- * A box of n^3 hexahedra as a CFD reader gives it: block "internalMesh" and one polydata block
- * of quads per side ("xmin", "xmax", "ymin", "ymax", "zmin", "zmax"), points their own, but for
- * the side `omit` (a patch the reader was not asked for).
- */
-vtkSmartPointer<vtkMultiBlockDataSet> HexBoxBlocks(int n, const std::string& omit)
-{
-  const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  auto volume = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        points->InsertNextPoint(i, j, k);
-  volume->SetPoints(points);
-  dgmf_test::AddHexahedraOfGrid(volume, n);
-  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-  blocks->SetBlock(0, volume);
-  Name(blocks, 0, "internalMesh");
-  vtkNew<vtkMultiBlockDataSet> boundary;
-  unsigned int index = 0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    for (int side = 0; side < 2; ++side)
-    {
-      const std::string name = std::string(1, "xyz"[axis]) + (side ? "max" : "min");
-      if (name == omit)
-      {
-        continue;
-      }
-      // The side's (n+1)^2 points in a grid of their own, and its n^2 quads.
-      const auto point = [&](int a, int b)
-      {
-        int ijk[3];
-        ijk[axis] = side * n;
-        ijk[(axis + 1) % 3] = a;
-        ijk[(axis + 2) % 3] = b;
-        return id(ijk[0], ijk[1], ijk[2]);
-      };
-      vtkNew<vtkPoints> own;
-      own->SetDataTypeToDouble();
-      for (int b = 0; b <= n; ++b)
-        for (int a = 0; a <= n; ++a)
-          own->InsertNextPoint(points->GetPoint(point(a, b)));
-      vtkNew<vtkCellArray> quads;
-      for (int b = 0; b < n; ++b)
-        for (int a = 0; a < n; ++a)
-        {
-          const vtkIdType quad[4] = { a + (n + 1) * b, a + 1 + (n + 1) * b,
-            a + 1 + (n + 1) * (b + 1), a + (n + 1) * (b + 1) };
-          quads->InsertNextCell(4, quad);
-        }
-      vtkNew<vtkPolyData> faces;
-      faces->SetPoints(own);
-      faces->SetPolys(quads);
-      boundary->SetBlock(index, faces);
-      Name(boundary, index++, name);
-    }
-  }
-  blocks->SetBlock(1, boundary);
-  Name(blocks, 1, "boundary");
-  return blocks;
-}
 } // namespace
 
 TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
@@ -543,7 +480,7 @@ TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
   for (const std::string omit : { "", "xmax" })
   {
     vtkNew<vtkDGMFDeformFilter> filter;
-    filter->SetInputData(HexBoxBlocks(n, omit));
+    filter->SetInputData(dgmf_test::HexBoxBlocks(n, omit));
     filter->AddMovingBoundary("xmin");
     filter->SetTranslation(-0.3, 0.2, 0.1);
     filter->SetRotationAngles(0, 5, 0);

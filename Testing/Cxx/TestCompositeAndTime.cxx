@@ -3,9 +3,11 @@
 #include "vtkDGMFDeformFilter.h"
 #include "vtkSizeSkewQualityFilter.h"
 
+#include "HexBoxBlocks.h"
 #include "ShippedMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -16,15 +18,19 @@
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace
 {
@@ -103,7 +109,161 @@ void CheckBlock(vtkUnstructuredGrid* before, vtkUnstructuredGrid* after,
   EXPECT_EQ(
     after->GetCellData()->GetArray("SizeSkew")->GetNumberOfTuples(), before->GetNumberOfCells());
 }
+/// The side patches of HexBoxBlocks(n, "") (block 1), in their order.
+std::vector<vtkPolyData*> SidesOf(vtkMultiBlockDataSet* blocks)
+{
+  std::vector<vtkPolyData*> sides;
+  auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+  for (unsigned int b = 0; boundary && b < boundary->GetNumberOfBlocks(); ++b)
+  {
+    sides.push_back(vtkPolyData::SafeDownCast(boundary->GetBlock(b)));
+  }
+  return sides;
+}
+
+/**
+ * HexBoxBlocks(n, "") as one grid, as a gmsh or SU2 file gives it: the volume's points and
+ * hexahedra, then the sides' quads on those points, in the blocks' order; with the volume's point
+ * arrays.
+ */
+vtkSmartPointer<vtkUnstructuredGrid> AsOneGrid(vtkMultiBlockDataSet* blocks, int n)
+{
+  auto* volume = vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(0));
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->DeepCopy(volume);
+  for (vtkPolyData* side : SidesOf(blocks))
+  {
+    for (vtkIdType c = 0; c < side->GetNumberOfCells(); ++c)
+    {
+      vtkNew<vtkIdList> own;
+      side->GetCellPoints(c, own);
+      vtkIdType quad[4];
+      for (vtkIdType k = 0; k < 4; ++k)
+      {
+        const double* p = side->GetPoint(own->GetId(k)); // integer coordinates
+        quad[k] = static_cast<vtkIdType>(p[0] + (n + 1) * (p[1] + (n + 1) * p[2]));
+      }
+      grid->InsertNextCell(VTK_QUAD, 4, quad);
+    }
+  }
+  return grid;
+}
 } // namespace
+
+TEST(Composite, AVolumeAndItsPatchesDeformAsOneGridWithItsPolygons)
+{
+  // A CFD reader's volume lends the merged mesh its cells, and its patches' polygons are kept
+  // apart: the boundary found from them, the quality guard's cells, the quality and its summary
+  // must be those of one grid holding both, bit for bit. Two ways to the boundary: the mesh's own
+  // (a displacement array, sub-steps with the guard) and the patches' nodes (a named moving patch,
+  // against the same marker).
+  const int n = 6;
+  for (const bool named : { false, true })
+  {
+    vtkSmartPointer<vtkMultiBlockDataSet> blocks = dgmf_test::HexBoxBlocks(n, "");
+    auto* volume = vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(0));
+    vtkNew<vtkDoubleArray> displacement; // xmin pushed in, more at the top
+    displacement->SetName("Displacement");
+    displacement->SetNumberOfComponents(3);
+    vtkNew<vtkDoubleArray> marker; // the named boundaries as a marker
+    marker->SetName("BoundaryMarker");
+    for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+    {
+      const double* p = volume->GetPoint(i);
+      const bool xmin = p[0] == 0.0;
+      displacement->InsertNextTuple3(xmin ? 0.4 + 0.1 * p[2] : 0.0, 0.0, xmin ? 0.2 : 0.0);
+      const bool boundary =
+        xmin || p[0] == n || p[1] == 0.0 || p[1] == n || p[2] == 0.0 || p[2] == n;
+      marker->InsertNextValue(xmin ? 2.0 : boundary ? 1.0 : 0.0);
+    }
+    volume->GetPointData()->AddArray(displacement);
+    vtkSmartPointer<vtkUnstructuredGrid> one = AsOneGrid(blocks, n);
+    one->GetPointData()->AddArray(marker);
+
+    std::vector<vtkSmartPointer<vtkDGMFDeformFilter>> filters;
+    for (vtkDataObject* input :
+      { static_cast<vtkDataObject*>(blocks.Get()), static_cast<vtkDataObject*>(one.Get()) })
+    {
+      auto filter = vtkSmartPointer<vtkDGMFDeformFilter>::New();
+      filter->SetInputData(input);
+      if (named)
+      {
+        filter->SetRotationAngles(0, 8, 0);
+        filter->SetTranslation(0.3, 0, 0);
+        if (input == one.Get())
+        {
+          filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+        }
+        else
+        {
+          filter->AddMovingBoundary("xmin");
+        }
+      }
+      else
+      {
+        filter->SetDisplacementArrayName("Displacement");
+        filter->SetBoundaryMarkerArrayName("");
+        filter->SetSubSteps(2);
+        filter->SetRepairThreshold(0.2);
+      }
+      filter->Update();
+      filters.push_back(filter);
+    }
+    auto* out = vtkMultiBlockDataSet::SafeDownCast(filters[0]->GetOutputDataObject(0));
+    auto* oneOut = vtkUnstructuredGrid::SafeDownCast(filters[1]->GetOutputDataObject(0));
+    ASSERT_TRUE(out && oneOut) << "named " << named;
+    auto* deformed = vtkUnstructuredGrid::SafeDownCast(out->GetBlock(0));
+    ASSERT_TRUE(deformed);
+    const vtkIdType points = volume->GetNumberOfPoints();
+    ASSERT_EQ(deformed->GetNumberOfPoints(), points);
+    ASSERT_EQ(oneOut->GetNumberOfPoints(), points);
+    int moved = 0;
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      ASSERT_EQ(std::memcmp(deformed->GetPoint(i), oneOut->GetPoint(i), 3 * sizeof(double)), 0)
+        << "node " << i << ", named " << named;
+      moved += std::memcmp(deformed->GetPoint(i), volume->GetPoint(i), 3 * sizeof(double)) != 0;
+    }
+    EXPECT_GT(moved, (n + 1) * (n + 1) + 20) << "interior nodes moved, not only xmin's";
+    // The quality: the volume's hexahedra, then each side's quads, as in the one grid.
+    vtkDataArray* oneSkew = oneOut->GetCellData()->GetArray("SizeSkew");
+    ASSERT_TRUE(oneSkew);
+    std::vector<vtkDataArray*> skews{ deformed->GetCellData()->GetArray("SizeSkew") };
+    auto* sides = vtkMultiBlockDataSet::SafeDownCast(out->GetBlock(1));
+    ASSERT_TRUE(sides);
+    ASSERT_EQ(sides->GetNumberOfBlocks(), 6u);
+    for (unsigned int b = 0; b < 6; ++b)
+    {
+      auto* side = vtkPolyData::SafeDownCast(sides->GetBlock(b));
+      ASSERT_TRUE(side);
+      skews.push_back(side->GetCellData()->GetArray("SizeSkew"));
+    }
+    vtkIdType cell = 0;
+    double lowest = 1.0;
+    for (vtkDataArray* skew : skews)
+    {
+      ASSERT_TRUE(skew);
+      for (vtkIdType c = 0; c < skew->GetNumberOfTuples(); ++c, ++cell)
+      {
+        ASSERT_EQ(skew->GetTuple1(c), oneSkew->GetTuple1(cell)) << "cell " << cell;
+        lowest = std::min(lowest, skew->GetTuple1(c));
+      }
+    }
+    EXPECT_EQ(cell, oneOut->GetNumberOfCells());
+    EXPECT_LT(lowest, 0.999) << "the motion deformed cells";
+    vtkFieldData* summary = out->GetFieldData();
+    vtkFieldData* oneSummary = oneOut->GetFieldData();
+    for (const char* name :
+      { "SizeSkewMean", "SizeSkewMinimum", "InvertedCellCount", "SizeSkewEvaluatedCells" })
+    {
+      ASSERT_TRUE(summary->GetArray(name) && oneSummary->GetArray(name)) << name;
+      EXPECT_EQ(summary->GetArray(name)->GetTuple1(0), oneSummary->GetArray(name)->GetTuple1(0))
+        << name;
+    }
+    EXPECT_EQ(summary->GetArray("SizeSkewEvaluatedCells")->GetTuple1(0), n * n * n)
+      << "the volume's cells (the patches' are left out, as for one grid)";
+  }
+}
 
 TEST(Composite, MultiBlockIsDeformedAsOneMeshAndKeepsItsStructure)
 {
