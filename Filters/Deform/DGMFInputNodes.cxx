@@ -155,6 +155,7 @@ void InputGatherer::Gather(
   nodes.NumberOfNodes = n;
   nodes.LocalNodes = n;
   nodes.Patches = options.Patches;
+  this->Searched = false;
   this->DistinctPoints = options.DistinctPoints;
   nodes.Points = PointsAsDouble(mesh->GetPoints(), nodes.PointCopy);
   nodes.Dimension =
@@ -305,6 +306,7 @@ std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
   vtkUnstructuredGrid* mesh, const InputNodes& nodes)
 {
   const std::size_t n = nodes.NumberOfNodes;
+  this->Searched = true;
   const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Patches, nodes.Dimension);
   std::vector<std::uint8_t> flags = FlagBoundaryNodes(facets, static_cast<vtkIdType>(n));
   if (nodes.Layers.Found())

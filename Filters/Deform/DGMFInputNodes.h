@@ -125,6 +125,10 @@ public:
   /// Memory kept between executions, in bytes.
   std::size_t GetMemorySize() const;
 
+  /// Whether the last Gather looked for the mesh's boundary faces: without a marker, or for
+  /// named boundaries whose patches do not close the mesh (RolesCoverTheBoundary).
+  bool SearchedBoundary() const { return this->Searched; }
+
 private:
   void GatherKinds(vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker,
     InputNodes& nodes);
@@ -136,6 +140,7 @@ private:
   // the boundary: the mesh's polygons (boundary patches) close it and their nodes have roles
   // (but for the two planes of a one-cell-thick mesh, whose nodes need none).
   bool RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes);
+  bool Searched = false; // SearchedBoundary()
   // The kinds of the last marker array (checked once).
   vtkDataArray* Marker = nullptr;
   vtkMTimeType MarkerMTime = 0;

@@ -229,6 +229,21 @@ TEST(MeshConversion, CellShapesDimensionAndGrids)
   EXPECT_EQ(asGrid->GetCellType(0), VTK_TRIANGLE);
   EXPECT_EQ(asGrid->GetPoints(), grid->GetPoints());
   EXPECT_EQ(dgmf_vtk::AsUnstructuredGrid(grid).GetPointer(), grid.GetPointer());
+  // A composite input's patches kept apart: the guard's cells are the grid's, then theirs.
+  const dgmf::CellMesh both = dgmf_vtk::ToCellMesh(grid, asGrid);
+  ASSERT_EQ(both.GetNumberOfCells(), 3u);
+  EXPECT_EQ(both.Shapes[2], dgmf::CellShape::Triangle);
+  EXPECT_EQ(both.Connectivity[static_cast<std::size_t>(both.Offsets[2]) + 2], 4);
+  // The dimension of a block's cells, and whether they are all polygons (what may be a patch).
+  bool polygonsOnly = false;
+  EXPECT_EQ(dgmf_vtk::CellDimensionOf(patch, polygonsOnly), 2);
+  EXPECT_TRUE(polygonsOnly);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType segment[2] = { 0, 1 };
+  lines->InsertNextCell(2, segment);
+  patch->SetLines(lines);
+  EXPECT_EQ(dgmf_vtk::CellDimensionOf(patch, polygonsOnly), 2);
+  EXPECT_FALSE(polygonsOnly) << "a line";
 }
 
 TEST(OutputArrays, ReportsSummariesAndLocalNodesUnderTheSharedNames)

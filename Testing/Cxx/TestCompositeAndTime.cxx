@@ -20,6 +20,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -179,6 +180,10 @@ TEST(Composite, AVolumeAndItsPatchesDeformAsOneGridWithItsPolygons)
     volume->GetPointData()->AddArray(displacement);
     vtkSmartPointer<vtkUnstructuredGrid> one = AsOneGrid(blocks, n);
     one->GetPointData()->AddArray(marker);
+    // The merged mesh holds the volume's cells themselves: they must come out untouched.
+    const vtkMTimeType cellsTime = volume->GetCells()->GetMTime();
+    const vtkMTimeType typesTime = volume->GetCellTypesArray()->GetMTime();
+    const vtkMTimeType volumeTime = volume->GetMTime();
 
     std::vector<vtkSmartPointer<vtkDGMFDeformFilter>> filters;
     for (vtkDataObject* input :
@@ -209,6 +214,9 @@ TEST(Composite, AVolumeAndItsPatchesDeformAsOneGridWithItsPolygons)
       filter->Update();
       filters.push_back(filter);
     }
+    EXPECT_EQ(volume->GetCells()->GetMTime(), cellsTime);
+    EXPECT_EQ(volume->GetCellTypesArray()->GetMTime(), typesTime);
+    EXPECT_EQ(volume->GetMTime(), volumeTime);
     auto* out = vtkMultiBlockDataSet::SafeDownCast(filters[0]->GetOutputDataObject(0));
     auto* oneOut = vtkUnstructuredGrid::SafeDownCast(filters[1]->GetOutputDataObject(0));
     ASSERT_TRUE(out && oneOut) << "named " << named;

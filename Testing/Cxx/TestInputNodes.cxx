@@ -1,7 +1,9 @@
 // The gathering of a grid's nodes: its arrays found and checked, the boundary marker converted
 // into node kinds (on the threads, kept while the marker is unchanged).
+#include "DGMFBoundaryNames.h"
 #include "DGMFInputNodes.h"
 #include "DGMFSMPTools.h"
+#include "HexahedraOfGrid.h"
 #include "TwoSquares.h"
 
 #include "dgmf/NodeKind.h"
@@ -14,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -160,4 +163,82 @@ TEST(InputNodes, AMarkerIsNotReusedAfterAnotherOnesConversionFailedHalfWay)
   EXPECT_EQ(first[0], dgmf::NodeKind::StaticBoundary);
   EXPECT_THROW(kindsWith("B"), std::invalid_argument);
   EXPECT_EQ(kindsWith("BoundaryMarker"), first);
+}
+
+TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
+{
+  // A box of n^3 hexahedra and its sides' quads kept apart on its points (a composite input's
+  // patches: CompositeMesh::GetPatches), the roles of named boundaries on the sides read. With
+  // every side, the quads close the volume and its boundary is not searched for; without the
+  // side x = n (a patch the reader was not asked for), it is, and that side becomes static.
+  const int n = 5;
+  const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        points->InsertNextPoint(i, j, k);
+  vtkNew<vtkUnstructuredGrid> volume;
+  volume->SetPoints(points);
+  dgmf_test::AddHexahedraOfGrid(volume, n);
+  for (const bool allSides : { true, false })
+  {
+    vtkNew<vtkUnstructuredGrid> patches;
+    patches->SetPoints(points);
+    dgmf_vtk::NodeRoles roles;
+    roles.Kinds.resize(static_cast<std::size_t>(points->GetNumberOfPoints()));
+    std::fill(roles.Kinds.begin(), roles.Kinds.end(), dgmf::NodeKind::Interior);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (int side = 0; side < 2; ++side)
+      {
+        if (!allSides && axis == 0 && side == 1)
+        {
+          continue;
+        }
+        for (int b = 0; b < n; ++b)
+        {
+          for (int a = 0; a < n; ++a)
+          {
+            vtkIdType quad[4];
+            const int corners[4][2] = { { a, b }, { a + 1, b }, { a + 1, b + 1 }, { a, b + 1 } };
+            for (int k = 0; k < 4; ++k)
+            {
+              int ijk[3];
+              ijk[axis] = side * n;
+              ijk[(axis + 1) % 3] = corners[k][0];
+              ijk[(axis + 2) % 3] = corners[k][1];
+              quad[k] = id(ijk[0], ijk[1], ijk[2]);
+              roles.Kinds[static_cast<std::size_t>(quad[k])] = axis == 0 && side == 0
+                ? dgmf::NodeKind::MovingBoundary
+                : dgmf::NodeKind::StaticBoundary;
+            }
+            patches->InsertNextCell(VTK_QUAD, 4, quad);
+          }
+        }
+      }
+    }
+    // The moving side's own nodes are moving, corners shared with a static side too.
+    for (int k = 0; k <= n; ++k)
+      for (int j = 0; j <= n; ++j)
+        roles.Kinds[static_cast<std::size_t>(id(0, j, k))] = dgmf::NodeKind::MovingBoundary;
+    dgmf_vtk::GatherOptions options;
+    options.Roles = &roles;
+    options.Patches = patches;
+    options.DistinctPoints = true;
+    options.OneCellThick = dgmf_vtk::OneCellThickOff;
+    dgmf_vtk::InputGatherer gatherer;
+    dgmf_vtk::InputNodes nodes;
+    gatherer.Gather(volume, options, nodes);
+    EXPECT_EQ(gatherer.SearchedBoundary(), !allSides);
+    EXPECT_EQ(nodes.Patches, patches.Get());
+    // The side x = n: static either way (its patch's role, or the mesh's own boundary).
+    for (int k = 0; k <= n; ++k)
+      for (int j = 0; j <= n; ++j)
+        EXPECT_EQ(
+          nodes.Kinds[static_cast<std::size_t>(id(n, j, k))], dgmf::NodeKind::StaticBoundary)
+          << "node " << id(n, j, k) << ", all sides " << allSides;
+    EXPECT_EQ(nodes.Kinds[static_cast<std::size_t>(id(2, 2, 2))], dgmf::NodeKind::Interior);
+  }
 }
