@@ -421,15 +421,26 @@ void CompositeMesh::SetCells(const std::vector<vtkPointSet*>& blocks,
   if (merged.size() == 1 && grid == this->Merged)
   {
     // One grid leaf on the merged nodes in their order (a CFD reader's volume): its cells as
-    // they are. 64-bit storage only (the face matching's fast path reads it), no polyhedra (their
-    // face arrays are checked while copied).
+    // they are. 64-bit storage only (the face matching's fast path reads it); polyhedra with
+    // their face arrays, checked first.
     Leaf& leaf = this->Leaves[merged[0]];
     auto* leafGrid = vtkUnstructuredGrid::SafeDownCast(blocks[merged[0]]);
     vtkCellArray* cells = leafGrid ? leafGrid->GetCells() : nullptr;
+    const bool polyhedra = cells && CellTypesPresent(leafGrid)[VTK_POLYHEDRON];
     if (leaf.SameNumbering && cells && cells->IsStorage64Bit() && leafGrid->GetCellTypesArray() &&
-      leafGrid->GetNumberOfCells() > 0 && !CellTypesPresent(leafGrid)[VTK_POLYHEDRON])
+      leafGrid->GetNumberOfCells() > 0 &&
+      (!polyhedra || (leafGrid->GetFaceLocations() && leafGrid->GetFaces())))
     {
-      grid->SetCells(leafGrid->GetCellTypesArray(), cells);
+      if (polyhedra)
+      {
+        CheckPolyhedronFaces(leafGrid);
+        grid->SetCells(
+          leafGrid->GetCellTypesArray(), cells, leafGrid->GetFaceLocations(), leafGrid->GetFaces());
+      }
+      else
+      {
+        grid->SetCells(leafGrid->GetCellTypesArray(), cells);
+      }
       leaf.FirstCell = 0;
       leaf.Cells = leafGrid->GetNumberOfCells();
       this->SharedCells = true;

@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkPoints.h"
 #include "vtkUnsignedCharArray.h"
@@ -68,6 +69,10 @@ std::size_t CompositeMeshCache::GetMemorySize() const
   {
     bytes -= kib(merged->GetCells()->GetActualMemorySize()) +
       kib(merged->GetCellTypesArray()->GetActualMemorySize());
+    for (vtkIdTypeArray* faces : { merged->GetFaceLocations(), merged->GetFaces() })
+    {
+      bytes -= faces ? kib(faces->GetActualMemorySize()) : 0;
+    }
   }
   if (vtkUnstructuredGrid* patches = this->Mesh->GetPatches())
   {

@@ -146,17 +146,37 @@ void MergedCells::AppendGrid(
   this->NumberOfIds += ids;
 }
 
-void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf)
+void CheckPolyhedronFaces(vtkUnstructuredGrid* grid)
 {
   const vtkIdType cells = grid->GetNumberOfCells();
   const vtkIdType* location = grid->GetFaceLocations()->GetPointer(0);
   const vtkIdType* stream = grid->GetFaces()->GetPointer(0);
   const vtkIdType length = grid->GetFaces()->GetNumberOfValues();
-  const auto outside = [](vtkIdType c)
+  for (vtkIdType c = 0; c < cells; ++c)
   {
-    return std::runtime_error("Cell " + std::to_string(c) +
-      " is a polyhedron whose faces run past the end of the grid's face array.");
-  };
+    // nfaces, then (count, ids...) per face.
+    vtkIdType at = location[c];
+    bool inside = at < length;
+    const vtkIdType faces = at >= 0 && inside ? stream[at++] : 0;
+    for (vtkIdType f = 0; f < faces && inside; ++f)
+    {
+      inside = at < length && stream[at] >= 0 && stream[at] <= length - at - 1;
+      at += inside ? stream[at] + 1 : 0;
+    }
+    if (!inside)
+    {
+      throw std::runtime_error("Cell " + std::to_string(c) +
+        " is a polyhedron whose faces run past the end of the grid's face array.");
+    }
+  }
+}
+
+void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf)
+{
+  CheckPolyhedronFaces(grid);
+  const vtkIdType cells = grid->GetNumberOfCells();
+  const vtkIdType* location = grid->GetFaceLocations()->GetPointer(0);
+  const vtkIdType* stream = grid->GetFaces()->GetPointer(0);
   this->FaceLocations.resize(static_cast<std::size_t>(this->NumberOfCells), -1);
   this->FaceLocations.reserve(static_cast<std::size_t>(this->NumberOfCells + cells));
   for (vtkIdType c = 0; c < cells; ++c)
@@ -169,18 +189,10 @@ void MergedCells::AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const Composi
     // nfaces, then (count, ids...) per face, the ids renumbered like the points.
     this->FaceLocations.push_back(static_cast<vtkIdType>(this->Faces.size()));
     vtkIdType at = location[c];
-    if (at >= length)
-    {
-      throw outside(c);
-    }
     const vtkIdType faces = stream[at++];
     this->Faces.push_back(faces);
     for (vtkIdType f = 0; f < faces; ++f)
     {
-      if (at >= length || stream[at] < 0 || stream[at] > length - at - 1)
-      {
-        throw outside(c);
-      }
       const vtkIdType count = stream[at++];
       this->Faces.push_back(count);
       for (vtkIdType m = 0; m < count; ++m)

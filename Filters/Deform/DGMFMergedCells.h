@@ -26,6 +26,13 @@ namespace dgmf_vtk
 void CountCells(vtkPointSet* block, vtkIdType& cells, vtkIdType& ids);
 
 /**
+ * Checks that the faces of every polyhedron of `grid` (VTK's face locations and faces arrays, both
+ * present) lie within its faces array: std::runtime_error naming the first cell whose faces run
+ * past its end (a broken writer's arrays are read in place, never past them).
+ */
+void CheckPolyhedronFaces(vtkUnstructuredGrid* grid);
+
+/**
  * The merged grid's cells, written into VTK arrays sized once for all the blocks (no copy when
  * they are handed to the grid); a grid is copied array by array, on the vtkSMPTools threads (its
  * polyhedra's faces polyhedron by polyhedron).
@@ -52,7 +59,7 @@ private:
   void AppendGrid(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf,
     const std::array<bool, 256>& present);
   /// The faces of the grid's polyhedra, renumbered; std::runtime_error when a polyhedron's faces
-  /// run past the faces array.
+  /// run past the faces array (CheckPolyhedronFaces).
   void AppendPolyhedronFaces(vtkUnstructuredGrid* grid, const CompositeMesh::Leaf& leaf);
   void AppendCellByCell(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
 

@@ -236,6 +236,44 @@ TEST(CompositeMesh, APolyhedronWhoseFacesRunPastTheFaceArrayIsRefusedWithItsCell
   }
 }
 
+TEST(CompositeMesh, APolyhedralVolumeLendsItsCellsWithTheirFaces)
+{
+  // Two polyhedra (a cube, and the pyramid on its lower face) and a patch of the cube's upper
+  // face: the merged grid takes the volume's cells and VTK's face arrays as they are.
+  const vtkSmartPointer<vtkUnstructuredGrid> cube = UnitCubePolyhedron();
+  cube->GetPoints()->InsertNextPoint(0.5, 0.5, -1.0);
+  const vtkIdType pyramidCorners[5] = { 0, 1, 3, 2, 8 };
+  const vtkIdType pyramidFaces[] = { 4, 0, 1, 3, 2, 3, 0, 1, 8, 3, 1, 3, 8, 3, 3, 2, 8, 3, 2, 0,
+    8 };
+  cube->InsertNextCell(VTK_POLYHEDRON, 5, pyramidCorners, 5, pyramidFaces);
+  vtkNew<vtkPolyData> top;
+  vtkNew<vtkPoints> topPoints;
+  for (const double* p :
+    { cube->GetPoint(4), cube->GetPoint(5), cube->GetPoint(7), cube->GetPoint(6) })
+  {
+    topPoints->InsertNextPoint(p);
+  }
+  top->SetPoints(topPoints);
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType corners[4] = { 0, 1, 2, 3 };
+  quad->InsertNextCell(4, corners);
+  top->SetPolys(quad);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, cube);
+  blocks->SetBlock(1, top);
+  const dgmf_vtk::CompositeMesh composite(blocks, "", "");
+  vtkUnstructuredGrid* merged = composite.GetMergedMesh();
+  EXPECT_TRUE(composite.SharesInputCells());
+  EXPECT_EQ(merged->GetCells(), cube->GetCells());
+  EXPECT_EQ(merged->GetFaces(), cube->GetFaces());
+  EXPECT_EQ(merged->GetFaceLocations(), cube->GetFaceLocations());
+  vtkNew<vtkIdList> stream;
+  merged->GetFaceStream(1, stream);
+  EXPECT_EQ(stream->GetId(0), 5); // the pyramid's five faces
+  ASSERT_TRUE(composite.GetPatches());
+  EXPECT_EQ(composite.GetPatches()->GetNumberOfCells(), 1);
+}
+
 TEST(CompositeMesh, TheMergeIsKeptWhileTheBlocksAreUnchangedAndRedoneWhenOneChanges)
 {
   vtkNew<vtkMultiBlockDataSet> blocks;
