@@ -30,15 +30,8 @@ namespace dgmf_test
 inline vtkSmartPointer<vtkMultiBlockDataSet> HexBoxBlocks(int n, const std::string& omit)
 {
   const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  auto volume = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        points->InsertNextPoint(i, j, k);
-  volume->SetPoints(points);
-  dgmf_test::AddHexahedraOfGrid(volume, n);
+  const vtkSmartPointer<vtkUnstructuredGrid> volume = HexahedralBox(n);
+  vtkPoints* points = volume->GetPoints();
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   blocks->SetBlock(0, volume);
   blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "internalMesh");

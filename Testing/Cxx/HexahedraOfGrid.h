@@ -6,6 +6,9 @@
 #define dgmf_test_HexahedraOfGrid_h
 
 #include "vtkCellType.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 namespace dgmf_test
@@ -26,6 +29,22 @@ inline void AddHexahedraOfGrid(vtkUnstructuredGrid* grid, int n)
           id(i, j + 1, k + 1) };
         grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
       }
+}
+
+/// The unit box grid of n^3 hexahedra: points (i, j, k) for i, j, k in [0, n], as doubles, in the
+/// numbering of AddHexahedraOfGrid, and those hexahedra.
+inline vtkSmartPointer<vtkUnstructuredGrid> HexahedralBox(int n)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        points->InsertNextPoint(i, j, k);
+  grid->SetPoints(points);
+  AddHexahedraOfGrid(grid, n);
+  return grid;
 }
 
 } // namespace dgmf_test

@@ -173,15 +173,8 @@ TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
   // side x = n (a patch the reader was not asked for), it is, and that side becomes static.
   const int n = 5;
   const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        points->InsertNextPoint(i, j, k);
-  vtkNew<vtkUnstructuredGrid> volume;
-  volume->SetPoints(points);
-  dgmf_test::AddHexahedraOfGrid(volume, n);
+  const vtkSmartPointer<vtkUnstructuredGrid> volume = dgmf_test::HexahedralBox(n);
+  vtkPoints* points = volume->GetPoints();
   for (const bool allSides : { true, false })
   {
     vtkNew<vtkUnstructuredGrid> patches;
