@@ -144,11 +144,6 @@ void AddFacesOfOneCell(
   }
 }
 
-/**
- * The boundary faces by the core's face matching (the faces of one 3D cell), plus the grid's 2D
- * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
- * `canonical` ones when given.
- */
 /// The polygons of `mesh` as boundary facets, as they are (vtkGeometryFilter passes 2D cells
 /// through), but ghost cells; point ids through `canonical` when it is not empty.
 void AddPolygons(
@@ -179,6 +174,11 @@ void AddPolygons(
   }
 }
 
+/**
+ * The boundary faces by the core's face matching (the faces of one 3D cell), plus the grid's 2D
+ * cells, as vtkGeometryFilter gives them: the faces of ghost cells left out, point ids replaced by
+ * `canonical` ones when given.
+ */
 void FindBoundaryFacesByMatching(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& canonical,
   bool has2DCells, BoundaryFacets& facets)
 {

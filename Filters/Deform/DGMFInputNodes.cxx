@@ -106,14 +106,26 @@ struct MarkerToKinds
     }
   }
 };
-
-/// What tells a composite input's boundary patches apart between executions: 0 without them, else
-/// a hash of their cells (polygons only: a fraction of a millisecond).
-std::uint64_t PatchesKey(vtkUnstructuredGrid* patches)
-{
-  return patches ? (HashCells(patches) | 1u) : 0;
-}
 } // namespace
+
+bool PatchesKey::Matches(vtkUnstructuredGrid* patches)
+{
+  if (!patches || this->None)
+  {
+    return this->Valid && !patches && this->None;
+  }
+  return this->Cells.Matches(patches->GetCells(), [patches]() { return HashCells(patches); });
+}
+
+void PatchesKey::Set(vtkUnstructuredGrid* patches)
+{
+  this->Valid = true;
+  this->None = patches == nullptr;
+  if (patches)
+  {
+    this->Cells.Set(patches->GetCells(), [patches]() { return HashCells(patches); });
+  }
+}
 
 SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm)
 {
@@ -340,9 +352,8 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
   }
   vtkCellArray* cells = mesh->GetCells();
   vtkUnstructuredGrid* patches = nodes.Patches;
-  const std::uint64_t patchesKey = PatchesKey(patches);
   if (!this->ClosingCells.Matches(cells, [&]() { return HashCells(mesh); }) ||
-    this->ClosingPatches != patchesKey)
+    !this->ClosingPatches.Matches(patches))
   {
     this->ClosingPolygons.clear();
     if (PolygonsCloseTheMesh(mesh, patches))
@@ -367,7 +378,7 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
       }
     }
     this->ClosingCells.Set(cells, [&]() { return HashCells(mesh); });
-    this->ClosingPatches = patchesKey;
+    this->ClosingPatches.Set(patches);
   }
   if (this->ClosingPolygons.empty())
   {
@@ -498,13 +509,13 @@ const BoundaryFacets& InputGatherer::GetBoundaryFacets(
 {
   vtkCellArray* cells = mesh->GetCells();
   const auto hashCells = [&]() { return HashCells(mesh); };
-  const std::uint64_t patchesKey = PatchesKey(patches);
-  if (!this->Facets || !this->Cells.Matches(cells, hashCells) || this->FacetPatches != patchesKey)
+  if (!this->Facets || !this->Cells.Matches(cells, hashCells) ||
+    !this->FacetPatches.Matches(patches))
   {
     this->Facets = std::make_unique<BoundaryFacets>(
       FindBoundaryFacets(mesh, patches, dimension, this->DistinctPoints));
     this->Cells.Set(cells, hashCells);
-    this->FacetPatches = patchesKey;
+    this->FacetPatches.Set(patches);
   }
   return *this->Facets;
 }

@@ -98,6 +98,25 @@ struct GatherOptions
 };
 
 /**
+ * A composite input's boundary patches between executions (CompositeMesh::GetPatches): the
+ * ContentKey of their cells, or none. A new merge of the same blocks (a reader's new objects at
+ * each time step) matches by content.
+ */
+class PatchesKey
+{
+public:
+  /// True when `patches` (may be null) have the cells the key was set for (none for none).
+  bool Matches(vtkUnstructuredGrid* patches);
+  /// Remembers `patches` (may be null).
+  void Set(vtkUnstructuredGrid* patches);
+
+private:
+  ContentKey Cells;
+  bool None = true;
+  bool Valid = false;
+};
+
+/**
  * Gathers the input nodes of one mesh, and keeps between executions what depends only on
  * unchanged inputs: the node kinds of an unchanged marker array, and the mesh's boundary facets.
  */
@@ -148,12 +167,12 @@ private:
   // The boundary facets depend on the cells only (and on whether points may coincide).
   bool DistinctPoints = false;
   ContentKey Cells;
-  std::uint64_t FacetPatches = 0; // PatchesKey of the facets' patches
+  PatchesKey FacetPatches; // the facets' patches
   std::unique_ptr<BoundaryFacets> Facets;
   // Whether the polygons close the mesh (PolygonsCloseTheMesh) depends on the cells only: then
   // the polygons' cell ids (the patches' numbered after the mesh's cells), else none.
   ContentKey ClosingCells;
-  std::uint64_t ClosingPatches = 0; // PatchesKey of the closing polygons' patches
+  PatchesKey ClosingPatches; // the closing polygons' patches
   std::vector<vtkIdType> ClosingPolygons;
   // The layers of a one-cell-thick mesh depend on the points only (looking for them takes one
   // pass over the points; a repeated deformation need not pay it).

@@ -115,6 +115,27 @@ TEST(ContentKey, ALargeHashIsTheSameOnAnyNumberOfThreadsAndSeesEveryByte)
   EXPECT_NE(hash(2), one);
 }
 
+TEST(ContentKey, ThePatchesKeyTellsNoneTheSameCellsAndNewCellsApart)
+{
+  dgmf_vtk::PatchesKey key;
+  EXPECT_FALSE(key.Matches(nullptr)) << "never set";
+  key.Set(nullptr);
+  EXPECT_TRUE(key.Matches(nullptr));
+  auto patches = TwoSquares();
+  EXPECT_FALSE(key.Matches(patches));
+  key.Set(patches);
+  EXPECT_TRUE(key.Matches(patches));
+  EXPECT_FALSE(key.Matches(nullptr));
+  vtkNew<vtkUnstructuredGrid> again; // a new merge of the same blocks
+  again->DeepCopy(patches);
+  EXPECT_TRUE(key.Matches(again));
+  vtkNew<vtkUnstructuredGrid> more; // patches with one more polygon
+  more->DeepCopy(patches);
+  const vtkIdType other[4] = { 0, 1, 4, 3 };
+  more->InsertNextCell(VTK_QUAD, 4, other);
+  EXPECT_FALSE(key.Matches(more));
+}
+
 TEST(ContentKey, AnObjectOnlyKeyMatchesThatObjectUnmodifiedWithoutHashing)
 {
   vtkNew<vtkDoubleArray> a;
