@@ -1,7 +1,8 @@
 /**
  * @file DGMFBoundaryDetection.h
- * @brief The boundary of a mesh: its boundary faces (3D) or edges (2D), the boundary nodes, and
- * the boundary area (length) each node represents (private to the DGMF::Filters module).
+ * @brief The boundary of a mesh: its boundary faces (3D) or edges (2D), and whether a composite
+ * input's patches close it (private to the DGMF::Filters module). The nodes on them:
+ * DGMFBoundaryNodes.h.
  */
 #ifndef DGMFBoundaryDetection_h
 #define DGMFBoundaryDetection_h
@@ -78,17 +79,6 @@ bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh);
 /// PolygonsCloseTheMesh of `mesh` with the polygons of `patches` (on the same points; may be
 /// null) as 2D cells of it.
 bool PolygonsCloseTheMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches);
-
-/// One flag per point: 1 for the nodes of the boundary facets (and their coincident copies).
-std::vector<std::uint8_t> FlagBoundaryNodes(const BoundaryFacets& facets, vtkIdType numberOfPoints);
-
-/**
- * One value per point: the boundary area (3D) or length (2D) a node represents, each facet's
- * measure shared equally among its nodes; 0 for nodes on no facet. `points` holds 3 doubles per
- * point.
- */
-std::vector<double> ComputeBoundaryNodeWeights(
-  const BoundaryFacets& facets, const double* points, vtkIdType numberOfPoints, int dimension);
 
 } // namespace dgmf_vtk
 

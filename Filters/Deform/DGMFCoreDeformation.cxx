@@ -4,6 +4,7 @@
 #include "DGMFTupleAllocation.h"
 
 #include "DGMFBoundaryDetection.h"
+#include "DGMFBoundaryNodes.h"
 #include "DGMFMemoryGuard.h"
 #include "DGMFMeshConversion.h"
 

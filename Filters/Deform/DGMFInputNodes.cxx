@@ -1,5 +1,6 @@
 #include "DGMFInputNodes.h"
 
+#include "DGMFBoundaryNodes.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 #include "dgmf/HugePages.h"

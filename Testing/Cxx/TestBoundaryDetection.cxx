@@ -3,6 +3,7 @@
 // the areas the same with any number of threads, and whether its polygons close a mesh. Part of
 // DGMFAdapterTests.
 #include "DGMFBoundaryDetection.h"
+#include "DGMFBoundaryNodes.h"
 #include "DGMFSMPTools.h"
 
 #include "vtkCellData.h"
