@@ -224,11 +224,19 @@ public:
   }
   void GetFaces(std::size_t cell, std::vector<std::int64_t>& stream) const override
   {
-    vtkUnstructuredGrid* grid = cell < this->MeshCells ? this->Mesh : this->Patches;
-    const auto id = static_cast<vtkIdType>(cell < this->MeshCells ? cell : cell - this->MeshCells);
+    const bool ofMesh = cell < this->MeshCells;
+    vtkUnstructuredGrid* grid = ofMesh ? this->Mesh : this->Patches;
+    const auto id = static_cast<vtkIdType>(ofMesh ? cell : cell - this->MeshCells);
     if (!IsPolygonType(grid->GetCellType(id)))
     {
-      this->Faces.GetFaces(cell, stream); // a cell of the mesh
+      if (ofMesh)
+      {
+        this->Faces.GetFaces(cell, stream);
+      }
+      else
+      {
+        stream.assign(1, 0); // a patch's empty cell: no face
+      }
       return;
     }
     vtkIdType npts = 0;

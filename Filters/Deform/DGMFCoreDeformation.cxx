@@ -5,6 +5,7 @@
 
 #include "DGMFBoundaryDetection.h"
 #include "DGMFBoundaryNodes.h"
+#include "DGMFCompositeMesh.h"
 #include "DGMFMemoryGuard.h"
 #include "DGMFMeshConversion.h"
 
@@ -140,7 +141,8 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
     // touched while the graph is built (on another thread), off the critical path.
     mapping = &caches.Mapping.Update(
       solved, mesh->GetPoints()->GetData(),
-      [mesh, extruded]() { return extruded ? std::size_t(0) : HintStrideOf(mesh); },
+      [mesh, extruded, &nodes]()
+      { return extruded ? std::size_t(0) : HintStrideOf(mesh, nodes.Patches); },
       [&]()
       {
         caches.Fields.Reset(solved.NumberOfNodes);
@@ -190,8 +192,9 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
 {
   try
   {
+    vtkUnstructuredGrid* patches = composite ? composite->GetPatches() : nullptr;
     std::string error = CheckDeformationMemory(static_cast<double>(input->GetNumberOfPoints()),
-      static_cast<double>(input->GetNumberOfCells()));
+      static_cast<double>(input->GetNumberOfCells() + (patches ? patches->GetNumberOfCells() : 0)));
     if (!error.empty())
     {
       return error;

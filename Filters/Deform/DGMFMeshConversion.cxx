@@ -244,9 +244,10 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
   return 2;
 }
 
-std::size_t HintStrideOf(vtkUnstructuredGrid* mesh)
+std::size_t HintStrideOf(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
 {
-  const vtkIdType cells = mesh->GetNumberOfCells();
+  const vtkIdType meshCells = mesh->GetNumberOfCells();
+  const vtkIdType cells = meshCells + (patches ? patches->GetNumberOfCells() : 0);
   const vtkIdType samples = std::min<vtkIdType>(cells, 4096);
   std::vector<std::vector<std::int64_t>> sampled;
   sampled.reserve(static_cast<std::size_t>(samples));
@@ -254,7 +255,15 @@ std::size_t HintStrideOf(vtkUnstructuredGrid* mesh)
   {
     vtkIdType count = 0;
     const vtkIdType* ids = nullptr;
-    mesh->GetCellPoints(s * cells / samples, count, ids);
+    const vtkIdType c = s * cells / samples;
+    if (c < meshCells)
+    {
+      mesh->GetCellPoints(c, count, ids);
+    }
+    else
+    {
+      patches->GetCellPoints(c - meshCells, count, ids);
+    }
     sampled.emplace_back(ids, ids + count);
   }
   return dgmf::FindHintStride(sampled);

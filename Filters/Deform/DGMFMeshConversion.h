@@ -66,8 +66,9 @@ dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patche
 int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n);
 
 /// The mesh's hint stride for the node location (dgmf::FindHintStride), from up to 4,096 cells
-/// spread over the mesh.
-std::size_t HintStrideOf(vtkUnstructuredGrid* mesh);
+/// spread over the mesh's cells and then those of `patches` (a composite input's patches on the
+/// same points, when not null: the sample of one grid holding both).
+std::size_t HintStrideOf(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches = nullptr);
 
 } // namespace dgmf_vtk
 

@@ -378,8 +378,11 @@ int vtkDGMFDeformFilter::RequestData(
   }
   catch (const std::bad_alloc&)
   {
+    const vtkIdType patchCells =
+      composite && composite->GetPatches() ? composite->GetPatches()->GetNumberOfCells() : 0;
     vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
-                                                   << input->GetNumberOfCells() << " cells).");
+                                                   << input->GetNumberOfCells() + patchCells
+                                                   << " cells).");
   }
   catch (const std::system_error& e) // a thread that cannot be started
   {

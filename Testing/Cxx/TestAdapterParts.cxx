@@ -9,6 +9,7 @@
 #include "DGMFOutputArrays.h"
 #include "DGMFOutputBuffers.h"
 #include "DGMFSMPTools.h"
+#include "HexahedraOfGrid.h"
 #include "TwoSquares.h"
 
 #include "dgmf/ResultNames.h"
@@ -255,6 +256,29 @@ TEST(MeshConversion, CellShapesDimensionAndGrids)
   ASSERT_EQ(both.GetNumberOfCells(), 3u);
   EXPECT_EQ(both.Shapes[2], dgmf::CellShape::Triangle);
   EXPECT_EQ(both.Connectivity[static_cast<std::size_t>(both.Offsets[2]) + 2], 4);
+  // The hint stride samples the patches' cells after the grid's, as in one grid holding both:
+  // a 4^3 box (stride 25, a layer) and many quads of its side z = 0 (whose edges make it 5).
+  const vtkSmartPointer<vtkUnstructuredGrid> box = dgmf_test::HexahedralBox(4);
+  vtkNew<vtkUnstructuredGrid> sides;
+  sides->SetPoints(box->GetPoints());
+  vtkNew<vtkUnstructuredGrid> one;
+  one->DeepCopy(box);
+  for (int copy = 0; copy < 40; ++copy)
+  {
+    for (vtkIdType j = 0; j < 4; ++j)
+    {
+      for (vtkIdType i = 0; i < 4; ++i)
+      {
+        const vtkIdType quad[4] = { i + 5 * j, i + 1 + 5 * j, i + 1 + 5 * (j + 1),
+          i + 5 * (j + 1) };
+        sides->InsertNextCell(VTK_QUAD, 4, quad);
+        one->InsertNextCell(VTK_QUAD, 4, quad);
+      }
+    }
+  }
+  EXPECT_EQ(dgmf_vtk::HintStrideOf(box), 25u);
+  EXPECT_EQ(dgmf_vtk::HintStrideOf(one), 5u);
+  EXPECT_EQ(dgmf_vtk::HintStrideOf(box, sides), dgmf_vtk::HintStrideOf(one));
   // The dimension of a block's cells, and whether they are all polygons (what may be a patch).
   bool polygonsOnly = false;
   EXPECT_EQ(dgmf_vtk::CellDimensionOf(patch, polygonsOnly), 2);

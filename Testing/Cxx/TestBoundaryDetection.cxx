@@ -468,6 +468,10 @@ TEST(BoundaryDetection, PolygonsCloseTheMeshOnlyWhenTheyAreExactlyItsBoundaryFac
           << "one twice apart";
       });
   }
+  // An empty cell among the patches (a polydata after DeleteCell) has no face, as in one grid.
+  auto withEmpty = patchesApart(none, none);
+  withEmpty->InsertNextCell(VTK_EMPTY_CELL, 0, nullptr);
+  EXPECT_TRUE(dgmf_vtk::PolygonsCloseTheMesh(volume, withEmpty)) << "an empty cell apart";
   // The boundary facets with the patches apart are those of the one grid, in the same order.
   const dgmf_vtk::BoundaryFacets one = dgmf_vtk::FindBoundaryFacets(withPatches(none, 17), 3);
   const dgmf_vtk::BoundaryFacets apart =
