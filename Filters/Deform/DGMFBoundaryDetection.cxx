@@ -205,8 +205,7 @@ public:
   }
   std::size_t GetNumberOfCells() const override
   {
-    return this->MeshCells +
-      (this->Patches ? static_cast<std::size_t>(this->Patches->GetNumberOfCells()) : 0);
+    return static_cast<std::size_t>(CellsWithPatches(this->Mesh, this->Patches));
   }
   const std::int64_t* GetCornerFaces(
     std::size_t cell, std::vector<std::int64_t>& corners) const override

@@ -381,11 +381,13 @@ CompositeMesh::CompositeMesh(
   // 5. The cells. A 3D mesh's patches (leaves of polygons only) go to a grid of their own on the
   //    same points, so that the volume's cells can be shared rather than copied.
   std::vector<std::uint8_t> polygonsOnly(blocks.size());
+  std::vector<std::array<bool, 256>> types(blocks.size()); // one pass over each block's types
   int largest = 0;
   for (std::size_t l = 0; l < blocks.size(); ++l)
   {
     bool polygons = true;
-    this->Leaves[l].CellDimension = CellDimensionOf(blocks[l], polygons);
+    types[l] = CellTypesOf(blocks[l]);
+    this->Leaves[l].CellDimension = CellDimensionOf(types[l], polygons);
     polygonsOnly[l] = polygons ? 1 : 0;
     largest = std::max(largest, this->Leaves[l].CellDimension);
   }
@@ -402,7 +404,7 @@ CompositeMesh::CompositeMesh(
     std::iota(volume.begin(), volume.end(), std::size_t(0));
     patches.clear();
   }
-  this->SetCells(blocks, volume, this->Merged);
+  this->SetCells(blocks, types, volume, this->Merged);
   if (!patches.empty())
   {
     this->Patches = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -411,12 +413,13 @@ CompositeMesh::CompositeMesh(
     {
       this->Leaves[l].InPatches = true;
     }
-    this->SetCells(blocks, patches, this->Patches);
+    this->SetCells(blocks, types, patches, this->Patches);
   }
 }
 
 void CompositeMesh::SetCells(const std::vector<vtkPointSet*>& blocks,
-  const std::vector<std::size_t>& merged, vtkUnstructuredGrid* grid)
+  const std::vector<std::array<bool, 256>>& types, const std::vector<std::size_t>& merged,
+  vtkUnstructuredGrid* grid)
 {
   if (merged.size() == 1 && grid == this->Merged)
   {
@@ -426,7 +429,7 @@ void CompositeMesh::SetCells(const std::vector<vtkPointSet*>& blocks,
     Leaf& leaf = this->Leaves[merged[0]];
     auto* leafGrid = vtkUnstructuredGrid::SafeDownCast(blocks[merged[0]]);
     vtkCellArray* cells = leafGrid ? leafGrid->GetCells() : nullptr;
-    const bool polyhedra = cells && CellTypesPresent(leafGrid)[VTK_POLYHEDRON];
+    const bool polyhedra = types[merged[0]][VTK_POLYHEDRON];
     if (leaf.SameNumbering && cells && cells->IsStorage64Bit() && leafGrid->GetCellTypesArray() &&
       leafGrid->GetNumberOfCells() > 0 &&
       (!polyhedra || (leafGrid->GetFaceLocations() && leafGrid->GetFaces())))
@@ -462,7 +465,7 @@ void CompositeMesh::SetCells(const std::vector<vtkPointSet*>& blocks,
   {
     Leaf& leaf = this->Leaves[l];
     leaf.FirstCell = cells.NumberOfCells;
-    cells.Append(blocks[l], leaf);
+    cells.Append(blocks[l], leaf, types[l]);
     leaf.Cells = cells.NumberOfCells - leaf.FirstCell;
   }
   cells.SetOn(grid);

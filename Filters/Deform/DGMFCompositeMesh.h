@@ -10,6 +10,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -106,9 +107,11 @@ public:
   vtkCompositeDataSet* GetInput() const { return this->Input; }
 
 private:
-  /// The cells of the leaves `merged` (their indices in Leaves) into `grid`: for the merged grid,
-  /// shared when one grid leaf has them all on the merged nodes in order; else copied.
-  void SetCells(const std::vector<vtkPointSet*>& blocks, const std::vector<std::size_t>& merged,
+  /// The cells of the leaves `merged` (their indices in Leaves; `types`: each block's cell
+  /// types) into `grid`: for the merged grid, shared when one grid leaf has them all on the
+  /// merged nodes in order; else copied.
+  void SetCells(const std::vector<vtkPointSet*>& blocks,
+    const std::vector<std::array<bool, 256>>& types, const std::vector<std::size_t>& merged,
     vtkUnstructuredGrid* grid);
 
   vtkCompositeDataSet* Input;

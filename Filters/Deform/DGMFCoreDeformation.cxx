@@ -192,9 +192,8 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
 {
   try
   {
-    vtkUnstructuredGrid* patches = composite ? composite->GetPatches() : nullptr;
     std::string error = CheckDeformationMemory(static_cast<double>(input->GetNumberOfPoints()),
-      static_cast<double>(input->GetNumberOfCells() + (patches ? patches->GetNumberOfCells() : 0)));
+      static_cast<double>(CellsWithPatches(input, composite ? composite->GetPatches() : nullptr)));
     if (!error.empty())
     {
       return error;

@@ -72,15 +72,15 @@ MergedCells::MergedCells(vtkIdType cells, vtkIdType ids)
   this->Offsets->SetValue(0, 0);
 }
 
-void MergedCells::Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf)
+void MergedCells::Append(
+  vtkPointSet* block, const CompositeMesh::Leaf& leaf, const std::array<bool, 256>& types)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
   if (grid && grid->GetCells() && grid->GetNumberOfCells() > 0)
   {
-    const std::array<bool, 256> present = CellTypesPresent(grid);
-    if (!present[VTK_POLYHEDRON] || (grid->GetFaceLocations() && grid->GetFaces()))
+    if (!types[VTK_POLYHEDRON] || (grid->GetFaceLocations() && grid->GetFaces()))
     {
-      this->AppendGrid(grid, leaf, present);
+      this->AppendGrid(grid, leaf, types);
       return;
     }
   }

@@ -43,9 +43,10 @@ public:
   /// Room for `cells` cells of `ids` point ids in all (CountCells over the blocks).
   MergedCells(vtkIdType cells, vtkIdType ids);
 
-  /// Appends the cells of `block`, their points renumbered to the merged nodes of `leaf`
-  /// (CompositeMesh::Leaf::Node).
-  void Append(vtkPointSet* block, const CompositeMesh::Leaf& leaf);
+  /// Appends the cells of `block` (whose cell types are `types`: CellTypesOf), their points
+  /// renumbered to the merged nodes of `leaf` (CompositeMesh::Leaf::Node).
+  void Append(
+    vtkPointSet* block, const CompositeMesh::Leaf& leaf, const std::array<bool, 256>& types);
 
   /// Gives `grid` the cells.
   void SetOn(vtkUnstructuredGrid* grid);

@@ -136,33 +136,40 @@ bool IsPolygonType(int vtkCellType)
     vtkCellType == VTK_POLYGON;
 }
 
-int CellDimensionOf(vtkPointSet* block, bool& polygonsOnly)
+std::array<bool, 256> CellTypesOf(vtkPointSet* block)
 {
-  std::array<bool, 256> present{};
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
   {
-    present = CellTypesPresent(grid);
+    return CellTypesPresent(grid);
   }
-  else
+  std::array<bool, 256> present{};
+  vtkNew<vtkCellTypes> types;
+  block->GetCellTypes(types);
+  for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
   {
-    vtkNew<vtkCellTypes> types;
-    block->GetCellTypes(types);
-    for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
-    {
-      present[types->GetCellType(k)] = true;
-    }
+    present[types->GetCellType(k)] = true;
   }
+  return present;
+}
+
+int CellDimensionOf(const std::array<bool, 256>& types, bool& polygonsOnly)
+{
   int dimension = 0;
   polygonsOnly = true;
   for (int type = 0; type < 256; ++type)
   {
-    if (present[type] && type != VTK_EMPTY_CELL)
+    if (types[type] && type != VTK_EMPTY_CELL)
     {
       dimension = std::max(dimension, vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
       polygonsOnly = polygonsOnly && IsPolygonType(type);
     }
   }
   return dimension;
+}
+
+vtkIdType CellsWithPatches(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
+{
+  return mesh->GetNumberOfCells() + (patches ? patches->GetNumberOfCells() : 0);
 }
 
 std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted)
@@ -247,7 +254,7 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
 std::size_t HintStrideOf(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
 {
   const vtkIdType meshCells = mesh->GetNumberOfCells();
-  const vtkIdType cells = meshCells + (patches ? patches->GetNumberOfCells() : 0);
+  const vtkIdType cells = CellsWithPatches(mesh, patches);
   const vtkIdType samples = std::min<vtkIdType>(cells, 4096);
   std::vector<std::vector<std::int64_t>> sampled;
   sampled.reserve(static_cast<std::size_t>(samples));

@@ -47,11 +47,18 @@ std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh);
 /// The 2D cell types a boundary takes as they are, as polygons: triangles, quads, pixels, polygons.
 bool IsPolygonType(int vtkCellType);
 
+/// Which VTK cell types `block` has (CellTypesPresent for a grid; VTK's cell types otherwise).
+std::array<bool, 256> CellTypesOf(vtkPointSet* block);
+
 /**
- * The largest dimension of the cells of `block` (0 without cells), and whether all its cells are
- * polygons (IsPolygonType; true without cells).
+ * The largest dimension of the cell types `types` (CellTypesOf; 0 without cells), and whether
+ * they are all polygons (IsPolygonType; true without cells).
  */
-int CellDimensionOf(vtkPointSet* block, bool& polygonsOnly);
+int CellDimensionOf(const std::array<bool, 256>& types, bool& polygonsOnly);
+
+/// The cells of `mesh` and of `patches` (may be null) together: a composite input's cells, the
+/// patches' (CompositeMesh::GetPatches) numbered after the mesh's.
+vtkIdType CellsWithPatches(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches);
 
 /// The ids of the cells whose type is `wanted`, in increasing order (one pass on the threads).
 std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted);

@@ -4,6 +4,7 @@
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
 #include "DGMFFilterParameters.h"
+#include "DGMFMeshConversion.h"
 #include "DGMFMotionInTime.h"
 #include "DGMFOutputArrays.h"
 #include "DGMFSMPTools.h"
@@ -378,11 +379,10 @@ int vtkDGMFDeformFilter::RequestData(
   }
   catch (const std::bad_alloc&)
   {
-    const vtkIdType patchCells =
-      composite && composite->GetPatches() ? composite->GetPatches()->GetNumberOfCells() : 0;
-    vtkErrorMacro("Out of memory while deforming " << input->GetNumberOfPoints() << " points ("
-                                                   << input->GetNumberOfCells() + patchCells
-                                                   << " cells).");
+    vtkErrorMacro("Out of memory while deforming "
+      << input->GetNumberOfPoints() << " points ("
+      << dgmf_vtk::CellsWithPatches(input, composite ? composite->GetPatches() : nullptr)
+      << " cells).");
   }
   catch (const std::system_error& e) // a thread that cannot be started
   {

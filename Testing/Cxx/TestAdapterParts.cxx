@@ -281,13 +281,13 @@ TEST(MeshConversion, CellShapesDimensionAndGrids)
   EXPECT_EQ(dgmf_vtk::HintStrideOf(box, sides), dgmf_vtk::HintStrideOf(one));
   // The dimension of a block's cells, and whether they are all polygons (what may be a patch).
   bool polygonsOnly = false;
-  EXPECT_EQ(dgmf_vtk::CellDimensionOf(patch, polygonsOnly), 2);
+  EXPECT_EQ(dgmf_vtk::CellDimensionOf(dgmf_vtk::CellTypesOf(patch), polygonsOnly), 2);
   EXPECT_TRUE(polygonsOnly);
   vtkNew<vtkCellArray> lines;
   const vtkIdType segment[2] = { 0, 1 };
   lines->InsertNextCell(2, segment);
   patch->SetLines(lines);
-  EXPECT_EQ(dgmf_vtk::CellDimensionOf(patch, polygonsOnly), 2);
+  EXPECT_EQ(dgmf_vtk::CellDimensionOf(dgmf_vtk::CellTypesOf(patch), polygonsOnly), 2);
   EXPECT_FALSE(polygonsOnly) << "a line";
 }
 
