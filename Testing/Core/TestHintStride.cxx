@@ -1,137 +1,21 @@
 // The hint stride: found from a layered mesh's cells, none for a shuffled numbering, and used by
 // the location (correct results, the same bits with 1 and 2 threads, most nodes found from it).
+#include "LayeredMeshes.h"
+
 #include "dgmf/DelaunayMapping.h"
 #include "dgmf/HintStride.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstring>
 #include <numeric>
 #include <random>
-#include <thread>
 #include <vector>
 
-namespace
-{
-/// A small version of the benchmark's mesh: a sphere in a box, hexahedra in layers, numbered
-/// layer by layer (the surface grid of an a^3 box; the first layer moving, the last static).
-struct LayeredMesh
-{
-  std::vector<double> Points;
-  std::vector<dgmf::NodeKind> Kinds;
-  std::vector<std::vector<std::int64_t>> Cells;
-  std::size_t NodesPerLayer = 0;
-};
-
-LayeredMesh MakeLayeredMesh(int a, int layers)
-{
-  LayeredMesh mesh;
-  std::vector<int> index(static_cast<std::size_t>(a * a * a), -1);
-  std::vector<std::array<double, 3>> unit;
-  auto lattice = [a](int i, int j, int k) { return static_cast<std::size_t>((k * a + j) * a + i); };
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side)
-      for (int v = 0; v < a; ++v)
-        for (int u = 0; u < a; ++u)
-        {
-          int ijk[3];
-          ijk[axis] = side ? a - 1 : 0;
-          ijk[(axis + 1) % 3] = u;
-          ijk[(axis + 2) % 3] = v;
-          int& id = index[lattice(ijk[0], ijk[1], ijk[2])];
-          if (id < 0)
-          {
-            id = static_cast<int>(unit.size());
-            unit.push_back({ 2.0 * ijk[0] / (a - 1) - 1, 2.0 * ijk[1] / (a - 1) - 1,
-              2.0 * ijk[2] / (a - 1) - 1 });
-          }
-        }
-  const std::size_t ns = unit.size();
-  mesh.NodesPerLayer = ns;
-  for (int l = 0; l < layers; ++l)
-  {
-    const double t = static_cast<double>(l) / (layers - 1);
-    for (const auto& p : unit)
-    {
-      const double norm = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-      for (int c = 0; c < 3; ++c)
-      {
-        mesh.Points.push_back(p[c] / norm + t * (10.0 * p[c] - p[c] / norm));
-      }
-      mesh.Kinds.push_back(l == 0 ? dgmf::NodeKind::MovingBoundary
-          : l == layers - 1       ? dgmf::NodeKind::StaticBoundary
-                                  : dgmf::NodeKind::Interior);
-    }
-  }
-  // Hexahedra on the faces z = -1 (side 0 of axis 2), between consecutive layers.
-  for (int l = 0; l + 1 < layers; ++l)
-    for (int j = 0; j + 1 < a; ++j)
-      for (int i = 0; i + 1 < a; ++i)
-      {
-        const std::int64_t q[4] = { index[lattice(i, j, 0)], index[lattice(i + 1, j, 0)],
-          index[lattice(i + 1, j + 1, 0)], index[lattice(i, j + 1, 0)] };
-        std::vector<std::int64_t> hex;
-        for (int layer : { l, l + 1 })
-          for (std::int64_t id : q)
-            hex.push_back(id + layer * static_cast<std::int64_t>(ns));
-        mesh.Cells.push_back(hex);
-      }
-  return mesh;
-}
-
-dgmf::ParallelFor TwoThreads()
-{
-  return [](std::size_t begin, std::size_t end, std::size_t grain, const dgmf::RangeFunction& body)
-  {
-    std::vector<std::thread> threads;
-    for (int t = 0; t < 2; ++t)
-    {
-      threads.emplace_back(
-        [&, t]
-        {
-          for (std::size_t b = begin + t * grain; b < end; b += 2 * grain)
-          {
-            body(b, std::min(end, b + grain));
-          }
-        });
-    }
-    for (std::thread& thread : threads)
-    {
-      thread.join();
-    }
-  };
-}
-/// The same elements and weights, bit for bit, with 1 and 2 threads; every interior node's
-/// weights are non-negative and reproduce it (the element found is right).
-void ExpectSameAndRightLocations(
-  const dgmf::DelaunayMapping& one, const dgmf::DelaunayMapping& two, const double* points)
-{
-  const dgmf::DelaunayGraph& graph = one.GetGraph();
-  for (std::size_t i = 0; i < one.GetNumberOfNodes(); ++i)
-  {
-    ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
-      << "node " << i;
-    if (one.IsBoundaryNode(i))
-      continue;
-    const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
-    for (int c = 0; c < 3; ++c)
-    {
-      double x = 0.0;
-      for (int k = 0; k < 4; ++k)
-      {
-        ASSERT_GE(one.GetWeights(i)[k], 0.0);
-        x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
-      }
-      // Weights within 1e-12 of 0 are clamped; elements are ~10 long.
-      ASSERT_NEAR(x, points[3 * i + c], 1e-10) << "node " << i;
-    }
-  }
-}
-} // namespace
+using dgmftest::ExpectSameAndRightLocations;
+using dgmftest::LayeredMesh;
+using dgmftest::MakeLayeredMesh;
+using dgmftest::TwoThreads;
 
 TEST(HintStride, LayeredMeshGivesTheLayerSize)
 {
@@ -173,30 +57,4 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
     EXPECT_GT(one.GetNumberOfStrideHits(), interior / 2) << "a = " << a;
     ExpectSameAndRightLocations(one, two, mesh.Points.data());
   }
-}
-
-TEST(LocationOrder, AShuffledNumberingIsLocatedInSpatialOrderRightAndThreadIndependent)
-{
-  // A mesh reassembled from pieces numbers its nodes at random: IsNumberingCoherent says so, and
-  // the nodes are located in a spatial order (SpatialLocationOrder) instead of their own.
-  const LayeredMesh layered = MakeLayeredMesh(40, 12);
-  const std::size_t n = layered.Kinds.size();
-  std::vector<std::size_t> oldOf(n);
-  std::iota(oldOf.begin(), oldOf.end(), std::size_t{ 0 });
-  std::shuffle(oldOf.begin(), oldOf.end(), std::mt19937(11));
-  std::vector<double> points(3 * n);
-  std::vector<dgmf::NodeKind> kinds(n);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    std::copy_n(layered.Points.data() + 3 * oldOf[k], 3, points.data() + 3 * k);
-    kinds[k] = layered.Kinds[oldOf[k]];
-  }
-  const dgmf::DelaunayMapping ordered(
-    3, layered.Points.data(), n, layered.Kinds.data(), dgmf::SerialFor);
-  const dgmf::DelaunayMapping one(3, points.data(), n, kinds.data(), dgmf::SerialFor);
-  const dgmf::DelaunayMapping two(3, points.data(), n, kinds.data(), TwoThreads());
-  EXPECT_FALSE(ordered.GetLocatedInSpatialOrder());
-  EXPECT_TRUE(one.GetLocatedInSpatialOrder());
-  EXPECT_EQ(one.GetNumberOfOutsideNodes(), 0u);
-  ExpectSameAndRightLocations(one, two, points.data());
 }

@@ -4,6 +4,7 @@
 #include "dgmf/Finite.h"
 #include "dgmf/FirstTouch.h"
 #include "dgmf/LocationOrder.h"
+#include "dgmf/LocationStartGrid.h"
 #include "dgmf/NodeLocation.h"
 #include "dgmf/Simd.h"
 
@@ -18,9 +19,6 @@ namespace dgmf
 {
 namespace
 {
-/// How many nodes ahead the spatial order's gather and scatter ask for a node's data.
-constexpr std::size_t GatherAhead = 16;
-
 /// Nodes per block of the boundary nodes' search.
 constexpr std::size_t KindBlock = std::size_t(1) << 16;
 
@@ -156,56 +154,28 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
     this->Weights[node * n] = 1.0;
   }
 
-  // A numbering without spatial coherence (and without a hint stride) is located in a spatial
-  // order instead: else every walk would start far from its node.
+  // A numbering without spatial coherence (and without a hint stride) starts every walk from the
+  // start grid's element near its node instead of the previous node's (anywhere): the nodes are
+  // still located in their own order, the node arrays read and written in order.
   if (hintStride == 0 &&
     !IsNumberingCoherent(*this->Graph, points, this->Kinds.data(), numberOfNodes))
   {
-    const UninitializedVector<std::int32_t> order =
-      SpatialLocationOrder(*this->Graph, points, this->Kinds.data(), numberOfNodes, parallelFor);
-    // Each block gathers its nodes' coordinates, is located as one contiguous run, and scatters
-    // its results: the nodes' own arrays are read and written with independent accesses, which
-    // the processor overlaps, instead of inside the walks.
-    const std::size_t pieces = (order.size() + BlockSize - 1) / BlockSize;
+    const LocationStartGrid starts(
+      *this->Graph, points, this->Kinds.data(), numberOfNodes, parallelFor);
+    const std::size_t pieces = (numberOfNodes + BlockSize - 1) / BlockSize;
     std::vector<NodeLocationCounts> counts(pieces);
-    const std::vector<NodeKind> interior(BlockSize, NodeKind::Interior);
     ForEachBlock(parallelFor, pieces,
       [&](std::size_t piece)
       {
         const std::size_t begin = piece * BlockSize;
-        const std::size_t count = std::min(begin + BlockSize, order.size()) - begin;
-        const std::int32_t* nodes = order.data() + begin;
-        const auto m = static_cast<std::size_t>(n);
-        std::vector<double> xyz(3 * count), w(m * count);
-        std::vector<std::int32_t> element(count, NotLocated);
-        for (std::size_t k = 0; k < count; ++k)
-        {
-          if (k + GatherAhead < count) // the nodes are far apart in memory: ask ahead
-          {
-            simd::Prefetch(points + 3 * static_cast<std::size_t>(nodes[k + GatherAhead]));
-          }
-          std::copy_n(points + 3 * static_cast<std::size_t>(nodes[k]), 3, xyz.data() + 3 * k);
-        }
-        counts[piece] = LocateNodes(
-          *this->Graph, xyz.data(), interior.data(), 0, count, element.data(), w.data());
-        for (std::size_t k = 0; k < count; ++k)
-        {
-          if (k + GatherAhead < count)
-          {
-            const auto ahead = static_cast<std::size_t>(nodes[k + GatherAhead]);
-            simd::PrefetchForWrite(this->NodeElement.data() + ahead);
-            simd::PrefetchForWrite(this->Weights.data() + m * ahead);
-          }
-          const auto node = static_cast<std::size_t>(nodes[k]);
-          this->NodeElement[node] = element[k];
-          StoreWeights(w.data() + m * k, n, this->Weights.data() + m * node);
-        }
+        const std::size_t end = std::min(begin + BlockSize, numberOfNodes);
+        std::int32_t startElements[BlockSize];
+        starts.GetStartElements(points, this->Kinds.data(), begin, end, startElements);
+        counts[piece] = LocateNodes(*this->Graph, points, this->Kinds.data(), begin, end,
+          this->NodeElement.data(), this->Weights.data(), 0, 0, startElements);
       });
-    for (const NodeLocationCounts& count : counts)
-    {
-      this->OutsideNodes += count.Outside;
-    }
-    this->SpatialOrder = true;
+    this->AddCounts(counts);
+    this->FromStartGrid = true;
     this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
     return;
   }
@@ -241,12 +211,18 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         counts[piece].StrideHits += count.StrideHits;
       }
     });
+  this->AddCounts(counts);
+  this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
+}
+
+void DelaunayMapping::AddCounts(const std::vector<NodeLocationCounts>& counts)
+{
   for (const NodeLocationCounts& count : counts)
   {
     this->OutsideNodes += count.Outside;
     this->StrideHits += count.StrideHits;
+    this->WalkSteps += count.Steps;
   }
-  this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
 }
 
 std::size_t DelaunayMapping::GetMemorySize() const

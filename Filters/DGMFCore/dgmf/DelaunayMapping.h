@@ -8,6 +8,7 @@
 #include "dgmf/DelaunayGraph.h"
 #include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
+#include "dgmf/NodeLocation.h"
 #include "dgmf/ParallelFor.h"
 
 #include <algorithm>
@@ -32,8 +33,9 @@ namespace dgmf
  * runs of consecutive nodes; a node walks from the element of its stride neighbour (node
  * i - hintStride, for structured and layered meshes), else from the element of the run's
  * previous node (mesh generators number nodes with spatial coherence), else from the graph's
- * seed element, with CGAL as the exact fallback. A numbering without spatial coherence
- * (IsNumberingCoherent) is located in a spatial order instead (SpatialLocationOrder). The runs of a
+ * seed element, with CGAL as the exact fallback. For a numbering without spatial coherence
+ * (IsNumberingCoherent), every walk starts instead from the element that a grid refined where the
+ * nodes are gives for its node (LocationStartGrid), still in the nodes' own order. The runs of a
  * block walk in turn so that their cache misses overlap. With a hint stride of at least a block,
  * the nodes go in waves of one stride, each cut into WavePieces blocks; a node's stride neighbour
  * is at its place in the wave before, so the same piece of every wave (a column) is one task, with
@@ -139,9 +141,11 @@ public:
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
   /// Number of interior nodes found from their stride neighbour's element (see hintStride).
   std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
-  /// True when the nodes were located in a spatial order (SpatialLocationOrder) because their
-  /// numbering is not spatially coherent (IsNumberingCoherent).
-  bool GetLocatedInSpatialOrder() const { return this->SpatialOrder; }
+  /// True when the walks started from a LocationStartGrid because the nodes' numbering is not
+  /// spatially coherent (IsNumberingCoherent).
+  bool GetLocatedFromStartGrid() const { return this->FromStartGrid; }
+  /// Steps of the visibility walks of all interior nodes (not counting CGAL's exact fallback).
+  std::size_t GetNumberOfWalkSteps() const { return this->WalkSteps; }
   /// Number of static boundary nodes that coincide with a moving one (they share its vertex).
   std::size_t GetNumberOfConflictingNodes() const { return this->ConflictingNodes; }
 
@@ -153,6 +157,9 @@ public:
   std::size_t GetMemorySize() const;
 
 private:
+  /// Adds the location blocks' counts to the mapping's.
+  void AddCounts(const std::vector<NodeLocationCounts>& counts);
+
   std::unique_ptr<DelaunayGraph> Graph;
   std::vector<std::int32_t> BoundaryNodes;
   UninitializedVector<NodeKind> Kinds; ///< written in blocks on the threads
@@ -164,7 +171,8 @@ private:
   std::size_t OutsideNodes = 0;
   std::size_t StrideHits = 0;
   std::size_t ConflictingNodes = 0;
-  bool SpatialOrder = false;
+  std::size_t WalkSteps = 0;
+  bool FromStartGrid = false;
   double GraphSeconds = 0.0;
   double LocationSeconds = 0.0;
 };

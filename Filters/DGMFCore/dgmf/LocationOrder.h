@@ -1,15 +1,14 @@
 /**
  * @file LocationOrder.h
- * @brief The order in which the nodes of a mesh are located in the Delaunay graph: their own
- * numbering when it is spatially coherent, a spatial order when it is not.
+ * @brief How the nodes of a mesh are located in the Delaunay graph: each walk from the previous
+ * node's element when the numbering is spatially coherent, from a start grid's element
+ * (LocationStartGrid) when it is not; and the Hilbert order of a grid's cells.
  */
 #ifndef dgmf_LocationOrder_h
 #define dgmf_LocationOrder_h
 
 #include "dgmf/DelaunayGraph.h"
-#include "dgmf/FirstTouch.h"
 #include "dgmf/NodeKind.h"
-#include "dgmf/ParallelFor.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,21 +27,14 @@ namespace dgmf
 bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
   std::size_t numberOfNodes);
 
+/**
+ * The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k); nz = 1 in 2D) along
+ * CGAL's Hilbert curve through the cells' centres (Hilbert_sort_middle_policy).
+ */
+std::vector<std::uint32_t> HilbertRanks(const std::int64_t cells[3], int dimension);
+
 /// Pairs of consecutive nodes IsNumberingCoherent looks at.
 constexpr std::size_t CoherenceSamples = 4096;
-
-/**
- * The interior nodes in a spatial order: grouped by the graph's seed grid cell, the cells visited
- * along CGAL's Hilbert curve through the grid (Hilbert_sort_middle_policy), the nodes of a cell by
- * the same curve through its 8^3 sub-cells, then by increasing id. Consecutive nodes are then near
- * each other whatever the mesh's numbering, so each visibility walk starts next to its node
- * (LocateNodes). Each node's key (cell rank, sub-cell rank, id) is computed in parallel, in node
- * order; a radix sort of the keys, O(numberOfNodes + cells log cells). The order depends only on
- * the graph and the points.
- */
-UninitializedVector<std::int32_t> SpatialLocationOrder(const DelaunayGraph& graph,
-  const double* points, const NodeKind* kinds, std::size_t numberOfNodes,
-  const ParallelFor& parallelFor);
 
 } // namespace dgmf
 

@@ -31,7 +31,8 @@ enum class Start : std::uint8_t
 {
   Stride,   ///< the element of the node `stride` before
   Previous, ///< the element of the run's previous node
-  Seed      ///< the graph's seed grid
+  Seed,     ///< the graph's seed grid
+  Grid      ///< the caller's start element (LocationStartGrid)
 };
 
 /// The state of one run of consecutive nodes.
@@ -49,7 +50,7 @@ struct Lane
 
 NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
-  double* weights, std::size_t stride, std::size_t locatedBefore)
+  double* weights, std::size_t stride, std::size_t locatedBefore, const std::int32_t* startElements)
 {
   const int dimension = graph.GetDimension();
   const int n = dimension + 1;
@@ -82,7 +83,12 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
     // wave, or already located in this block (the runs of a block take turns in a fixed order,
     // so which ones are is deterministic); never a node another thread may be locating now.
     const std::size_t neighbour = lane.Node - stride;
-    if (stride > 0 && lane.Node >= stride && strideScore > -StrideGiveUp &&
+    if (startElements != nullptr)
+    {
+      lane.Element = startElements[lane.Node - begin];
+      lane.From = Start::Grid;
+    }
+    else if (stride > 0 && lane.Node >= stride && strideScore > -StrideGiveUp &&
       (neighbour < locatedBefore || neighbour >= begin) && nodeElement[neighbour] >= 0)
     {
       lane.Element = nodeElement[neighbour];
@@ -116,6 +122,10 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
       const std::size_t ahead = std::min(lane.Node + PrefetchNodes, lane.End - 1);
       simd::Prefetch(points + 3 * ahead);
       simd::PrefetchForWrite(weights + ahead * static_cast<std::size_t>(n));
+      if (startElements != nullptr && startElements[ahead - begin] >= 0)
+      {
+        graph.PrefetchElement(startElements[ahead - begin]);
+      }
       if (stride > 0 && ahead >= stride)
       {
         simd::Prefetch(nodeElement + (ahead - stride));
@@ -202,6 +212,7 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
         }
         // Visibility walk: cross the face opposite the most negative coordinate.
         ++lane.Steps;
+        ++counts.Steps;
         const int limit = lane.From == Start::Stride ? StrideWalkSteps
           : lane.From == Start::Previous             ? ShortWalkSteps
                                                      : DelaunayGraph::MaximumWalkSteps;

@@ -20,6 +20,7 @@ struct NodeLocationCounts
   std::size_t Outside = 0;    ///< nodes outside the graph's convex hull
   std::size_t Restarts = 0;   ///< walks started from the graph's seed grid
   std::size_t StrideHits = 0; ///< nodes found by the walk from their stride neighbour's element
+  std::size_t Steps = 0;      ///< steps of the visibility walks (elements crossed)
 };
 
 /**
@@ -46,10 +47,14 @@ struct NodeLocationCounts
  * @param nodeElement in: the elements of the nodes before `locatedBefore`, and
  *   DelaunayMapping::NotLocated for the block's interior nodes; out: their elements
  * @param weights output: dim+1 barycentric coordinates per node (node i at i * (dim + 1))
+ * @param startElements when given, the walk of node i starts from element
+ *   startElements[i - begin] instead (LocationStartGrid::GetStartElements: for numberings without
+ *   spatial coherence, whose previous node is anywhere); `stride` must then be 0.
  */
 NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
-  double* weights, std::size_t stride = 0, std::size_t locatedBefore = 0);
+  double* weights, std::size_t stride = 0, std::size_t locatedBefore = 0,
+  const std::int32_t* startElements = nullptr);
 
 } // namespace dgmf
 
