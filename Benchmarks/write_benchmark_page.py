@@ -191,8 +191,8 @@ def numbering_section(rows):
         "The same meshes with their nodes renumbered (`dgmf-benchmark --numberings",
         "layered,hilbert,random`, `Benchmarks/Renumbering.h`): *hilbert* is CGAL's Hilbert sort of",
         "the coordinates (a renumbered unstructured mesh), *random* a seeded random permutation (a",
-        "mesh reassembled from many pieces). Without a usable numbering the filter locates the nodes",
-        "in a spatial order of its own (../speed.md). Target: the first deformation within 1.3 times",
+        "mesh reassembled from many pieces). Without a usable numbering each node's walk starts from",
+        "a start grid's element near it (../speed.md). Target: the first deformation within 1.3 times",
         "the layered figure.",
         "",
     ]
