@@ -54,6 +54,9 @@ TEST(HintStride, LocationWithTheStrideIsRightUsesItAndDoesNotDependOnThreads)
     const std::size_t interior = static_cast<std::size_t>(
       std::count(mesh.Kinds.begin(), mesh.Kinds.end(), dgmf::NodeKind::Interior));
     EXPECT_EQ(plain.GetNumberOfStrideHits(), 0u);
+    // The walks count the elements they cross, whichever start they take.
+    EXPECT_GT(plain.GetNumberOfWalkSteps(), 0u);
+    EXPECT_EQ(one.GetNumberOfWalkSteps(), two.GetNumberOfWalkSteps());
     EXPECT_GT(one.GetNumberOfStrideHits(), interior / 2) << "a = " << a;
     ExpectSameAndRightLocations(one, two, mesh.Points.data());
   }

@@ -113,7 +113,7 @@ TEST(LocationStartGrid, ItsStartsAreMuchNearerThanTheSeedGridsAndDoNotDependOnTh
   for (std::size_t i = 0; i < n; ++i)
   {
     const double* p = mesh.Points.data() + 3 * i;
-    if (mesh.Kinds[i] != dgmf::NodeKind::Interior)
+    if (dgmf::IsBoundary(mesh.Kinds[i]))
     {
       ASSERT_EQ(fromGrid[i], -1) << "boundary node " << i;
       continue;

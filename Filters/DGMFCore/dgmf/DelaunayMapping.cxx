@@ -6,7 +6,6 @@
 #include "dgmf/LocationOrder.h"
 #include "dgmf/LocationStartGrid.h"
 #include "dgmf/NodeLocation.h"
-#include "dgmf/Simd.h"
 
 #include <algorithm>
 #include <chrono>
@@ -209,6 +208,7 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
             this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
         counts[piece].Outside += count.Outside;
         counts[piece].StrideHits += count.StrideHits;
+        counts[piece].Steps += count.Steps;
       }
     });
   this->AddCounts(counts);

@@ -30,6 +30,23 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
 {
   const DelaunayGraph::SeedGridGeometry& grid = this->Geometry;
   const auto cells = static_cast<std::size_t>(grid.Cells[0] * grid.Cells[1] * grid.Cells[2]);
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Below[c] = std::nextafter(static_cast<double>(grid.Cells[c]), 0.0);
+    this->Lower[c] = c < this->Dimension ? std::numeric_limits<double>::max() : 0.0;
+    this->Upper[c] = c < this->Dimension ? std::numeric_limits<double>::lowest() : 0.0;
+  }
+  // The grid reaches up to a cell beyond the graph's bounding box: centres there would be outside
+  // the hull, each left to CGAL's exact location. They are moved onto the box.
+  for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
+  {
+    const double* x = graph.GetVertexPosition(static_cast<std::int32_t>(v));
+    for (int c = 0; c < this->Dimension; ++c)
+    {
+      this->Lower[c] = std::min(this->Lower[c], x[c]);
+      this->Upper[c] = std::max(this->Upper[c], x[c]);
+    }
+  }
 
   // The interior nodes of each seed cell, counted in fixed chunks of the numbering.
   const std::size_t chunks =
@@ -115,10 +132,11 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
           cell /= static_cast<std::size_t>(grid.Cells[c]);
           const std::size_t within = sub % side;
           sub /= side;
-          centres[3 * k + c] = grid.Origin[c] +
-            (static_cast<double>(along) +
-              (static_cast<double>(within) + 0.5) / static_cast<double>(side)) /
-              grid.InverseCellSize;
+          centres[3 * k + c] = std::clamp(grid.Origin[c] +
+              (static_cast<double>(along) +
+                (static_cast<double>(within) + 0.5) / static_cast<double>(side)) /
+                grid.InverseCellSize,
+            this->Lower[c], this->Upper[c]);
         }
       }
       const std::vector<NodeKind> interior(count, NodeKind::Interior);

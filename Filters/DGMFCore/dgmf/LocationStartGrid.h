@@ -24,12 +24,13 @@ namespace dgmf
  * @brief A start element for the visibility walk of any point, a few elements from it.
  *
  * Each cell of the graph's seed grid (DelaunayGraph::GetSeedGridGeometry) is cut into s^3
- * sub-cells (s^2 in 2D), s chosen from the number of interior nodes in the cell so that a
- * sub-cell holds about NodesPerSubCell of them (s = 1 for an empty cell, at most MaximumSide).
- * The centre of every sub-cell is located once, the cells taken along CGAL's Hilbert curve
- * (the walk of each centre starts at the previous centre's element), and a point's start element
- * is the element of its sub-cell's centre: two array reads, and a walk as long as from the centre
- * to the point.
+ * sub-cells (s^2 in 2D), s chosen from the number of interior nodes in the cell (one node in 8
+ * counted) so that a sub-cell holds at most about NodesPerSubCell of them (s = 1 for an empty
+ * cell, at most MaximumSide). The centre of every sub-cell (kept within the graph's bounding box)
+ * is located once by LocateNodes, in fixed blocks of sub-cells: the cells along CGAL's Hilbert
+ * curve, the sub-cells of a cell row by row, so most walks start at a neighbouring centre's
+ * element. A point's start element is then its sub-cell centre's: a few array reads, and a walk
+ * as long as from the centre to the point.
  *
  * The nodes can then be located in their own order, whatever it is: the node arrays are read and
  * written in order, and only the graph is read at random (DelaunayMapping's path for numberings
@@ -47,6 +48,7 @@ public:
   static constexpr double NodesPerSubCell = 32.0;
   /// Sub-cells per axis of a seed cell, at most.
   static constexpr int MaximumSide = 64;
+  static_assert(MaximumSide <= 255, "a cell's side is kept in 8 bits");
 
   LocationStartGrid(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
     std::size_t numberOfNodes, const ParallelFor& parallelFor);
@@ -67,7 +69,7 @@ public:
       const double x = (p[c] - this->Geometry.Origin[c]) * this->Geometry.InverseCellSize;
       const double upper = static_cast<double>(this->Geometry.Cells[c]);
       // Written so that NaN lands in cell 0: the walk then decides.
-      const double clamped = x > 0.0 ? (x < upper ? x : upper - 0.5) : 0.0;
+      const double clamped = x > 0.0 ? (x < upper ? x : this->Below[c]) : 0.0;
       const auto i = static_cast<std::size_t>(clamped);
       local[c] = clamped - static_cast<double>(i);
       index += i * stride;
@@ -103,6 +105,9 @@ public:
 private:
   int Dimension;
   DelaunayGraph::SeedGridGeometry Geometry;
+  double Below[3]; ///< per axis, the largest grid coordinate below the number of cells
+  double Lower[3]; ///< the graph's bounding box, where the sub-cells' centres are kept
+  double Upper[3];
   std::vector<std::uint32_t> FirstSubCell; ///< per seed cell: its first sub-cell in Elements
   std::vector<std::uint8_t> Side;          ///< sub-cells per axis of each seed cell
   std::vector<std::int32_t> Elements;      ///< the element of each sub-cell's centre

@@ -83,7 +83,7 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
     // wave, or already located in this block (the runs of a block take turns in a fixed order,
     // so which ones are is deterministic); never a node another thread may be locating now.
     const std::size_t neighbour = lane.Node - stride;
-    if (startElements != nullptr)
+    if (startElements != nullptr && startElements[lane.Node - begin] >= 0)
     {
       lane.Element = startElements[lane.Node - begin];
       lane.From = Start::Grid;
@@ -212,12 +212,12 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
         }
         // Visibility walk: cross the face opposite the most negative coordinate.
         ++lane.Steps;
-        ++counts.Steps;
         const int limit = lane.From == Start::Stride ? StrideWalkSteps
           : lane.From == Start::Previous             ? ShortWalkSteps
                                                      : DelaunayGraph::MaximumWalkSteps;
         if (next[k] >= 0 && lane.Steps <= limit)
         {
+          ++counts.Steps;
           lane.Element = next[k];
           graph.PrefetchElement(next[k]);
         }

@@ -35,8 +35,10 @@ struct NodeLocationCounts
  * - the element of the run's previous node (mesh generators number nodes with spatial coherence,
  *   so that is a few steps), and if that takes more than a few steps (a jump in the numbering):
  * - the graph's seed element (DelaunayGraph::GetSeedElement), which also starts each run.
- * CGAL's exact location is the fallback when a walk from the seed leaves the hull or does not
- * end. A block that finds the stride neighbour mostly far away stops using it.
+ * With `startElements` (a numbering without spatial coherence, whose previous node is anywhere),
+ * every walk starts from the element given for its node instead (a negative entry: the starts
+ * above). CGAL's exact location is the fallback when a walk from the seed leaves the hull or does
+ * not end. A block that finds the stride neighbour mostly far away stops using it.
  *
  * A walk step is a cache miss into the graph, so the runs advance in turn, one step each, with the
  * next element of each run prefetched: the processor loads several elements at once instead of
@@ -47,9 +49,8 @@ struct NodeLocationCounts
  * @param nodeElement in: the elements of the nodes before `locatedBefore`, and
  *   DelaunayMapping::NotLocated for the block's interior nodes; out: their elements
  * @param weights output: dim+1 barycentric coordinates per node (node i at i * (dim + 1))
- * @param startElements when given, the walk of node i starts from element
- *   startElements[i - begin] instead (LocationStartGrid::GetStartElements: for numberings without
- *   spatial coherence, whose previous node is anywhere); `stride` must then be 0.
+ * @param startElements when given, the walk of interior node i starts from element
+ *   startElements[i - begin] (LocationStartGrid::GetStartElements); `stride` must then be 0.
  */
 NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   const NodeKind* kinds, std::size_t begin, std::size_t end, std::int32_t* nodeElement,
