@@ -106,23 +106,26 @@ inline dgmf::ParallelFor TwoThreads()
   };
 }
 /// The same elements and weights, bit for bit, with 1 and 2 threads; every interior node's
-/// weights are non-negative and reproduce it (the element found is right).
+/// weights are non-negative and reproduce it (the element found is right). In 2D the graph's
+/// elements are triangles with 3 weights, and z is not compared.
 inline void ExpectSameAndRightLocations(
   const dgmf::DelaunayMapping& one, const dgmf::DelaunayMapping& two, const double* points)
 {
   const dgmf::DelaunayGraph& graph = one.GetGraph();
+  const int dimension = graph.GetDimension();
   for (std::size_t i = 0; i < one.GetNumberOfNodes(); ++i)
   {
     ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 4 * sizeof(double)), 0)
+    ASSERT_EQ(
+      std::memcmp(one.GetWeights(i), two.GetWeights(i), (dimension + 1) * sizeof(double)), 0)
       << "node " << i;
     if (one.IsBoundaryNode(i))
       continue;
     const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < dimension; ++c)
     {
       double x = 0.0;
-      for (int k = 0; k < 4; ++k)
+      for (int k = 0; k <= dimension; ++k)
       {
         ASSERT_GE(one.GetWeights(i)[k], 0.0);
         x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];

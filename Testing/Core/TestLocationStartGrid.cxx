@@ -11,8 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -159,27 +157,7 @@ TEST(LocationStartGrid, AShuffled2DMeshIsLocatedRight)
   const dgmf::DelaunayMapping two(2, mesh.Points.data(), n, mesh.Kinds.data(), TwoThreads());
   EXPECT_TRUE(one.GetLocatedFromStartGrid());
   EXPECT_EQ(one.GetNumberOfOutsideNodes(), 0u);
-  const dgmf::DelaunayGraph& graph = one.GetGraph();
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    ASSERT_EQ(one.GetElementOfNode(i), two.GetElementOfNode(i)) << "node " << i;
-    ASSERT_EQ(std::memcmp(one.GetWeights(i), two.GetWeights(i), 3 * sizeof(double)), 0);
-    if (one.IsBoundaryNode(i))
-    {
-      continue;
-    }
-    const std::int32_t* v = graph.GetElement(one.GetElementOfNode(i));
-    for (int c = 0; c < 2; ++c)
-    {
-      double x = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        ASSERT_GE(one.GetWeights(i)[k], 0.0);
-        x += one.GetWeights(i)[k] * graph.GetVertexPosition(v[k])[c];
-      }
-      ASSERT_NEAR(x, mesh.Points[3 * i + c], 1e-10) << "node " << i;
-    }
-  }
+  dgmftest::ExpectSameAndRightLocations(one, two, mesh.Points.data());
   EXPECT_LT(static_cast<double>(one.GetNumberOfWalkSteps()) /
       static_cast<double>(CountInterior(mesh.Kinds)),
     2.0); // about one step a node; 3.4 with uncut seed cells
