@@ -3,9 +3,9 @@
 #include "dgmf/DeformationProblem.h"
 #include "dgmf/Finite.h"
 #include "dgmf/FirstTouch.h"
-#include "dgmf/LocationOrder.h"
 #include "dgmf/LocationStartGrid.h"
 #include "dgmf/NodeLocation.h"
+#include "dgmf/NumberingCoherence.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,5 @@
 #include "dgmf/LocationStartGrid.h"
 
-#include "dgmf/LocationOrder.h"
 #include "dgmf/NodeLocation.h"
 #include "dgmf/Simd.h"
 
@@ -68,7 +67,7 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
       }
     });
 
-  // Each cell's side, and its sub-cells' place: the cells along the Hilbert curve.
+  // Each cell's side, and its sub-cells' place: the cells in their own (row) order.
   this->Side.resize(cells);
   for (std::size_t c = 0; c < cells; ++c)
   {
@@ -82,31 +81,23 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
       static_cast<std::uint8_t>(std::clamp(side, 1.0, static_cast<double>(MaximumSide)));
   }
   counts = std::vector<std::vector<std::uint32_t>>();
-  const std::vector<std::uint32_t> rank = HilbertRanks(grid.Cells, this->Dimension);
-  std::vector<std::uint32_t> byRank(cells);
-  for (std::size_t c = 0; c < cells; ++c)
-  {
-    byRank[rank[c]] = static_cast<std::uint32_t>(c);
-  }
-  this->FirstSubCell.resize(cells);
-  std::vector<std::size_t> firstByRank(cells + 1, 0);
-  for (std::size_t r = 0; r < cells; ++r)
+  this->FirstSubCell.assign(cells + 1, 0);
+  for (std::size_t cell = 0; cell < cells; ++cell)
   {
     std::size_t subCells = 1;
     for (int c = 0; c < this->Dimension; ++c)
     {
-      subCells *= this->Side[byRank[r]];
+      subCells *= this->Side[cell];
     }
-    if (firstByRank[r] + subCells > std::numeric_limits<std::uint32_t>::max())
+    if (this->FirstSubCell[cell] + subCells > std::numeric_limits<std::uint32_t>::max())
     {
       throw std::length_error("LocationStartGrid: too many sub-cells");
     }
-    this->FirstSubCell[byRank[r]] = static_cast<std::uint32_t>(firstByRank[r]);
-    firstByRank[r + 1] = firstByRank[r] + subCells;
+    this->FirstSubCell[cell + 1] = static_cast<std::uint32_t>(this->FirstSubCell[cell] + subCells);
   }
 
   // The sub-cells' centres located in fixed blocks, each walk from the previous centre's element.
-  this->Elements.resize(firstByRank.back());
+  this->Elements.resize(this->FirstSubCell.back());
   const std::size_t blocks = (this->Elements.size() + CentreBlock - 1) / CentreBlock;
   ForEachBlock(parallelFor, blocks,
     [&](std::size_t block)
@@ -114,18 +105,19 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
       const std::size_t begin = block * CentreBlock;
       const std::size_t count = std::min(this->Elements.size(), begin + CentreBlock) - begin;
       std::vector<double> centres(3 * count, 0.0);
-      // The cell (by rank) holding sub-cell `begin`, then its sub-cells in order.
-      std::size_t r = static_cast<std::size_t>(
-        std::upper_bound(firstByRank.begin(), firstByRank.end(), begin) - firstByRank.begin() - 1);
+      // The cell holding sub-cell `begin`, then its sub-cells in order.
+      std::size_t owner = static_cast<std::size_t>(
+        std::upper_bound(this->FirstSubCell.begin(), this->FirstSubCell.end(), begin) -
+        this->FirstSubCell.begin() - 1);
       for (std::size_t k = 0; k < count; ++k)
       {
-        while (begin + k >= firstByRank[r + 1])
+        while (begin + k >= this->FirstSubCell[owner + 1])
         {
-          ++r;
+          ++owner;
         }
-        std::size_t cell = byRank[r];
+        std::size_t cell = owner;
         const std::size_t side = this->Side[cell];
-        std::size_t sub = begin + k - firstByRank[r];
+        std::size_t sub = begin + k - this->FirstSubCell[owner];
         for (int c = 0; c < this->Dimension; ++c)
         {
           const std::size_t along = cell % static_cast<std::size_t>(grid.Cells[c]);

@@ -27,10 +27,10 @@ namespace dgmf
  * sub-cells (s^2 in 2D), s chosen from the number of interior nodes in the cell (one node in 8
  * counted) so that a sub-cell holds at most about NodesPerSubCell of them (s = 1 for an empty
  * cell, at most MaximumSide). The centre of every sub-cell (kept within the graph's bounding box)
- * is located once by LocateNodes, in fixed blocks of sub-cells: the cells along CGAL's Hilbert
- * curve, the sub-cells of a cell row by row, so most walks start at a neighbouring centre's
- * element. A point's start element is then its sub-cell centre's: a few array reads, and a walk
- * as long as from the centre to the point.
+ * is located once by LocateNodes, in fixed blocks of sub-cells: the cells row by row, the
+ * sub-cells of a cell row by row, so most walks start at a neighbouring centre's element. A point's
+ * start element is then its sub-cell centre's: a few array reads, and a walk as long as from the
+ * centre to the point.
  *
  * The nodes can then be located in their own order, whatever it is: the node arrays are read and
  * written in order, and only the graph is read at random (DelaunayMapping's path for numberings
@@ -108,9 +108,10 @@ private:
   double Below[3]; ///< per axis, the largest grid coordinate below the number of cells
   double Lower[3]; ///< the graph's bounding box, where the sub-cells' centres are kept
   double Upper[3];
-  std::vector<std::uint32_t> FirstSubCell; ///< per seed cell: its first sub-cell in Elements
-  std::vector<std::uint8_t> Side;          ///< sub-cells per axis of each seed cell
-  std::vector<std::int32_t> Elements;      ///< the element of each sub-cell's centre
+  std::vector<std::uint32_t>
+    FirstSubCell;                 ///< per seed cell: its first sub-cell in Elements; then the total
+  std::vector<std::uint8_t> Side; ///< sub-cells per axis of each seed cell
+  std::vector<std::int32_t> Elements; ///< the element of each sub-cell's centre
 };
 
 } // namespace dgmf

@@ -1,11 +1,10 @@
 /**
- * @file LocationOrder.h
- * @brief How the nodes of a mesh are located in the Delaunay graph: each walk from the previous
- * node's element when the numbering is spatially coherent, from a start grid's element
- * (LocationStartGrid) when it is not; and the Hilbert order of a grid's cells.
+ * @file NumberingCoherence.h
+ * @brief Whether a mesh numbers its nodes with spatial coherence: then each walk of the location
+ * starts from the previous node's element; else from a start grid's (LocationStartGrid).
  */
-#ifndef dgmf_LocationOrder_h
-#define dgmf_LocationOrder_h
+#ifndef dgmf_NumberingCoherence_h
+#define dgmf_NumberingCoherence_h
 
 #include "dgmf/DelaunayGraph.h"
 #include "dgmf/NodeKind.h"
@@ -26,12 +25,6 @@ namespace dgmf
  */
 bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
   std::size_t numberOfNodes);
-
-/**
- * The rank of every cell of an nx x ny x nz lattice (index i + nx (j + ny k); nz = 1 in 2D) along
- * CGAL's Hilbert curve through the cells' centres (Hilbert_sort_middle_policy).
- */
-std::vector<std::uint32_t> HilbertRanks(const std::int64_t cells[3], int dimension);
 
 /// Pairs of consecutive nodes IsNumberingCoherent looks at.
 constexpr std::size_t CoherenceSamples = 4096;
