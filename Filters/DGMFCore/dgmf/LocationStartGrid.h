@@ -11,7 +11,6 @@
 #include "dgmf/ParallelFor.h"
 
 #include <algorithm>
-
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -33,10 +32,10 @@ namespace dgmf
  * centre to the point.
  *
  * The nodes can then be located in their own order, whatever it is: the node arrays are read and
- * written in order, and only the graph is read at random (DelaunayMapping's path for numberings
- * without spatial coherence). The graph's elements are long slivers from the body to the far
- * field, so the seed grid's own elements (one per cell, from the elements' centroids) are tens of
- * steps from most nodes; the sub-cells' centres follow the nodes' density instead.
+ * written in order, and only the graph and this grid are read at random (DelaunayMapping's path for
+ * numberings without spatial coherence). The graph's elements are long slivers from the body to the
+ * far field, so the seed grid's own elements (one per cell, from the elements' centroids) are tens
+ * of steps from most nodes; the sub-cells' centres follow the nodes' density instead.
  *
  * Everything depends only on the graph and the points: the sub-cells' centres are located in
  * fixed blocks, so the start elements are the same for any number of threads.
@@ -108,10 +107,12 @@ private:
   double Below[3]; ///< per axis, the largest grid coordinate below the number of cells
   double Lower[3]; ///< the graph's bounding box, where the sub-cells' centres are kept
   double Upper[3];
-  std::vector<std::uint32_t>
-    FirstSubCell;                 ///< per seed cell: its first sub-cell in Elements; then the total
-  std::vector<std::uint8_t> Side; ///< sub-cells per axis of each seed cell
-  std::vector<std::int32_t> Elements; ///< the element of each sub-cell's centre
+  /// Per seed cell, its first sub-cell in Elements; then the number of sub-cells.
+  std::vector<std::uint32_t> FirstSubCell;
+  /// Sub-cells per axis of each seed cell.
+  std::vector<std::uint8_t> Side;
+  /// The element of each sub-cell's centre.
+  std::vector<std::int32_t> Elements;
 };
 
 } // namespace dgmf
