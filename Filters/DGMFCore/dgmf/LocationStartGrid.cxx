@@ -138,7 +138,7 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
       LocateNodes(graph, centres.data(), interior.data(), 0, count, element, weights.data());
       for (std::size_t k = 0; k < count; ++k)
       {
-        // Every walk ends in an element, inside or on the hull; never left without one.
+        // LocateNodes gives every centre an element (CGAL's, when a walk fails); a guard only.
         element[k] = element[k] >= 0 ? element[k] : graph.GetSeedElement(centres.data() + 3 * k);
       }
     });
