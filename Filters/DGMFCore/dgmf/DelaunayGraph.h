@@ -151,12 +151,14 @@ public:
   std::size_t GetSeedCell(const double p[3]) const;
 
   /// The seed grid's geometry: cell (i, j, k) spans Origin + [i, i + 1) / InverseCellSize along x,
-  /// and so on; Cells per axis (1 along z in 2D).
+  /// and so on; Cells per axis (1 along z in 2D). The graph's vertices span Origin to Upper (0
+  /// along z in 2D); the last cell of an axis may reach beyond Upper.
   struct SeedGridGeometry
   {
     double Origin[3];
     double InverseCellSize;
     std::int64_t Cells[3];
+    double Upper[3];
   };
   SeedGridGeometry GetSeedGridGeometry() const
   {
@@ -164,6 +166,7 @@ public:
     std::copy(this->SeedOrigin, this->SeedOrigin + 3, grid.Origin);
     grid.InverseCellSize = this->SeedInverseSize;
     std::copy(this->SeedCells, this->SeedCells + 3, grid.Cells);
+    std::copy(this->SeedUpper, this->SeedUpper + 3, grid.Upper);
     return grid;
   }
 
@@ -197,6 +200,7 @@ private:
   UninitializedVector<WalkRecord> Records; ///< corners and neighbours of each element
   /// Seed grid (see GetSeedElement): origin, inverse cell size, cells per axis, element per cell.
   double SeedOrigin[3] = { 0, 0, 0 };
+  double SeedUpper[3] = { 0, 0, 0 }; ///< the far corner of the vertices' bounding box
   double SeedInverseSize = 1.0;
   std::int64_t SeedCells[3] = { 1, 1, 1 };
   std::vector<std::int32_t> SeedGrid;

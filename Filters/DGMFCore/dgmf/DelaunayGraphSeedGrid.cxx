@@ -41,6 +41,7 @@ void DelaunayGraph::BuildSeedGrid(const ParallelFor& parallelFor)
   for (int c = 0; c < 3; ++c)
   {
     this->SeedOrigin[c] = lower[c];
+    this->SeedUpper[c] = upper[c];
     this->SeedCells[c] = c < this->Dimension
       ? std::clamp<std::int64_t>(
           static_cast<std::int64_t>((upper[c] - lower[c]) * this->SeedInverseSize) + 1, 1, 1024)

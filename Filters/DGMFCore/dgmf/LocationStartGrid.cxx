@@ -32,19 +32,6 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
   for (int c = 0; c < 3; ++c)
   {
     this->Below[c] = std::nextafter(static_cast<double>(grid.Cells[c]), 0.0);
-    this->Lower[c] = c < this->Dimension ? std::numeric_limits<double>::max() : 0.0;
-    this->Upper[c] = c < this->Dimension ? std::numeric_limits<double>::lowest() : 0.0;
-  }
-  // The grid reaches up to a cell beyond the graph's bounding box: centres there would be outside
-  // the hull, each left to CGAL's exact location. They are moved onto the box.
-  for (std::size_t v = 0; v < graph.GetNumberOfVertices(); ++v)
-  {
-    const double* x = graph.GetVertexPosition(static_cast<std::int32_t>(v));
-    for (int c = 0; c < this->Dimension; ++c)
-    {
-      this->Lower[c] = std::min(this->Lower[c], x[c]);
-      this->Upper[c] = std::max(this->Upper[c], x[c]);
-    }
   }
 
   // The interior nodes of each seed cell, counted in fixed chunks of the numbering.
@@ -124,11 +111,13 @@ LocationStartGrid::LocationStartGrid(const DelaunayGraph& graph, const double* p
           cell /= static_cast<std::size_t>(grid.Cells[c]);
           const std::size_t within = sub % side;
           sub /= side;
+          // The grid reaches up to a cell beyond the graph's bounding box: centres there would be
+          // outside the hull, each left to CGAL's exact location. They are moved onto the box.
           centres[3 * k + c] = std::clamp(grid.Origin[c] +
               (static_cast<double>(along) +
                 (static_cast<double>(within) + 0.5) / static_cast<double>(side)) /
                 grid.InverseCellSize,
-            this->Lower[c], this->Upper[c]);
+            grid.Origin[c], grid.Upper[c]);
         }
       }
       const std::vector<NodeKind> interior(count, NodeKind::Interior);

@@ -105,8 +105,6 @@ private:
   int Dimension;
   DelaunayGraph::SeedGridGeometry Geometry;
   double Below[3]; ///< per axis, the largest grid coordinate below the number of cells
-  double Lower[3]; ///< the graph's bounding box, where the sub-cells' centres are kept
-  double Upper[3];
   /// Per seed cell, its first sub-cell in Elements; then the number of sub-cells.
   std::vector<std::uint32_t> FirstSubCell;
   /// Sub-cells per axis of each seed cell.
