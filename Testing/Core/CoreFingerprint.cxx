@@ -222,6 +222,34 @@ void Quality(Fingerprint& fingerprint)
     dgmf::RepairCells(mesh, points.data(), tangled.data(), kinds.data(), repair, dgmf::SerialFor);
   fingerprint.Add(tangled);
   fingerprint.Add(&report.MinimumAfter, sizeof report.MinimumAfter);
+
+  // The same grid in tetrahedra (six per hexahedron, around its diagonal 0-6), the same node
+  // pushed: the guard judges tetrahedra through their forms, four at a time.
+  dgmf::CellMesh tetrahedra;
+  tetrahedra.NumberOfPoints = mesh.NumberOfPoints;
+  tetrahedra.Offsets.push_back(0);
+  constexpr int kSplit[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+    { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+  for (std::size_t c = 0; c + 1 < mesh.Offsets.size(); ++c)
+  {
+    const std::int64_t* hex = mesh.Connectivity.data() + mesh.Offsets[c];
+    for (const auto& tetra : kSplit)
+    {
+      for (int corner : tetra)
+      {
+        tetrahedra.Connectivity.push_back(hex[corner]);
+      }
+      tetrahedra.Offsets.push_back(static_cast<std::int64_t>(tetrahedra.Connectivity.size()));
+      tetrahedra.Shapes.push_back(dgmf::CellShape::Tetra);
+    }
+  }
+  std::vector<double> tangledTetrahedra = points;
+  tangledTetrahedra[3 * id(3, 3, 3)] += 1.6;
+  tangledTetrahedra[3 * id(3, 3, 3) + 1] -= 0.7;
+  const dgmf::RepairReport tetraReport = dgmf::RepairCells(
+    tetrahedra, points.data(), tangledTetrahedra.data(), kinds.data(), repair, dgmf::SerialFor);
+  fingerprint.Add(tangledTetrahedra);
+  fingerprint.Add(&tetraReport.MinimumAfter, sizeof tetraReport.MinimumAfter);
 }
 
 /// OpenFOAM's non-orthogonality of a block of 7 x 6 x 5 hexahedra with jittered points, before

@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 using dgmf::CellQuality;
 using dgmf::CellShape;
@@ -146,4 +148,84 @@ TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
   EXPECT_GT(checked, 7000u);
   EXPECT_GT(inverted, 1000u);
   EXPECT_GT(gradients, 5000u);
+}
+
+TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
+{
+  // The guard's trial positions evaluate a node's tetrahedra four at a time
+  // (MinimumCubedSizeSkew). Over random forms of every count from 1 to 13 (the last group padded
+  // with a repeated form), some inverted at the trial point, some larger and some smaller than
+  // the original: without a cutoff, the same minimum (bit for bit) and the same inverted flag as
+  // CubedSizeSkew cell by cell; with a cutoff, the same verdict (at or below it, or the same
+  // value above it).
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t compared = 0, withInverted = 0, rejected = 0, accepted = 0, larger = 0, smaller = 0;
+  for (int t = 0; t < 3000; ++t)
+  {
+    const std::size_t count = 1 + static_cast<std::size_t>(t % 13);
+    std::vector<dgmf::repair::TetraForm> forms;
+    while (forms.size() < count)
+    {
+      double corners[12];
+      for (double& c : corners)
+        c = unit(random);
+      const dgmf::repair::TetraForm form = dgmf::repair::MakeTetraForm(
+        corners, t % 4, t % 2 == 0 ? 1.0 : -1.0, 0.1 * std::pow(10.0, unit(random)));
+      if (form.Usable)
+        forms.push_back(form);
+    }
+    const std::size_t padded = (count + 3) / 4 * 4;
+    std::vector<double> groups(padded / 4 * dgmf::repair::kFormGroupDoubles);
+    for (std::size_t j = 0; j < padded; ++j)
+      dgmf::repair::StoreFormInGroup(forms[std::min(j, count - 1)], j, groups.data());
+    const dgmf::Vec3 y{ 0.5 * unit(random), 0.5 * unit(random), 0.5 * unit(random) };
+
+    double minimum = std::numeric_limits<double>::infinity();
+    bool inverted = false;
+    for (const dgmf::repair::TetraForm& form : forms)
+    {
+      double alpha, edgeSquares;
+      form.Measure(y, alpha, edgeSquares);
+      (alpha * form.InverseOriginalAlpha < 1.0 ? smaller : larger) += alpha > 0.0 ? 1 : 0;
+      minimum = std::min(minimum, form.CubedSizeSkew(y, inverted));
+    }
+    bool groupedInverted = false;
+    const double grouped =
+      dgmf::repair::MinimumCubedSizeSkew(groups.data(), count, y, -1.0, groupedInverted);
+    ASSERT_EQ(std::memcmp(&grouped, &minimum, sizeof grouped), 0) << "case " << t;
+    ASSERT_EQ(groupedInverted, inverted) << "case " << t;
+    withInverted += inverted ? 1 : 0;
+
+    // With a cutoff: rejected by both, or the same value above it.
+    const double cutoff = minimum * (1.0 + 0.5 * unit(random));
+    bool cellInverted = false;
+    double stopped = std::numeric_limits<double>::infinity();
+    for (const dgmf::repair::TetraForm& form : forms)
+    {
+      stopped = std::min(stopped, form.CubedSizeSkew(y, cellInverted));
+      if (stopped <= cutoff)
+        break;
+    }
+    bool cutInverted = false;
+    const double cut =
+      dgmf::repair::MinimumCubedSizeSkew(groups.data(), count, y, cutoff, cutInverted);
+    ASSERT_EQ(cut <= cutoff, stopped <= cutoff) << "case " << t;
+    if (stopped > cutoff)
+    {
+      ASSERT_EQ(cut, stopped) << "case " << t;
+      ASSERT_EQ(cutInverted, cellInverted) << "case " << t;
+    }
+    if (minimum > 0.0) // no cell inverted: rejected or not by the cutoff alone
+    {
+      (stopped <= cutoff ? rejected : accepted) += 1;
+    }
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3000u);
+  EXPECT_GT(withInverted, 300u);
+  EXPECT_GT(rejected, 100u);
+  EXPECT_GT(accepted, 100u);
+  EXPECT_GT(larger, 1000u);
+  EXPECT_GT(smaller, 1000u);
 }

@@ -204,11 +204,16 @@ void NodeRepairer::IncidentQualities(
 double NodeRepairer::TrialMinimumCube(const FreeNode& node, const Vec3& position, bool& inverted,
   double cutoffCube, std::size_t first) const
 {
+  const bool forms = this->FormsNode == node.Id;
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  if (forms && this->FormGroupsReady && first == this->FormGroupsFirst)
+  {
+    // Only tetrahedra with forms: four at a time, the same values and the same answer.
+    return MinimumCubedSizeSkew(this->FormGroups.data(), count, position, cutoffCube, inverted);
+  }
   double corners[3 * kMaximumCorners];
   double minimum = kInfinity;
   inverted = false;
-  const bool forms = this->FormsNode == node.Id;
-  const std::size_t count = node.CellEnd - node.CellBegin;
   for (std::size_t j = 0; j < count; ++j)
   {
     const std::size_t offset = j + first < count ? j + first : j + first - count;
@@ -298,11 +303,40 @@ double NodeRepairer::CornerMargins(const FreeNode& node, const Vec3& position,
   return objective;
 }
 
+void NodeRepairer::PrepareFormGroups(const FreeNode& node, std::size_t first)
+{
+  this->FormGroupsReady = false;
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  if (this->FormsNode != node.Id || count == 0 || first >= count)
+  {
+    return;
+  }
+  for (std::size_t offset = 0; offset < count; ++offset)
+  {
+    if (!this->Forms[offset].Usable)
+    {
+      return; // degenerate cells and other shapes: cell by cell
+    }
+  }
+  // The last group's missing lanes repeat the last form: the same minimum, the same answer.
+  const std::size_t padded = (count + 3) / 4 * 4;
+  this->FormGroups.resize(padded / 4 * kFormGroupDoubles);
+  for (std::size_t j = 0; j < padded; ++j)
+  {
+    const std::size_t k = std::min(j, count - 1);
+    const std::size_t offset = k + first < count ? k + first : k + first - count;
+    StoreFormInGroup(this->Forms[offset], j, this->FormGroups.data());
+  }
+  this->FormGroupsFirst = first;
+  this->FormGroupsReady = true;
+}
+
 void NodeRepairer::PrepareForms(const FreeNode& node)
 {
   const std::size_t count = node.CellEnd - node.CellBegin;
   this->Forms.resize(count);
   this->FormsNode = node.Id;
+  this->FormGroupsReady = false;
   double corners[12];
   for (std::size_t offset = 0; offset < count; ++offset)
   {

@@ -155,6 +155,14 @@ private:
   std::int64_t FormsNode = -1;
   /// Fills Forms for `node` from the current positions of its cells' other corners.
   void PrepareForms(const FreeNode& node);
+  /// Forms in groups of four (StoreFormInGroup), starting at offset FormGroupsFirst of the node's
+  /// cells and wrapping around, as TrialMinimumCube visits them; ready only when every cell of
+  /// FormsNode has a usable form.
+  std::vector<double> FormGroups;
+  std::size_t FormGroupsFirst = 0;
+  bool FormGroupsReady = false;
+  /// Fills FormGroups from Forms, starting at offset `first` (nothing when a cell has no form).
+  void PrepareFormGroups(const FreeNode& node, std::size_t first);
   static double Alpha3(const CornerEdges& corner, const double* corners);
   /// The cell's deformed corners with `node` at `position`.
   void GatherWith(

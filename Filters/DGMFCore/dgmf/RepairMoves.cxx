@@ -128,6 +128,7 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
       break;
     }
   }
+  this->PrepareFormGroups(node, worst);
   // Trial points are compared by the cubes of their minima (no cube root per cell).
   const double threshold = minimum0 + kMinimumGain;
   double bestCube = threshold * threshold * threshold;

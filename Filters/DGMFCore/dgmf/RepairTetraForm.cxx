@@ -1,7 +1,11 @@
 // A tetrahedron seen from one moving corner (RepairTetraForm.h).
 #include "dgmf/RepairTetraForm.h"
 
+#include "dgmf/Simd.h"
+
 #include <cmath>
+#include <cstring>
+#include <limits>
 
 namespace dgmf
 {
@@ -32,6 +36,97 @@ TetraForm MakeTetraForm(const double* corners, int corner, double orientation, d
   form.InverseOriginalAlpha = 1.0 / originalAlpha;
   form.Usable = originalAlpha > 0.0 && IsFinite(form.Normal) && std::isfinite(form.OppositeEdges);
   return form;
+}
+
+namespace
+{
+/// The fields of a form in its group (kFormGroupFields).
+enum FormField : std::size_t
+{
+  NormalX = 0,
+  OtherX = 3, // other k's coordinate c at OtherX + 3 k + c
+  OppositeEdges = 12,
+  InverseOriginalAlpha = 13
+};
+
+using Four = simd::Double4;
+
+DGMF_SIMD_INLINE Four Field(const double* group, std::size_t field)
+{
+  Four v;
+  std::memcpy(&v, group + 4 * field, sizeof v);
+  return v;
+}
+} // namespace
+
+void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups)
+{
+  double* group = groups + index / 4 * kFormGroupDoubles;
+  const std::size_t lane = index % 4;
+  const auto put = [group, lane](std::size_t field, double value)
+  { group[4 * field + lane] = value; };
+  put(NormalX, form.Normal.X);
+  put(NormalX + 1, form.Normal.Y);
+  put(NormalX + 2, form.Normal.Z);
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    put(OtherX + 3 * k, form.Others[k].X);
+    put(OtherX + 3 * k + 1, form.Others[k].Y);
+    put(OtherX + 3 * k + 2, form.Others[k].Z);
+  }
+  put(OppositeEdges, form.OppositeEdges);
+  put(InverseOriginalAlpha, form.InverseOriginalAlpha);
+}
+
+DGMF_SIMD_AVX2_CLONES
+double MinimumCubedSizeSkew(
+  const double* groups, std::size_t count, const Vec3& y, double cutoffCube, bool& inverted)
+{
+  // TetraForm::Measure and CubedSizeSkew, the same operations in the same order in each lane;
+  // `smaller ? tau3 : 1` is Min(tau3, 1) and `smaller ? 1 : tau3` Max(tau3, 1), since tau3 < 1
+  // exactly when tau < 1 (a lane whose tau is not a number is inverted, and its value 0).
+  double minimum = std::numeric_limits<double>::infinity();
+  inverted = false;
+  for (std::size_t first = 0; first < count; first += 4)
+  {
+    const double* group = groups + first / 4 * kFormGroupDoubles;
+    Four d[3][3];
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      d[k][0] = y.X - Field(group, OtherX + 3 * k);
+      d[k][1] = y.Y - Field(group, OtherX + 3 * k + 1);
+      d[k][2] = y.Z - Field(group, OtherX + 3 * k + 2);
+    }
+    const Four alpha = Field(group, NormalX) * d[0][0] + Field(group, NormalX + 1) * d[0][1] +
+      Field(group, NormalX + 2) * d[0][2];
+    const Four edgeSquares = (d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]) +
+      (d[1][0] * d[1][0] + d[1][1] * d[1][1] + d[1][2] * d[1][2]) +
+      (d[2][0] * d[2][0] + d[2][1] * d[2][1] + d[2][2] * d[2][2]) + Field(group, OppositeEdges);
+    const Four ratio = alpha / edgeSquares;
+    const Four tau = alpha * Field(group, InverseOriginalAlpha);
+    const Four tau3 = tau * tau * tau;
+    const Four one = { 1.0, 1.0, 1.0, 1.0 };
+    const Four cube =
+      (432.0 * ratio * ratio * simd::Min(tau3, one)) / (edgeSquares * simd::Max(tau3, one));
+    for (int l = 0; l < 4; ++l)
+    {
+      double value = 0.0;
+      if (!(alpha[l] > 0.0))
+      {
+        inverted = true;
+      }
+      else
+      {
+        value = cube[l] > 0.0 ? std::min(cube[l], 1.0) : 0.0;
+      }
+      minimum = std::min(minimum, value);
+    }
+    if (minimum <= cutoffCube)
+    {
+      break;
+    }
+  }
+  return minimum;
 }
 
 } // namespace repair

@@ -11,6 +11,7 @@
 #include "dgmf/SizeSkewQuality.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace dgmf
 {
@@ -94,6 +95,26 @@ struct TetraForm
       (((sizeSign + 2.0 / 3.0) / alpha) * this->Normal - (1.0 / edgeSquares) * edgeGradient);
   }
 };
+
+/// Forms stored four to a group for MinimumCubedSizeSkew: per group, each of kFormGroupFields
+/// fields (the normal's 3 coordinates, the other corners' 9, OppositeEdges, InverseOriginalAlpha)
+/// as four consecutive doubles, one per form (the lanes of simd::Double4).
+constexpr std::size_t kFormGroupFields = 14;
+constexpr std::size_t kFormGroupDoubles = 4 * kFormGroupFields;
+
+/// Writes usable `form` as form `index` of `groups` (group index / 4, lane index % 4).
+void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups);
+
+/**
+ * The smallest TetraForm::CubedSizeSkew at `y` over forms 0 .. `count` - 1 of `groups`
+ * (StoreFormInGroup; the lanes of the last group past `count` repeat one of its forms), four at a
+ * time: each form's value has the bits of CubedSizeSkew. Stops after the first group whose
+ * minimum is at or below `cutoffCube`; `inverted` tells if a form evaluated is inverted. The
+ * forms' divisions overlap, where one form at a time waits for each (the guard's trial
+ * positions, speed.md "Large rotations").
+ */
+double MinimumCubedSizeSkew(
+  const double* groups, std::size_t count, const Vec3& y, double cutoffCube, bool& inverted);
 
 /**
  * The form of a tetrahedron whose current corners are `corners` (12 coordinates, VTK order) seen
