@@ -161,8 +161,11 @@ def targets_section(rows, numbering, composite, command, mesh):
                        ratio <= 4, "--command"))
     row = one(mesh, threads=threads)
     if row:
-        checks.append(("wing-body: first run <= 0.356 s (the paper)", "%.3f s" % row["first_s"],
-                       row["first_s"] <= 0.356, "--mesh"))
+        # The issue accepts, instead, an explanation of what bounds it: speed.md gives one.
+        checks.append(("wing-body: first run <= 0.356 s (the paper), or what bounds it explained",
+                       "%.3f s" % row["first_s"], row["first_s"] <= 0.356 or
+                       "explained: CGAL's sequential insertion (../speed.md, \"A real mesh: "
+                       "the wing-body\")", "--mesh"))
     if not checks:
         return []
     lines = [
@@ -176,7 +179,8 @@ def targets_section(rows, numbering, composite, command, mesh):
         "|---|---|---|---|",
     ]
     for label, value, met, option in checks:
-        lines.append("| %s | %s | %s | `%s` |" % (label, value, "yes" if met else "**no**", option))
+        verdict = met if isinstance(met, str) else ("yes" if met else "**no**")
+        lines.append("| %s | %s | %s | `%s` |" % (label, value, verdict, option))
     lines.append("")
     return lines
 
