@@ -226,6 +226,12 @@ TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
   EXPECT_GT(withInverted, 300u);
   EXPECT_GT(rejected, 100u);
   EXPECT_GT(accepted, 100u);
+  // An infinite original Jacobian has no form: tau would be inf * 0 where alpha overflows, which
+  // the lanes would not score as the cell-by-cell function does.
+  const double corners[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  EXPECT_FALSE(
+    dgmf::repair::MakeTetraForm(corners, 3, 1.0, std::numeric_limits<double>::infinity()).Usable);
+  EXPECT_TRUE(dgmf::repair::MakeTetraForm(corners, 3, 1.0, 1.0).Usable);
   EXPECT_GT(larger, 1000u);
   EXPECT_GT(smaller, 1000u);
 }

@@ -181,9 +181,10 @@ private:
   void IncidentQualities(const FreeNode& node, const Vec3& position, double* qualities) const;
   /**
    * The cube of the minimum SizeSkew over the node's cells with the node at `position` (its
-   * tetrahedra through Forms, prepared for this node), stopping at the first cell whose cube is
-   * at or below `cutoffCube` (the caller rejects such a point anyway), starting with the cell at
-   * offset `first`. `inverted` tells if a cell evaluated is inverted.
+   * tetrahedra through Forms, prepared for this node), stopping once a cell's cube is at or
+   * below `cutoffCube` (the caller rejects such a point anyway: at that cell, or at the end of its
+   * group of four when FormGroups are ready), starting with the cell at offset `first`.
+   * `inverted` tells if a cell evaluated is inverted.
    */
   double TrialMinimumCube(const FreeNode& node, const Vec3& position, bool& inverted,
     double cutoffCube, std::size_t first) const;

@@ -34,7 +34,11 @@ TetraForm MakeTetraForm(const double* corners, int corner, double orientation, d
   form.OppositeEdges = Dot(e01, e01) + Dot(e02, e02) + Dot(e12, e12);
   form.OriginalAlpha = originalAlpha;
   form.InverseOriginalAlpha = 1.0 / originalAlpha;
-  form.Usable = originalAlpha > 0.0 && IsFinite(form.Normal) && std::isfinite(form.OppositeEdges);
+  // A finite original Jacobian: an infinite one would make tau = alpha * 0 not a number where
+  // alpha overflows, a case MinimumCubedSizeSkew does not reproduce (such cells are degenerate
+  // for the guard anyway).
+  form.Usable = originalAlpha > 0.0 && std::isfinite(originalAlpha) && IsFinite(form.Normal) &&
+    std::isfinite(form.OppositeEdges);
   return form;
 }
 
@@ -84,7 +88,8 @@ double MinimumCubedSizeSkew(
 {
   // TetraForm::Measure and CubedSizeSkew, the same operations in the same order in each lane;
   // `smaller ? tau3 : 1` is Min(tau3, 1) and `smaller ? 1 : tau3` Max(tau3, 1), since tau3 < 1
-  // exactly when tau < 1 (a lane whose tau is not a number is inverted, and its value 0).
+  // exactly when tau < 1. Tau is a number wherever alpha > 0: alpha and the usable form's
+  // InverseOriginalAlpha (finite and positive) are; the other lanes are inverted, value 0.
   double minimum = std::numeric_limits<double>::infinity();
   inverted = false;
   for (std::size_t first = 0; first < count; first += 4)
