@@ -88,8 +88,9 @@ double MinimumCubedSizeSkew(
 {
   // TetraForm::Measure and CubedSizeSkew, the same operations in the same order in each lane;
   // `smaller ? tau3 : 1` is Min(tau3, 1) and `smaller ? 1 : tau3` Max(tau3, 1), since tau3 < 1
-  // exactly when tau < 1. Tau is a number wherever alpha > 0: alpha and the usable form's
-  // InverseOriginalAlpha (finite and positive) are; the other lanes are inverted, value 0.
+  // exactly when tau < 1. Tau is a number wherever alpha > 0, since a usable form's
+  // InverseOriginalAlpha is positive (infinite only for a subnormal original Jacobian); the other
+  // lanes are inverted, value 0.
   double minimum = std::numeric_limits<double>::infinity();
   inverted = false;
   for (std::size_t first = 0; first < count; first += 4)
