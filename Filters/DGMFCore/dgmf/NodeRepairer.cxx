@@ -346,15 +346,16 @@ void NodeRepairer::PrepareForms(const FreeNode& node)
       this->Forms[offset].Usable = false;
       continue;
     }
-    const ActiveCell& cell = this->Cells[this->Incident[node.CellBegin + offset]];
-    for (int c = 0; c < 4; ++c)
+    const TetraIncidence& incidence = this->TetraIncidences[node.CellBegin + offset];
+    for (int c = 0, k = 0; c < 4; ++c)
     {
       if (c != corner) // the node's own corner is not read
       {
-        Store(Load(this->Points, cell.Nodes[c]), corners, c);
+        Store(Load(this->Points, incidence.Others[k++]), corners, c);
       }
     }
-    this->Forms[offset] = MakeTetraForm(corners, corner, cell.Orientation, cell.OriginalAlpha);
+    this->Forms[offset] =
+      MakeTetraForm(corners, corner, incidence.Orientation, incidence.OriginalAlpha);
   }
 }
 
@@ -385,13 +386,17 @@ void NodeRepairer::CollectEdgeEnds()
 void NodeRepairer::CollectTetraCorners()
 {
   this->TetraCorner.assign(this->Incident.size(), -1);
-  for (const FreeNode& node : this->Nodes)
+  this->TetraIncidences.resize(this->Incident.size());
+  this->OnlyTetrahedra.assign(this->Nodes.size(), 1);
+  for (std::size_t n = 0; n < this->Nodes.size(); ++n)
   {
+    const FreeNode& node = this->Nodes[n];
     for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
     {
       const ActiveCell& cell = this->Cells[this->Incident[i]];
       if (cell.Shape != CellShape::Tetra || cell.Degenerate)
       {
+        this->OnlyTetrahedra[n] = 0;
         continue;
       }
       int corner = -1;
@@ -403,6 +408,21 @@ void NodeRepairer::CollectTetraCorners()
         }
       }
       this->TetraCorner[i] = static_cast<std::int8_t>(corner >= 0 && corner < 4 ? corner : -1);
+      if (this->TetraCorner[i] < 0)
+      {
+        this->OnlyTetrahedra[n] = 0;
+        continue;
+      }
+      TetraIncidence& incidence = this->TetraIncidences[i];
+      for (int c = 0, k = 0; c < 4; ++c)
+      {
+        if (c != corner)
+        {
+          incidence.Others[k++] = cell.Nodes[c];
+        }
+      }
+      incidence.Orientation = cell.Orientation;
+      incidence.OriginalAlpha = cell.OriginalAlpha;
     }
   }
 }
@@ -481,6 +501,26 @@ void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
 {
   Store(position, this->Points, node.Id);
+  const auto markDirty = [this](std::int64_t id)
+  {
+    const std::int64_t index = this->FreeIndex[static_cast<std::size_t>(id)];
+    if (index >= 0)
+    {
+      this->Dirty[static_cast<std::size_t>(index)] = 1;
+    }
+  };
+  // The nodes of its cells may now move (they are marked dirty). Only tetrahedra: the node and its
+  // edge ends, which lie together, instead of each cell's scattered connectivity (the same nodes).
+  const bool onlyTetrahedra = this->OnlyTetrahedra[static_cast<std::size_t>(
+                                this->FreeIndex[static_cast<std::size_t>(node.Id)])] != 0;
+  if (onlyTetrahedra)
+  {
+    markDirty(node.Id);
+    for (std::size_t e = node.EdgeBegin; e < node.EdgeEnd; ++e)
+    {
+      markDirty(this->EdgeEnds[e]);
+    }
+  }
   // The node's own forms (SmoothNode) give its tetrahedra's values at the new position (the
   // trials were judged by their cubes); after the move its neighbours' forms would need it anew.
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
@@ -489,13 +529,9 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
     const CellQuality quality = this->QualityAt(node, i - node.CellBegin, position);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
-    for (int k = 0; k < cell.NumberOfNodes; ++k)
+    for (int k = 0; !onlyTetrahedra && k < cell.NumberOfNodes; ++k)
     {
-      const std::int64_t index = this->FreeIndex[static_cast<std::size_t>(cell.Nodes[k])];
-      if (index >= 0)
-      {
-        this->Dirty[static_cast<std::size_t>(index)] = 1;
-      }
+      markDirty(cell.Nodes[k]);
     }
   }
   this->FormsNode = -1;

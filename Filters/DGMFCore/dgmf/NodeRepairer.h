@@ -122,6 +122,20 @@ public:
   /// Per entry of Incident: the node's corner in that cell if it is a non-degenerate tetrahedron
   /// with the node once (judged through a TetraForm), else -1. Filled by Run.
   std::vector<std::int8_t> TetraCorner;
+  /// What a visit reads to build a TetraForm, per entry of Incident with a TetraCorner (filled
+  /// with it; the others are not read): the cell's other corners in their order, and the
+  /// original orientation and Jacobian. A node's entries lie together, where the cells' records
+  /// and connectivity are scattered.
+  struct TetraIncidence
+  {
+    std::int64_t Others[3];
+    double Orientation;
+    double OriginalAlpha;
+  };
+  std::vector<TetraIncidence> TetraIncidences;
+  /// Per free node: every cell of it has a TetraCorner (a non-degenerate tetrahedron with the node
+  /// once), so its cells' other corners are exactly its edge ends.
+  std::vector<std::uint8_t> OnlyTetrahedra;
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
   /**
@@ -170,7 +184,7 @@ private:
   std::size_t CountRepairableBadCells(double threshold) const;
   /// Fills EdgeEnds and each node's EdgeBegin, EdgeEnd from its cells' edge tables.
   void CollectEdgeEnds();
-  /// Fills TetraCorner.
+  /// Fills TetraCorner, TetraIncidences and OnlyTetrahedra.
   void CollectTetraCorners();
   /// SizeSkew of the node's cell at `offset` (in its cells) with the node at `position`: from
   /// its TetraForm when the forms are this node's and it has one, else in full.
