@@ -387,10 +387,12 @@ void NodeRepairer::CollectTetraCorners()
 {
   this->TetraCorner.assign(this->Incident.size(), -1);
   this->TetraIncidences.resize(this->Incident.size());
-  this->OnlyTetrahedra.assign(this->Nodes.size(), 1);
+  this->OnlyTetrahedra.assign(this->Nodes.size(), 0);
   for (std::size_t n = 0; n < this->Nodes.size(); ++n)
   {
     const FreeNode& node = this->Nodes[n];
+    // A node without cells marks nothing on a move (it never moves: nothing to improve).
+    this->OnlyTetrahedra[n] = node.CellBegin < node.CellEnd ? 1 : 0;
     for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
     {
       const ActiveCell& cell = this->Cells[this->Incident[i]];
