@@ -133,8 +133,8 @@ public:
     double OriginalAlpha;
   };
   std::vector<TetraIncidence> TetraIncidences;
-  /// Per free node: every cell of it has a TetraCorner (a non-degenerate tetrahedron with the node
-  /// once), so its cells' other corners are exactly its edge ends.
+  /// Per free node: it has cells, and every one has a TetraCorner (a non-degenerate tetrahedron
+  /// with the node once), so its cells' other corners are exactly its edge ends.
   std::vector<std::uint8_t> OnlyTetrahedra;
   /// Fills the original-shape data and the current quality of an active cell.
   void InitializeCell(ActiveCell& cell, std::size_t c, double quality, bool inverted) const;
