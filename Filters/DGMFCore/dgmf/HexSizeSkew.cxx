@@ -148,11 +148,9 @@ inline void ComputeHexEdges(const double* group, FourHexEdges& edges)
   ComputeHexEdges(
     [group](int i) -> FourVec3
     {
-      Four x, y, z;
-      std::memcpy(&x, group + HexGroupIndex(i, 0, 0), sizeof x);
-      std::memcpy(&y, group + HexGroupIndex(i, 1, 0), sizeof y);
-      std::memcpy(&z, group + HexGroupIndex(i, 2, 0), sizeof z);
-      return { x, y, z };
+      return { simd::LoadDouble4(group + HexGroupIndex(i, 0, 0)),
+        simd::LoadDouble4(group + HexGroupIndex(i, 1, 0)),
+        simd::LoadDouble4(group + HexGroupIndex(i, 2, 0)) };
     },
     edges);
 }

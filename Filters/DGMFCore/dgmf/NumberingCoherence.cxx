@@ -1,37 +1,33 @@
 #include "dgmf/NumberingCoherence.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numeric>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
 
 namespace dgmf
 {
 namespace
 {
-using Grid = DelaunayGraph::SeedGridGeometry;
-
-/// The seed grid cell (i, j, k) of a point, clamped to the grid.
-struct GridCell
+/// The seed grid cell (i, j, k) of a point: DelaunayGraph::GetSeedCell's, clamped to the grid.
+std::array<std::int64_t, 3> SeedCellOf(
+  const DelaunayGraph& graph, const DelaunayGraph::SeedGridGeometry& grid, const double* x)
 {
-  std::int64_t Index[3] = { 0, 0, 0 };
-
-  GridCell(const Grid& grid, const double* x, int dimension)
+  std::int64_t index = static_cast<std::int64_t>(graph.GetSeedCell(x));
+  std::array<std::int64_t, 3> cell{};
+  for (int c = 0; c < 3; ++c)
   {
-    for (int c = 0; c < dimension; ++c)
-    {
-      const double along = std::clamp((x[c] - grid.Origin[c]) * grid.InverseCellSize, 0.0,
-        static_cast<double>(grid.Cells[c]) - 1e-9);
-      this->Index[c] = static_cast<std::int64_t>(along);
-    }
+    cell[c] = index % grid.Cells[c];
+    index /= grid.Cells[c];
   }
-};
+  return cell;
+}
 } // namespace
 
 bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const NodeKind* kinds,
   std::size_t numberOfNodes)
 {
-  const Grid grid = graph.GetSeedGridGeometry();
-  const int dimension = graph.GetDimension();
+  const DelaunayGraph::SeedGridGeometry grid = graph.GetSeedGridGeometry();
   const std::size_t step = std::max<std::size_t>(1, numberOfNodes / CoherenceSamples);
   std::size_t pairs = 0, near = 0;
   for (std::size_t i = 0; i + 1 < numberOfNodes; i += step)
@@ -40,13 +36,13 @@ bool IsNumberingCoherent(const DelaunayGraph& graph, const double* points, const
     {
       continue;
     }
-    const GridCell a(grid, points + 3 * i, dimension);
-    const GridCell b(grid, points + 3 * (i + 1), dimension);
+    const std::array<std::int64_t, 3> a = SeedCellOf(graph, grid, points + 3 * i);
+    const std::array<std::int64_t, 3> b = SeedCellOf(graph, grid, points + 3 * (i + 1));
     ++pairs;
     bool adjacent = true;
     for (int c = 0; c < 3; ++c)
     {
-      adjacent = adjacent && std::abs(a.Index[c] - b.Index[c]) <= 1;
+      adjacent = adjacent && std::abs(a[c] - b[c]) <= 1;
     }
     near += adjacent ? 1 : 0;
   }

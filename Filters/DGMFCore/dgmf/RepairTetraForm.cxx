@@ -4,7 +4,6 @@
 #include "dgmf/Simd.h"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace dgmf
@@ -57,9 +56,7 @@ using Four = simd::Double4;
 
 DGMF_SIMD_INLINE Four Field(const double* group, std::size_t field)
 {
-  Four v;
-  std::memcpy(&v, group + 4 * field, sizeof v);
-  return v;
+  return simd::LoadDouble4(group + 4 * field);
 }
 } // namespace
 

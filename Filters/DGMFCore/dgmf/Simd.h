@@ -19,6 +19,8 @@
 #ifndef dgmf_Simd_h
 #define dgmf_Simd_h
 
+#include <cstring>
+
 #if !defined(DGMF_FORCE_SCALAR_SIMD) && (defined(__GNUC__) || defined(__clang__))
 #define DGMF_SIMD_VECTOR_EXTENSION 1
 #else
@@ -244,6 +246,14 @@ inline DoubleN<N> operator/(const DoubleN<N>& a, double b)
 #else
 #define DGMF_SIMD_AVX2_CLONES
 #endif
+
+/// Four consecutive doubles at `p` (no alignment needed) as one Double4: one vector load.
+DGMF_SIMD_INLINE Double4 LoadDouble4(const double* p)
+{
+  Double4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 
 /// Asks the processor to start loading the cache line at `address` for reading.
 inline void Prefetch(const void* address)
