@@ -153,11 +153,11 @@ TEST(LocalRepair, TetrahedronSeenFromOneCornerIsTheFullMetric)
 TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
 {
   // The guard's trial positions evaluate a node's tetrahedra four at a time
-  // (MinimumCubedSizeSkew). Over random forms of every count from 1 to 13 (the last group padded
-  // with a repeated form), some inverted at the trial point, some larger and some smaller than
-  // the original: without a cutoff, the same minimum (bit for bit) and the same inverted flag as
-  // CubedSizeSkew cell by cell; with a cutoff, the same verdict (at or below it, or the same
-  // value above it).
+  // (StoreFormsInGroups, MinimumCubedSizeSkew). Over random forms of every count from 1 to 13,
+  // laid out from any first form (the last group padded with a repeated form), some inverted at the
+  // trial point, some larger and some smaller than the original: without a cutoff, the same minimum
+  // (bit for bit) and the same inverted flag as CubedSizeSkew cell by cell; with a cutoff, the same
+  // verdict (at or below it, or the same value above it).
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::size_t compared = 0, withInverted = 0, rejected = 0, accepted = 0, larger = 0, smaller = 0;
@@ -175,10 +175,11 @@ TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
       if (form.Usable)
         forms.push_back(form);
     }
-    const std::size_t padded = (count + 3) / 4 * 4;
-    std::vector<double> groups(padded / 4 * dgmf::repair::kFormGroupDoubles);
-    for (std::size_t j = 0; j < padded; ++j)
-      dgmf::repair::StoreFormInGroup(forms[std::min(j, count - 1)], j, groups.data());
+    // Starting anywhere, as the guard starts at the node's worst cell.
+    const std::size_t first = static_cast<std::size_t>(t / 13) % count;
+    std::vector<double> groups;
+    dgmf::repair::StoreFormsInGroups(forms.data(), count, first, groups);
+    std::rotate(forms.begin(), forms.begin() + static_cast<std::ptrdiff_t>(first), forms.end());
     const dgmf::Vec3 y{ 0.5 * unit(random), 0.5 * unit(random), 0.5 * unit(random) };
 
     double minimum = std::numeric_limits<double>::infinity();

@@ -318,15 +318,7 @@ void NodeRepairer::PrepareFormGroups(const FreeNode& node, std::size_t first)
       return; // degenerate cells and other shapes: cell by cell
     }
   }
-  // The last group's missing lanes repeat the last form: the same minimum, the same answer.
-  const std::size_t padded = (count + 3) / 4 * 4;
-  this->FormGroups.resize(padded / 4 * kFormGroupDoubles);
-  for (std::size_t j = 0; j < padded; ++j)
-  {
-    const std::size_t k = std::min(j, count - 1);
-    const std::size_t offset = k + first < count ? k + first : k + first - count;
-    StoreFormInGroup(this->Forms[offset], j, this->FormGroups.data());
-  }
+  StoreFormsInGroups(this->Forms.data(), count, first, this->FormGroups);
   this->FormGroupsFirst = first;
   this->FormGroupsReady = true;
 }

@@ -3,6 +3,7 @@
 
 #include "dgmf/Simd.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -77,6 +78,19 @@ void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups)
   }
   put(OppositeEdges, form.OppositeEdges);
   put(InverseOriginalAlpha, form.InverseOriginalAlpha);
+}
+
+void StoreFormsInGroups(
+  const TetraForm* forms, std::size_t count, std::size_t first, std::vector<double>& groups)
+{
+  const std::size_t padded = (count + 3) / 4 * 4;
+  groups.resize(padded / 4 * kFormGroupDoubles);
+  for (std::size_t j = 0; j < padded; ++j)
+  {
+    const std::size_t k = std::min(j, count - 1);
+    const std::size_t offset = k + first < count ? k + first : k + first - count;
+    StoreFormInGroup(forms[offset], j, groups.data());
+  }
 }
 
 DGMF_SIMD_AVX2_CLONES

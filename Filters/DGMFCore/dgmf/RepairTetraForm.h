@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 namespace dgmf
 {
@@ -104,6 +105,14 @@ constexpr std::size_t kFormGroupDoubles = 4 * kFormGroupFields;
 
 /// Writes usable `form` as form `index` of `groups` (group index / 4, lane index % 4).
 void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups);
+
+/**
+ * `groups` sized for the `count` (> 0) usable `forms` and filled from form `first` (< count) on,
+ * wrapping around: form (first + j) % count at index j; the last group's missing lanes repeat
+ * its last form (the same minimum, the same verdict in MinimumCubedSizeSkew).
+ */
+void StoreFormsInGroups(
+  const TetraForm* forms, std::size_t count, std::size_t first, std::vector<double>& groups);
 
 /**
  * The smallest TetraForm::CubedSizeSkew at `y` over forms 0 .. `count` - 1 of `groups`
