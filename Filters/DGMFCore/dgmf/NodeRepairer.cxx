@@ -329,7 +329,6 @@ void NodeRepairer::PrepareForms(const FreeNode& node)
   this->Forms.resize(count);
   this->FormsNode = node.Id;
   this->FormGroupsReady = false;
-  double corners[12];
   for (std::size_t offset = 0; offset < count; ++offset)
   {
     const int corner = this->TetraCorner[node.CellBegin + offset];
@@ -339,15 +338,9 @@ void NodeRepairer::PrepareForms(const FreeNode& node)
       continue;
     }
     const TetraIncidence& incidence = this->TetraIncidences[node.CellBegin + offset];
-    for (int c = 0, k = 0; c < 4; ++c)
-    {
-      if (c != corner) // the node's own corner is not read
-      {
-        Store(Load(this->Points, incidence.Others[k++]), corners, c);
-      }
-    }
-    this->Forms[offset] =
-      MakeTetraForm(corners, corner, incidence.Orientation, incidence.OriginalAlpha);
+    this->Forms[offset] = MakeTetraForm(Load(this->Points, incidence.Others[0]),
+      Load(this->Points, incidence.Others[1]), Load(this->Points, incidence.Others[2]), corner,
+      incidence.Orientation, incidence.OriginalAlpha);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "dgmf/SizeSkewQuality.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -126,11 +127,41 @@ double MinimumCubedSizeSkew(
   const double* groups, std::size_t count, const Vec3& y, double cutoffCube, bool& inverted);
 
 /**
- * The form of a tetrahedron whose current corners are `corners` (12 coordinates, VTK order) seen
- * from corner `corner`: `orientation` is the sign of the original cell's corner Jacobian and
- * `originalAlpha` its absolute value. Not usable if that is not positive or the others'
- * coordinates are not finite.
+ * The form of a tetrahedron seen from corner `corner` (0 to 3, VTK order), whose three other
+ * corners are now at `o0`, `o1`, `o2` (in their order): `orientation` is the sign of the original
+ * cell's corner Jacobian and `originalAlpha` its absolute value. Not usable if that is not
+ * positive and finite or the others' coordinates are not finite. Inline, so that the guard's
+ * visits build their forms in place from the points (a form returned through memory and copied
+ * waited on its own stores, speed.md "Large rotations").
  */
+inline TetraForm MakeTetraForm(const Vec3& o0, const Vec3& o1, const Vec3& o2, int corner,
+  double orientation, double originalAlpha)
+{
+  TetraForm form;
+  form.Others[0] = o0;
+  form.Others[1] = o1;
+  form.Others[2] = o2;
+  // The corner Jacobian det(p1 - p0, p2 - p0, p3 - p0) changes sign with each transposition:
+  // with the moving corner taken from its place to the last, (-1)^(3 - corner) times
+  // (o1 - o0) x (o2 - o0) . (y - o0), o the others in their order.
+  const double sign = ((3 - corner) % 2 == 0 ? 1.0 : -1.0) * orientation;
+  const Vec3 e01 = o1 - o0;
+  const Vec3 e02 = o2 - o0;
+  const Vec3 e12 = o2 - o1;
+  form.Normal = sign * Cross(e01, e02);
+  form.OppositeEdges = Dot(e01, e01) + Dot(e02, e02) + Dot(e12, e12);
+  form.OriginalAlpha = originalAlpha;
+  form.InverseOriginalAlpha = 1.0 / originalAlpha;
+  // A finite original Jacobian: an infinite one would make tau = alpha * 0 not a number where
+  // alpha overflows, a case MinimumCubedSizeSkew does not reproduce (such cells are degenerate
+  // for the guard anyway).
+  form.Usable = originalAlpha > 0.0 && std::isfinite(originalAlpha) && IsFinite(form.Normal) &&
+    std::isfinite(form.OppositeEdges);
+  return form;
+}
+
+/// The same form from the tetrahedron's current `corners` (12 coordinates, VTK order; the
+/// moving corner's are not read).
 TetraForm MakeTetraForm(
   const double* corners, int corner, double orientation, double originalAlpha);
 
