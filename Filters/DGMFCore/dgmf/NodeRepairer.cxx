@@ -448,24 +448,6 @@ void NodeRepairer::Neighbourhood(
   }
 }
 
-Vec3 NodeRepairer::InPlane(const FreeNode& node, const Vec3& v)
-{
-  if (node.Dimension == 3)
-  {
-    return v;
-  }
-  return Dot(v, node.Basis[0]) * node.Basis[0] + Dot(v, node.Basis[1]) * node.Basis[1];
-}
-
-void NodeRepairer::AddDirection(const Vec3& v)
-{
-  const double length = Norm(v);
-  if (length > 0.0 && std::isfinite(length))
-  {
-    this->Directions.push_back((1.0 / length) * v);
-  }
-}
-
 void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 {
   for (int a = -1; a <= 1; ++a)

@@ -12,6 +12,7 @@
 #include "dgmf/Progress.h"
 #include "dgmf/RepairTetraForm.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -217,10 +218,25 @@ private:
    * in a 2D mesh) is reproduced exactly.
    */
   void Neighbourhood(const FreeNode& node, const Vec3& x, Vec3& laplacian, double& length) const;
-  /// `v` restricted to the node's plane (2D), or `v` (3D).
-  static Vec3 InPlane(const FreeNode& node, const Vec3& v);
+  /// `v` restricted to the node's plane (2D), or `v` (3D). Inline, as AddDirection: called per
+  /// cell and per direction of a visit, a call returned its vector through memory.
+  static Vec3 InPlane(const FreeNode& node, const Vec3& v)
+  {
+    if (node.Dimension == 3)
+    {
+      return v;
+    }
+    return Dot(v, node.Basis[0]) * node.Basis[0] + Dot(v, node.Basis[1]) * node.Basis[1];
+  }
   /// Adds the unit vector along `v` to Directions (nothing for a zero or non-finite `v`).
-  void AddDirection(const Vec3& v);
+  void AddDirection(const Vec3& v)
+  {
+    const double length = Norm(v);
+    if (length > 0.0 && std::isfinite(length))
+    {
+      this->Directions.push_back((1.0 / length) * v);
+    }
+  }
   /// Adds the 26 (3D) or 8 (2D) directions to the neighbours of a cubic (square) lattice.
   void AddLatticeDirections(const FreeNode& node);
   /// Moves the node to `position` and refreshes the cached quality of its cells.

@@ -106,21 +106,17 @@ double MinimumCubedSizeSkew(
     const Four tau = alpha * Field(group, InverseOriginalAlpha);
     const Four tau3 = tau * tau * tau;
     const Four one = { 1.0, 1.0, 1.0, 1.0 };
+    const Four zero = { 0.0, 0.0, 0.0, 0.0 };
     const Four cube =
       (432.0 * ratio * ratio * simd::Min(tau3, one)) / (edgeSquares * simd::Max(tau3, one));
-    for (int l = 0; l < 4; ++l)
-    {
-      double value = 0.0;
-      if (!(alpha[l] > 0.0))
-      {
-        inverted = true;
-      }
-      else
-      {
-        value = cube[l] > 0.0 ? std::min(cube[l], 1.0) : 0.0;
-      }
-      minimum = std::min(minimum, value);
-    }
+    // `cube > 0 ? min(cube, 1) : 0` (+0 for NaN and -0 too); it is also the inverted lanes' 0:
+    // where alpha is not > 0, tau3 is not > 0 and edgeSquares not < 0, so cube is not > 0.
+    const Four value = simd::Min(simd::Max(cube, zero), one);
+    const bool upright = (alpha[0] > 0.0) & (alpha[1] > 0.0) & (alpha[2] > 0.0) & (alpha[3] > 0.0);
+    inverted = inverted || !upright;
+    // The values are numbers, so the order of the minima does not matter.
+    minimum =
+      std::min(minimum, std::min(std::min(value[0], value[1]), std::min(value[2], value[3])));
     if (minimum <= cutoffCube)
     {
       break;
