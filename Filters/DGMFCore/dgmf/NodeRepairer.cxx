@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace dgmf
 {
@@ -450,6 +451,17 @@ void NodeRepairer::Neighbourhood(
 
 void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 {
+  // A 3D node keeps the standard basis: its 26 directions are the same for every such node, so
+  // they are made once (by the same operations) and copied after that.
+  const bool standard =
+    node.Dimension == 3 && std::memcmp(node.Basis, FreeNode().Basis, sizeof node.Basis) == 0;
+  if (standard && !this->StandardLattice.empty())
+  {
+    this->Directions.insert(
+      this->Directions.end(), this->StandardLattice.begin(), this->StandardLattice.end());
+    return;
+  }
+  const std::size_t first = this->Directions.size();
   for (int a = -1; a <= 1; ++a)
   {
     for (int b = -1; b <= 1; ++b)
@@ -464,6 +476,10 @@ void NodeRepairer::AddLatticeDirections(const FreeNode& node)
           static_cast<double>(b) * node.Basis[1] + static_cast<double>(c) * node.Basis[2]);
       }
     }
+  }
+  if (standard)
+  {
+    this->StandardLattice.assign(this->Directions.begin() + first, this->Directions.end());
   }
 }
 

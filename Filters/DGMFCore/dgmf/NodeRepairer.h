@@ -164,6 +164,8 @@ private:
   std::vector<double> Qualities0;
   std::vector<Vec3> QualityGradients;
   std::vector<Vec3> Directions;
+  /// AddLatticeDirections' 26 directions in the standard basis (3D nodes), once made.
+  std::vector<Vec3> StandardLattice;
   /// The tetrahedra of the node being smoothed (SmoothNode), by offset in its incident cells;
   /// FormsNode is that node's id (-1: none).
   std::vector<TetraForm> Forms;
