@@ -132,7 +132,7 @@ double MinimumCubedSizeSkew(
  * cell's corner Jacobian and `originalAlpha` its absolute value. Not usable if that is not
  * positive and finite or the others' coordinates are not finite. Inline, so that the guard's
  * visits build their forms in place from the points (a form returned through memory and copied
- * waited on its own stores, speed.md "Large rotations").
+ * waited on its own stores: speed.md, "Loads that waited for their own stores, in the guard").
  */
 inline TetraForm MakeTetraForm(const Vec3& o0, const Vec3& o1, const Vec3& o2, int corner,
   double orientation, double originalAlpha)
