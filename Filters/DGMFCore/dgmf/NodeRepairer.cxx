@@ -453,8 +453,9 @@ void NodeRepairer::AddLatticeDirections(const FreeNode& node)
 {
   // A 3D node keeps the standard basis: its 26 directions are the same for every such node, so
   // they are made once (by the same operations) and copied after that.
+  static const FreeNode standardNode;
   const bool standard =
-    node.Dimension == 3 && std::memcmp(node.Basis, FreeNode().Basis, sizeof node.Basis) == 0;
+    node.Dimension == 3 && std::memcmp(node.Basis, standardNode.Basis, sizeof node.Basis) == 0;
   if (standard && !this->StandardLattice.empty())
   {
     this->Directions.insert(

@@ -110,7 +110,8 @@ double MinimumCubedSizeSkew(
     const Four cube =
       (432.0 * ratio * ratio * simd::Min(tau3, one)) / (edgeSquares * simd::Max(tau3, one));
     // `cube > 0 ? min(cube, 1) : 0` (+0 for NaN and -0 too); it is also the inverted lanes' 0:
-    // where alpha is not > 0, tau3 is not > 0 and edgeSquares not < 0, so cube is not > 0.
+    // where alpha is not > 0, tau3 is not > 0 (NaN only where alpha is +-0 and the inverse
+    // infinite, and then ratio^2 is 0 or NaN) and edgeSquares not < 0, so cube is not > 0.
     const Four value = simd::Min(simd::Max(cube, zero), one);
     const bool upright = (alpha[0] > 0.0) & (alpha[1] > 0.0) & (alpha[2] > 0.0) & (alpha[3] > 0.0);
     inverted = inverted || !upright;
