@@ -236,3 +236,60 @@ TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
   EXPECT_GT(larger, 1000u);
   EXPECT_GT(smaller, 1000u);
 }
+
+TEST(LocalRepair, FormsFourAtATimeGiveEachCellsSizeSkew)
+{
+  // The guard's accepted moves take their tetrahedra's values four at a time
+  // (EvaluateFormGroups). Over random forms of every count from 1 to 13, laid out from any first
+  // form, at points where some are inverted, some larger and some smaller than the original, and
+  // at scales whose cube roots leave the fast range (tiny and huge coordinates): every value and
+  // inverted flag as TetraForm::Evaluate gives it, bit for bit.
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double scales[] = { 1.0, 1e-80, 1e60 };
+  std::size_t compared = 0, inverted = 0, outOfRange = 0, larger = 0, smaller = 0;
+  for (int t = 0; t < 3000; ++t)
+  {
+    const double scale = scales[t % 3];
+    const std::size_t count = 1 + static_cast<std::size_t>(t % 13);
+    std::vector<dgmf::repair::TetraForm> forms;
+    while (forms.size() < count)
+    {
+      double corners[12];
+      for (double& c : corners)
+        c = scale * unit(random);
+      const double originalAlpha = 0.1 * scale * scale * scale * std::pow(10.0, unit(random));
+      const dgmf::repair::TetraForm form =
+        dgmf::repair::MakeTetraForm(corners, t % 4, t % 2 == 0 ? 1.0 : -1.0, originalAlpha);
+      if (form.Usable)
+        forms.push_back(form);
+    }
+    const std::size_t first = static_cast<std::size_t>(t / 13) % count;
+    std::vector<double> groups;
+    dgmf::repair::StoreFormsInGroups(forms.data(), count, first, groups);
+    std::rotate(forms.begin(), forms.begin() + static_cast<std::ptrdiff_t>(first), forms.end());
+    const dgmf::Vec3 y{ 0.5 * scale * unit(random), 0.5 * scale * unit(random),
+      0.5 * scale * unit(random) };
+    std::vector<dgmf::CellQuality> grouped(count);
+    dgmf::repair::EvaluateFormGroups(groups.data(), count, y, grouped.data());
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      const dgmf::CellQuality single = forms[j].Evaluate(y);
+      ASSERT_EQ(std::memcmp(&grouped[j].SizeSkew, &single.SizeSkew, sizeof(double)), 0)
+        << "case " << t << ", form " << j;
+      ASSERT_EQ(grouped[j].Inverted, single.Inverted) << "case " << t << ", form " << j;
+      double alpha, edgeSquares;
+      forms[j].Measure(y, alpha, edgeSquares);
+      const double argument = 2.0 * alpha * alpha;
+      inverted += single.Inverted ? 1 : 0;
+      outOfRange += alpha > 0.0 && !(argument >= 1e-300 && argument <= 1e300) ? 1 : 0;
+      (alpha < forms[j].OriginalAlpha ? smaller : larger) += alpha > 0.0 ? 1 : 0;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 20000u);
+  EXPECT_GT(inverted, 3000u);
+  EXPECT_GT(outOfRange, 3000u);
+  EXPECT_GT(larger, 3000u);
+  EXPECT_GT(smaller, 3000u);
+}

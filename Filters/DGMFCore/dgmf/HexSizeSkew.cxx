@@ -198,15 +198,6 @@ inline void InGroupsOf64(std::size_t count, const double* const* cells, Evaluate
   }
 }
 
-/// InverseCubeRootInRange of four values (the bit-level guess lane by lane, the Newton steps
-/// together).
-inline Four InverseCubeRootInRange(Four x)
-{
-  return InverseCubeRootNewton(x,
-    Four{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]), InverseCubeRootGuess(x[2]),
-      InverseCubeRootGuess(x[3]) });
-}
-
 } // namespace
 
 CellQuality HexSizeSkew(const double* original, const double* deformed)

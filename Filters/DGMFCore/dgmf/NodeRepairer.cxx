@@ -508,11 +508,24 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
     }
   }
   // The node's own forms (SmoothNode) give its tetrahedra's values at the new position (the
-  // trials were judged by their cubes); after the move its neighbours' forms would need it anew.
+  // trials were judged by their cubes), four at a time when they are in groups; after the move
+  // its neighbours' forms would need it anew.
+  const std::size_t count = node.CellEnd - node.CellBegin;
+  const bool grouped = this->FormsNode == node.Id && this->FormGroupsReady;
+  if (grouped)
+  {
+    this->AcceptedQualities.resize(count);
+    EvaluateFormGroups(this->FormGroups.data(), count, position, this->AcceptedQualities.data());
+  }
   for (std::size_t i = node.CellBegin; i < node.CellEnd; ++i)
   {
     ActiveCell& cell = this->Cells[this->Incident[i]];
-    const CellQuality quality = this->QualityAt(node, i - node.CellBegin, position);
+    const std::size_t offset = i - node.CellBegin;
+    // The groups start at offset FormGroupsFirst and wrap around.
+    const CellQuality quality = grouped ? this->AcceptedQualities[offset >= this->FormGroupsFirst
+                                              ? offset - this->FormGroupsFirst
+                                              : offset + count - this->FormGroupsFirst]
+                                        : this->QualityAt(node, offset, position);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; !onlyTetrahedra && k < cell.NumberOfNodes; ++k)

@@ -178,6 +178,8 @@ private:
   std::vector<double> FormGroups;
   std::size_t FormGroupsFirst = 0;
   bool FormGroupsReady = false;
+  /// Accept's values of the node's cells at the new position, in the order of FormGroups.
+  std::vector<CellQuality> AcceptedQualities;
   /// Fills FormGroups from Forms, starting at offset `first` (nothing when a cell has no form).
   void PrepareFormGroups(const FreeNode& node, std::size_t first);
   static double Alpha3(const CornerEdges& corner, const double* corners);

@@ -2,6 +2,7 @@
 #include "dgmf/RepairTetraForm.h"
 
 #include "dgmf/Simd.h"
+#include "dgmf/SizeSkewTerms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +34,8 @@ enum FormField : std::size_t
   NormalX = 0,
   OtherX = 3, // other k's coordinate c at OtherX + 3 k + c
   OppositeEdges = 12,
-  InverseOriginalAlpha = 13
+  InverseOriginalAlpha = 13,
+  OriginalAlpha = 14
 };
 
 using Four = simd::Double4;
@@ -41,6 +43,24 @@ using Four = simd::Double4;
 DGMF_SIMD_INLINE Four Field(const double* group, std::size_t field)
 {
   return simd::LoadDouble4(group + 4 * field);
+}
+
+/// TetraForm::Measure of a group's four forms at `y`: the same operations in each lane.
+DGMF_SIMD_INLINE void MeasureGroup(
+  const double* group, const Vec3& y, Four& alpha, Four& edgeSquares)
+{
+  Four d[3][3];
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    d[k][0] = y.X - Field(group, OtherX + 3 * k);
+    d[k][1] = y.Y - Field(group, OtherX + 3 * k + 1);
+    d[k][2] = y.Z - Field(group, OtherX + 3 * k + 2);
+  }
+  alpha = Field(group, NormalX) * d[0][0] + Field(group, NormalX + 1) * d[0][1] +
+    Field(group, NormalX + 2) * d[0][2];
+  edgeSquares = (d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]) +
+    (d[1][0] * d[1][0] + d[1][1] * d[1][1] + d[1][2] * d[1][2]) +
+    (d[2][0] * d[2][0] + d[2][1] * d[2][1] + d[2][2] * d[2][2]) + Field(group, OppositeEdges);
 }
 } // namespace
 
@@ -61,6 +81,7 @@ void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups)
   }
   put(OppositeEdges, form.OppositeEdges);
   put(InverseOriginalAlpha, form.InverseOriginalAlpha);
+  put(OriginalAlpha, form.OriginalAlpha);
 }
 
 void StoreFormsInGroups(
@@ -90,18 +111,8 @@ double MinimumCubedSizeSkew(
   for (std::size_t first = 0; first < count; first += 4)
   {
     const double* group = groups + first / 4 * kFormGroupDoubles;
-    Four d[3][3];
-    for (std::size_t k = 0; k < 3; ++k)
-    {
-      d[k][0] = y.X - Field(group, OtherX + 3 * k);
-      d[k][1] = y.Y - Field(group, OtherX + 3 * k + 1);
-      d[k][2] = y.Z - Field(group, OtherX + 3 * k + 2);
-    }
-    const Four alpha = Field(group, NormalX) * d[0][0] + Field(group, NormalX + 1) * d[0][1] +
-      Field(group, NormalX + 2) * d[0][2];
-    const Four edgeSquares = (d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]) +
-      (d[1][0] * d[1][0] + d[1][1] * d[1][1] + d[1][2] * d[1][2]) +
-      (d[2][0] * d[2][0] + d[2][1] * d[2][1] + d[2][2] * d[2][2]) + Field(group, OppositeEdges);
+    Four alpha, edgeSquares;
+    MeasureGroup(group, y, alpha, edgeSquares);
     const Four ratio = alpha / edgeSquares;
     const Four tau = alpha * Field(group, InverseOriginalAlpha);
     const Four tau3 = tau * tau * tau;
@@ -124,6 +135,38 @@ double MinimumCubedSizeSkew(
     }
   }
   return minimum;
+}
+
+DGMF_SIMD_AVX2_CLONES
+void EvaluateFormGroups(
+  const double* groups, std::size_t count, const Vec3& y, CellQuality* qualities)
+{
+  // TetraSizeSkew's operations in each lane: the size factor std::min(tau, 1 / tau) is
+  // Min(1 / tau, tau) (`1 / tau < tau ? 1 / tau : tau`), the value
+  // f_size * 6 / (edgeSquares * (2 alpha^2)^(-1/3)). Lanes whose alpha is not > 0 or whose root's
+  // argument is out of the fast range take the cell-by-cell function (what the lanes computed
+  // there is not used).
+  for (std::size_t first = 0; first < count; first += 4)
+  {
+    const double* group = groups + first / 4 * kFormGroupDoubles;
+    Four alpha, edgeSquares;
+    MeasureGroup(group, y, alpha, edgeSquares);
+    const Four argument = 2.0 * alpha * alpha;
+    const Four inverseRoot = sizeskew::InverseCubeRootInRange(argument);
+    const Four originalAlpha = Field(group, OriginalAlpha);
+    const Four tau = alpha / originalAlpha;
+    const Four value = simd::Min(1.0 / tau, tau) * 6.0 / (edgeSquares * inverseRoot);
+    const std::size_t lanes = std::min<std::size_t>(4, count - first);
+    for (std::size_t l = 0; l < lanes; ++l)
+    {
+      const int lane = static_cast<int>(l);
+      const bool fast = alpha[lane] > 0.0 && argument[lane] >= sizeskew::kCubeRootLow &&
+        argument[lane] <= sizeskew::kCubeRootHigh;
+      qualities[first + l] = fast
+        ? sizeskew::Valid(value[lane])
+        : TetraSizeSkew(alpha[lane], edgeSquares[lane], originalAlpha[lane]);
+    }
+  }
 }
 
 } // namespace repair

@@ -98,10 +98,11 @@ struct TetraForm
   }
 };
 
-/// Forms stored four to a group for MinimumCubedSizeSkew: per group, each of kFormGroupFields
-/// fields (the normal's 3 coordinates, the other corners' 9, OppositeEdges, InverseOriginalAlpha)
-/// as four consecutive doubles, one per form (the lanes of simd::Double4).
-constexpr std::size_t kFormGroupFields = 14;
+/// Forms stored four to a group for MinimumCubedSizeSkew and EvaluateFormGroups: per group, each
+/// of kFormGroupFields fields (the normal's 3 coordinates, the other corners' 9, OppositeEdges,
+/// InverseOriginalAlpha, OriginalAlpha) as four consecutive doubles, one per form (the lanes of
+/// simd::Double4).
+constexpr std::size_t kFormGroupFields = 15;
 constexpr std::size_t kFormGroupDoubles = 4 * kFormGroupFields;
 
 /// Writes usable `form` as form `index` of `groups` (group index / 4, lane index % 4).
@@ -125,6 +126,15 @@ void StoreFormsInGroups(
  */
 double MinimumCubedSizeSkew(
   const double* groups, std::size_t count, const Vec3& y, double cutoffCube, bool& inverted);
+
+/**
+ * TetraForm::Evaluate at `y` of forms 0 .. `count` - 1 of `groups` (StoreFormInGroup), to
+ * `qualities` (`count` values), four at a time with each value's bits: the cube roots of the
+ * lanes in range (TetraSizeSkew's fast path) together, the other lanes (inverted, or a root out
+ * of range) cell by cell. The guard's accepted moves (NodeRepairer::Accept).
+ */
+void EvaluateFormGroups(
+  const double* groups, std::size_t count, const Vec3& y, CellQuality* qualities);
 
 /**
  * The form of a tetrahedron seen from corner `corner` (0 to 3, VTK order), whose three other

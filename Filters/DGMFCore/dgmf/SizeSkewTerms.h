@@ -7,6 +7,7 @@
 #ifndef dgmf_SizeSkewTerms_h
 #define dgmf_SizeSkewTerms_h
 
+#include "dgmf/Simd.h"
 #include "dgmf/SizeSkewQuality.h"
 
 #include <algorithm>
@@ -59,6 +60,15 @@ inline T InverseCubeRootNewton(T x, T y)
 inline double InverseCubeRootInRange(double x)
 {
   return InverseCubeRootNewton(x, InverseCubeRootGuess(x));
+}
+
+/// InverseCubeRootInRange of four values (the bit-level guess lane by lane, the Newton steps
+/// together): each lane has the one-value function's bits.
+DGMF_SIMD_INLINE simd::Double4 InverseCubeRootInRange(simd::Double4 x)
+{
+  return InverseCubeRootNewton(x,
+    simd::Double4{ InverseCubeRootGuess(x[0]), InverseCubeRootGuess(x[1]),
+      InverseCubeRootGuess(x[2]), InverseCubeRootGuess(x[3]) });
 }
 
 /// factor * cbrt(numerator / denominator), as factor * n * (n^2 d)^(-1/3).
