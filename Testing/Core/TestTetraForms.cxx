@@ -17,6 +17,46 @@ using dgmf::CellQuality;
 using dgmf::CellShape;
 using dgmf::ComputeSizeSkew;
 
+namespace
+{
+/// A case of the four-at-a-time tests: forms, their groups and a point.
+struct FormCase
+{
+  std::vector<dgmf::repair::TetraForm> Forms; ///< in the groups' order
+  std::vector<double> Groups;
+  dgmf::Vec3 Y;
+};
+
+/**
+ * Case `t`: 1 + t % 13 random usable forms with coordinates `scale` times numbers in [-1, 1]
+ * (original Jacobians 0.01 to 1 times scale^3), laid out in groups from form (t / 13) % count
+ * on (as the guard starts at the node's worst cell), and a point within half the scale.
+ */
+FormCase MakeFormCase(int t, double scale, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const std::size_t count = 1 + static_cast<std::size_t>(t % 13);
+  FormCase c;
+  while (c.Forms.size() < count)
+  {
+    double corners[12];
+    for (double& x : corners)
+      x = scale * unit(random);
+    const double originalAlpha = 0.1 * scale * scale * scale * std::pow(10.0, unit(random));
+    const dgmf::repair::TetraForm form =
+      dgmf::repair::MakeTetraForm(corners, t % 4, t % 2 == 0 ? 1.0 : -1.0, originalAlpha);
+    if (form.Usable)
+      c.Forms.push_back(form);
+  }
+  const std::size_t first = static_cast<std::size_t>(t / 13) % count;
+  dgmf::repair::StoreFormsInGroups(c.Forms.data(), count, first, c.Groups);
+  std::rotate(c.Forms.begin(), c.Forms.begin() + static_cast<std::ptrdiff_t>(first), c.Forms.end());
+  c.Y = dgmf::Vec3{ 0.5 * scale * unit(random), 0.5 * scale * unit(random),
+    0.5 * scale * unit(random) };
+  return c;
+}
+} // namespace
+
 TEST(SizeSkewQuality, TetraFromThreeNumbersIsTheTetrahedronsSizeSkew)
 {
   // Random tetrahedra of both orientations and of sizes 1e-3 to 1e3, moved by up to twice their
@@ -163,24 +203,11 @@ TEST(LocalRepair, FormsFourAtATimeGiveTheCellByCellMinimumAndDecision)
   std::size_t compared = 0, withInverted = 0, rejected = 0, accepted = 0, larger = 0, smaller = 0;
   for (int t = 0; t < 3000; ++t)
   {
-    const std::size_t count = 1 + static_cast<std::size_t>(t % 13);
-    std::vector<dgmf::repair::TetraForm> forms;
-    while (forms.size() < count)
-    {
-      double corners[12];
-      for (double& c : corners)
-        c = unit(random);
-      const dgmf::repair::TetraForm form = dgmf::repair::MakeTetraForm(
-        corners, t % 4, t % 2 == 0 ? 1.0 : -1.0, 0.1 * std::pow(10.0, unit(random)));
-      if (form.Usable)
-        forms.push_back(form);
-    }
-    // Starting anywhere, as the guard starts at the node's worst cell.
-    const std::size_t first = static_cast<std::size_t>(t / 13) % count;
-    std::vector<double> groups;
-    dgmf::repair::StoreFormsInGroups(forms.data(), count, first, groups);
-    std::rotate(forms.begin(), forms.begin() + static_cast<std::ptrdiff_t>(first), forms.end());
-    const dgmf::Vec3 y{ 0.5 * unit(random), 0.5 * unit(random), 0.5 * unit(random) };
+    const FormCase c = MakeFormCase(t, 1.0, random);
+    const std::vector<dgmf::repair::TetraForm>& forms = c.Forms;
+    const std::vector<double>& groups = c.Groups;
+    const std::size_t count = forms.size();
+    const dgmf::Vec3 y = c.Y;
 
     double minimum = std::numeric_limits<double>::infinity();
     bool inverted = false;
@@ -245,33 +272,16 @@ TEST(LocalRepair, FormsFourAtATimeGiveEachCellsSizeSkew)
   // at scales whose cube roots leave the fast range (tiny and huge coordinates): every value and
   // inverted flag as TetraForm::Evaluate gives it, bit for bit.
   std::mt19937 random(12);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double scales[] = { 1.0, 1e-80, 1e60 };
   std::size_t compared = 0, inverted = 0, outOfRange = 0, larger = 0, smaller = 0;
   for (int t = 0; t < 3000; ++t)
   {
-    const double scale = scales[t % 3];
-    const std::size_t count = 1 + static_cast<std::size_t>(t % 13);
-    std::vector<dgmf::repair::TetraForm> forms;
-    while (forms.size() < count)
-    {
-      double corners[12];
-      for (double& c : corners)
-        c = scale * unit(random);
-      const double originalAlpha = 0.1 * scale * scale * scale * std::pow(10.0, unit(random));
-      const dgmf::repair::TetraForm form =
-        dgmf::repair::MakeTetraForm(corners, t % 4, t % 2 == 0 ? 1.0 : -1.0, originalAlpha);
-      if (form.Usable)
-        forms.push_back(form);
-    }
-    const std::size_t first = static_cast<std::size_t>(t / 13) % count;
-    std::vector<double> groups;
-    dgmf::repair::StoreFormsInGroups(forms.data(), count, first, groups);
-    std::rotate(forms.begin(), forms.begin() + static_cast<std::ptrdiff_t>(first), forms.end());
-    const dgmf::Vec3 y{ 0.5 * scale * unit(random), 0.5 * scale * unit(random),
-      0.5 * scale * unit(random) };
+    const FormCase c = MakeFormCase(t, scales[t % 3], random);
+    const std::vector<dgmf::repair::TetraForm>& forms = c.Forms;
+    const std::size_t count = forms.size();
+    const dgmf::Vec3 y = c.Y;
     std::vector<dgmf::CellQuality> grouped(count);
-    dgmf::repair::EvaluateFormGroups(groups.data(), count, y, grouped.data());
+    dgmf::repair::EvaluateFormGroups(c.Groups.data(), count, y, grouped.data());
     for (std::size_t j = 0; j < count; ++j)
     {
       const dgmf::CellQuality single = forms[j].Evaluate(y);
