@@ -229,6 +229,9 @@ bool NodeRepairer::SmoothNode(FreeNode& node, double minimum0)
   {
     this->Accept(node, bestPosition);
   }
+  // The forms hold the other corners' positions of this visit: once a neighbour moves they are
+  // stale, so no later step of this node (an untangling's Accept) may read them.
+  this->FormsNode = -1;
   return found;
 }
 
