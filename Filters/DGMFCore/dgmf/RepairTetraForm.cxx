@@ -124,7 +124,7 @@ double MinimumCubedSizeSkew(
     // where alpha is not > 0, tau3 is not > 0 (NaN only where alpha is +-0 and the inverse
     // infinite, and then ratio^2 is 0 or NaN) and edgeSquares not < 0, so cube is not > 0.
     const Four value = simd::Min(simd::Max(cube, zero), one);
-    const bool upright = (alpha[0] > 0.0) & (alpha[1] > 0.0) & (alpha[2] > 0.0) & (alpha[3] > 0.0);
+    const bool upright = alpha[0] > 0.0 && alpha[1] > 0.0 && alpha[2] > 0.0 && alpha[3] > 0.0;
     inverted = inverted || !upright;
     // The values are numbers, so the order of the minima does not matter.
     minimum =
