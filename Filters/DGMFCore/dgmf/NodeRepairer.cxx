@@ -507,9 +507,9 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
       markDirty(this->EdgeEnds[e]);
     }
   }
-  // The node's own forms (SmoothNode) give its tetrahedra's values at the new position (the
-  // trials were judged by their cubes), four at a time when they are in groups; after the move
-  // its neighbours' forms would need it anew.
+  // Inside SmoothNode (the only holder of forms: it forgets them on its way out), the node's own
+  // forms give its tetrahedra's values at the new position (the trials were judged by their
+  // cubes), four at a time when they are in groups.
   const std::size_t count = node.CellEnd - node.CellBegin;
   const bool grouped = this->FormsNode == node.Id && this->FormGroupsReady;
   if (grouped)
@@ -533,7 +533,6 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
       markDirty(cell.Nodes[k]);
     }
   }
-  this->FormsNode = -1;
 }
 
 bool NodeRepairer::StepNode(FreeNode& node)
