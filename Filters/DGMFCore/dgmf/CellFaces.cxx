@@ -7,9 +7,6 @@ const std::int64_t* GetShapeFaceStream(CellShape shape)
 {
   static const std::int64_t triangle[] = { 1, 3, 0, 1, 2 };
   static const std::int64_t quad[] = { 1, 4, 0, 1, 2, 3 };
-  static const std::int64_t tetra[] = { 4, 3, 0, 1, 3, 3, 1, 2, 3, 3, 2, 0, 3, 3, 0, 2, 1 };
-  static const std::int64_t hexahedron[] = { 6, 4, 0, 4, 7, 3, 4, 1, 2, 6, 5, 4, 0, 1, 5, 4, 4, 3,
-    7, 6, 2, 4, 0, 3, 2, 1, 4, 4, 5, 6, 7 };
   static const std::int64_t wedge[] = { 5, 3, 0, 1, 2, 3, 3, 5, 4, 4, 0, 3, 4, 1, 4, 1, 4, 5, 2, 4,
     2, 5, 3, 0 };
   static const std::int64_t pyramid[] = { 5, 4, 0, 3, 2, 1, 3, 0, 1, 4, 3, 1, 2, 4, 3, 2, 3, 4, 3,
@@ -21,9 +18,9 @@ const std::int64_t* GetShapeFaceStream(CellShape shape)
     case CellShape::Quad:
       return quad;
     case CellShape::Tetra:
-      return tetra;
+      return TetraFaceStream;
     case CellShape::Hexahedron:
-      return hexahedron;
+      return HexahedronFaceStream;
     case CellShape::Wedge:
       return wedge;
     case CellShape::Pyramid:

@@ -15,6 +15,13 @@
 namespace dgmf
 {
 
+/// The face streams of the tetrahedron and the hexahedron (GetShapeFaceStream's), for code that
+/// needs them at compile time.
+inline constexpr std::int64_t TetraFaceStream[] = { 4, 3, 0, 1, 3, 3, 1, 2, 3, 3, 2, 0, 3, 3, 0, 2,
+  1 };
+inline constexpr std::int64_t HexahedronFaceStream[] = { 6, 4, 0, 4, 7, 3, 4, 1, 2, 6, 5, 4, 0, 1,
+  5, 4, 4, 3, 7, 6, 2, 4, 0, 3, 2, 1, 4, 4, 5, 6, 7 };
+
 /**
  * The face stream of `shape`, with corners numbered 0 .. GetNumberOfCorners(shape) - 1 (VTK's
  * face order and corner order, e.g. vtkHexahedron's faces). A 2D shape is one face: the polygon.

@@ -1,5 +1,7 @@
 #include "dgmf/FaceParity.h"
 
+#include "dgmf/CellFaces.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -22,22 +24,9 @@ std::uint64_t Mix64(std::uint64_t x)
   return x ^ (x >> 31);
 }
 
-/// The two 64-bit halves of a hash (independent seeds).
-struct Hash128
-{
-  std::uint64_t Low = 0;
-  std::uint64_t High = 0;
-
-  bool operator==(const Hash128& o) const { return this->Low == o.Low && this->High == o.High; }
-  bool operator<(const Hash128& o) const
-  {
-    return this->Low < o.Low || (this->Low == o.Low && this->High < o.High);
-  }
-};
-
-/// Whether two of the `count` `hashes` are equal (a cell with two faces of the same points); may
-/// reorder them.
-inline bool HasTwinFaces(Hash128* hashes, std::size_t count)
+/// Whether two of the `count` face `hashes` are equal (a cell with two faces of the same points);
+/// may reorder them.
+inline bool HasTwinFaces(std::uint64_t* hashes, std::size_t count)
 {
   if (count <= 8)
   {
@@ -57,10 +46,10 @@ inline bool HasTwinFaces(Hash128* hashes, std::size_t count)
   return std::adjacent_find(hashes, hashes + count) != hashes + count;
 }
 
-/// A point id's 128-bit mix.
-inline Hash128 PointHash(std::uint64_t p)
+/// A point id's mix.
+inline std::uint64_t PointHash(std::uint64_t p)
 {
-  return Hash128{ Mix64(p ^ 0x6a09e667f3bcc908ULL), Mix64(p ^ 0xbb67ae8584caa73bULL) };
+  return Mix64(p ^ 0x6a09e667f3bcc908ULL);
 }
 
 /// The largest shape a run takes (hexagonal prism: 12 corners, 8 faces of up to 6 corners).
@@ -76,7 +65,7 @@ struct RunShape
   int Corner[RunFaces][RunFaceSize] = {};
 
   /// False when the shape is larger than a run takes (then cell by cell).
-  bool Decode(const std::int64_t* local, int corners)
+  constexpr bool Decode(const std::int64_t* local, int corners)
   {
     if (corners > RunCorners || local[0] > RunFaces)
     {
@@ -97,27 +86,56 @@ struct RunShape
     }
     return true;
   }
+
+  bool operator==(const RunShape& o) const
+  {
+    if (this->Faces != o.Faces)
+    {
+      return false;
+    }
+    for (int f = 0; f < this->Faces; ++f)
+    {
+      if (this->Size[f] != o.Size[f] ||
+        !std::equal(this->Corner[f], this->Corner[f] + this->Size[f], o.Corner[f]))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
 };
+
+constexpr RunShape DecodedShape(const std::int64_t* faceStream, int corners)
+{
+  RunShape shape;
+  shape.Decode(faceStream, corners);
+  return shape;
+}
+
+/// The usual shapes, known at compile time: their face sums need no table lookups.
+constexpr RunShape Hexahedron = DecodedShape(HexahedronFaceStream, 8);
+constexpr RunShape Tetra = DecodedShape(TetraFaceStream, 4);
+/// No shape known at compile time: the run's.
+constexpr RunShape RunsOwnShape{};
 
 /**
  * The faces of `count` cells of one shape whose corners follow one another in `ids`, into `sum`;
  * true when one of them refuses the answer (a point id out of range, twin faces). Each corner is
  * mixed once, the faces are summed from the shape's table, as the cell-by-cell path does.
- * `Corners`, `Faces` and `FaceSize` fixed at compile time for the usual shapes (0: the shape's).
+ * `Fixed`: the shape when it is known at compile time (then `Corners`, `Faces` and `FaceSize`
+ * are its own), else RunsOwnShape (and 0 for those: the run's `runShape`).
  */
-template <int Corners, int Faces, int FaceSize>
-bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int cornersPerCell,
-  std::size_t numberOfPoints, const Hash128* countHash, Hash128& sum)
+template <const RunShape& Fixed, int Corners, int Faces, int FaceSize>
+bool AddRun(const RunShape& runShape, const void* idBytes, std::size_t count, int cornersPerCell,
+  std::size_t numberOfPoints, const std::uint64_t* countHash, std::uint64_t& sum)
 {
   // The ids are read as bytes: their type is the caller's 64-bit integer (long or long long).
   const auto* ids = static_cast<const unsigned char*>(idBytes);
+  const RunShape& shape = Fixed.Faces > 0 ? Fixed : runShape;
   const int corners = Corners > 0 ? Corners : cornersPerCell;
   const int faces = Faces > 0 ? Faces : shape.Faces;
-  // The corners' two halves apart: each is stored and read as one 64-bit word (a 16-byte read of
-  // two 8-byte stores just made would wait for them: no store-to-load forwarding).
-  std::uint64_t cornerLow[RunCorners];
-  std::uint64_t cornerHigh[RunCorners];
-  Hash128 faceHash[RunFaces];
+  std::uint64_t cornerHash[RunCorners];
+  std::uint64_t faceHash[RunFaces];
   for (std::size_t c = 0; c < count; ++c, ids += 8 * corners)
   {
     for (int k = 0; k < corners; ++k)
@@ -128,22 +146,18 @@ bool AddRun(const RunShape& shape, const void* idBytes, std::size_t count, int c
       {
         return true;
       }
-      const Hash128 point = PointHash(static_cast<std::uint64_t>(id));
-      cornerLow[k] = point.Low;
-      cornerHigh[k] = point.High;
+      cornerHash[k] = PointHash(static_cast<std::uint64_t>(id));
     }
     for (int f = 0; f < faces; ++f)
     {
       const int size = FaceSize > 0 ? FaceSize : shape.Size[f];
-      Hash128 face = countHash[size];
+      std::uint64_t face = countHash[size];
       for (int k = 0; k < size; ++k)
       {
-        face.Low += cornerLow[shape.Corner[f][k]];
-        face.High += cornerHigh[shape.Corner[f][k]];
+        face += cornerHash[shape.Corner[f][k]];
       }
       faceHash[f] = face;
-      sum.Low ^= face.Low;
-      sum.High ^= face.High;
+      sum ^= face;
     }
     if (HasTwinFaces(faceHash, static_cast<std::size_t>(faces)))
     {
@@ -158,30 +172,30 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
 {
   // A face's hash is the sum of its points' mixes (and of its number of points, mixed), so
   // neither order nor start matters; a standard shape's corners are mixed once per cell.
-  std::array<Hash128, 16> countHash; // the mix of a face's number of points, for the usual ones
+  std::array<std::uint64_t, 16> countHash; // the mix of a face's number of points, usual ones
   for (std::size_t n = 0; n < countHash.size(); ++n)
   {
-    countHash[n] = { Mix64(n), 0 };
+    countHash[n] = Mix64(n);
   }
   const std::size_t numberOfCells = cells.GetNumberOfCells();
   const std::size_t blocks = (numberOfCells + CellsPerBlock - 1) / CellsPerBlock;
-  std::vector<Hash128> sums(blocks);
+  std::vector<std::uint64_t> sums(blocks);
   std::vector<std::uint8_t> refused(blocks, 0); // twin faces, or a point id out of range
   ForEachBlock(parallelFor, blocks,
     [&](std::size_t block)
     {
       std::vector<std::int64_t> stream;
       std::vector<std::int64_t> corners;
-      std::vector<Hash128> cornerHash;
-      std::vector<Hash128> faces;
-      Hash128 sum;
+      std::vector<std::uint64_t> cornerHash;
+      std::vector<std::uint64_t> faces;
+      std::uint64_t sum = 0;
       bool refuse = false; // written to `refused` once: its bytes are shared by the threads
       const auto hashOf = [&](std::int64_t id)
       {
         if (id < 0 || static_cast<std::size_t>(id) >= numberOfPoints)
         {
           refuse = true;
-          return Hash128();
+          return std::uint64_t(0);
         }
         return PointHash(static_cast<std::uint64_t>(id));
       };
@@ -196,18 +210,15 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           {
             continue;
           }
-          Hash128 face = static_cast<std::size_t>(count) < countHash.size()
+          std::uint64_t face = static_cast<std::size_t>(count) < countHash.size()
             ? countHash[static_cast<std::size_t>(count)]
-            : Hash128{ Mix64(static_cast<std::uint64_t>(count)), 0 };
+            : Mix64(static_cast<std::uint64_t>(count));
           for (std::int64_t k = 0; k < count; ++k)
           {
-            const Hash128 point = hashAt(faceStream[at + 1 + k]);
-            face.Low += point.Low;
-            face.High += point.High;
+            face += hashAt(faceStream[at + 1 + k]);
           }
           faces.push_back(face);
-          sum.Low ^= face.Low;
-          sum.High ^= face.High;
+          sum ^= face;
         }
         refuse = refuse || HasTwinFaces(faces.data(), faces.size());
       };
@@ -224,15 +235,13 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
           RunShape shape;
           if (count >= 1 && shape.Decode(local, perCell))
           {
-            const bool hexahedra = perCell == 8 && shape.Faces == 6 &&
-              std::all_of(shape.Size, shape.Size + 6, [](int n) { return n == 4; });
-            const bool tetrahedra = perCell == 4 && shape.Faces == 4 &&
-              std::all_of(shape.Size, shape.Size + 4, [](int n) { return n == 3; });
-            refuse = hexahedra
-              ? AddRun<8, 6, 4>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum)
-              : tetrahedra
-              ? AddRun<4, 4, 3>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum)
-              : AddRun<0, 0, 0>(shape, ids, count, perCell, numberOfPoints, countHash.data(), sum);
+            refuse = perCell == 8 && shape == Hexahedron
+              ? AddRun<Hexahedron, 8, 6, 4>(
+                  shape, ids, count, perCell, numberOfPoints, countHash.data(), sum)
+              : perCell == 4 && shape == Tetra ? AddRun<Tetra, 4, 4, 3>(shape, ids, count, perCell,
+                                                   numberOfPoints, countHash.data(), sum)
+                                               : AddRun<RunsOwnShape, 0, 0, 0>(shape, ids, count,
+                                                   perCell, numberOfPoints, countHash.data(), sum);
             c += count - 1;
             continue;
           }
@@ -257,17 +266,16 @@ bool FacesPairUp(const FaceCells& cells, std::size_t numberOfPoints, const Paral
       refused[block] = refuse ? 1 : 0;
       sums[block] = sum;
     });
-  Hash128 total;
+  std::uint64_t total = 0;
   for (std::size_t block = 0; block < blocks; ++block)
   {
     if (refused[block])
     {
       return false;
     }
-    total.Low ^= sums[block].Low;
-    total.High ^= sums[block].High;
+    total ^= sums[block];
   }
-  return total.Low == 0 && total.High == 0;
+  return total == 0;
 }
 
 } // namespace dgmf
