@@ -74,21 +74,21 @@ std::uint64_t HashBytes(const void* data, std::size_t bytes, std::uint64_t seed,
   return h;
 }
 
-std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed)
+std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed, bool onThreads)
 {
   return HashBytes(array->GetVoidPointer(0),
     static_cast<std::size_t>(array->GetNumberOfValues()) *
       static_cast<std::size_t>(array->GetDataTypeSize()),
-    seed + static_cast<std::uint64_t>(array->GetDataType()));
+    seed + static_cast<std::uint64_t>(array->GetDataType()), onThreads);
 }
 
-std::uint64_t HashCells(vtkUnstructuredGrid* mesh)
+std::uint64_t HashCells(vtkUnstructuredGrid* mesh, bool onThreads)
 {
   vtkCellArray* cells = mesh->GetCells();
-  std::uint64_t h = HashArray(cells->GetConnectivityArray());
-  h = HashArray(cells->GetOffsetsArray(), h);
-  h = HashArray(mesh->GetCellTypesArray(), h);
-  return mesh->GetFaces() ? HashArray(mesh->GetFaces(), h) : h;
+  std::uint64_t h = HashArray(cells->GetConnectivityArray(), 0, onThreads);
+  h = HashArray(cells->GetOffsetsArray(), h, onThreads);
+  h = HashArray(mesh->GetCellTypesArray(), h, onThreads);
+  return mesh->GetFaces() ? HashArray(mesh->GetFaces(), h, onThreads) : h;
 }
 
 bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>& hash)
@@ -122,6 +122,12 @@ void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& ha
 bool ContentKey::MatchesObject(vtkObject* object) const
 {
   return this->Valid && this->Object == object && this->MTime == object->GetMTime();
+}
+
+void ContentKey::SetHash(std::uint64_t hash)
+{
+  this->Hash = hash;
+  this->ObjectOnly = false;
 }
 
 void ContentKey::SetObjectOnly(vtkObject* object)

@@ -33,10 +33,10 @@ std::uint64_t HashBytes(
   const void* data, std::size_t bytes, std::uint64_t seed = DefaultHashSeed, bool onThreads = true);
 
 /// HashBytes of an array's values, seeded with its value type.
-std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0);
+std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0, bool onThreads = true);
 
 /// HashArray of a grid's cells: connectivity, offsets, types and polyhedron faces.
-std::uint64_t HashCells(vtkUnstructuredGrid* mesh);
+std::uint64_t HashCells(vtkUnstructuredGrid* mesh, bool onThreads = true);
 
 /**
  * The content of an input object between executions: the object and its MTime, and, when either
@@ -53,6 +53,12 @@ public:
   /// Remembers `object` and its MTime only, for a result cheaper to compute again than to hash:
   /// another object (or this one modified) then never matches.
   void SetObjectOnly(vtkObject* object);
+  /// Remembers `object` and its MTime now and its content's hash later (SetHash), for a hash
+  /// computed off the critical path: until then the key is a SetObjectOnly key.
+  void SetHashLater(vtkObject* object) { this->SetObjectOnly(object); }
+  /// The hash of the content of the object given to SetHashLater (computed from that object,
+  /// unmodified since).
+  void SetHash(std::uint64_t hash);
   /// True when `object` is the object the key was set for, unmodified (what a SetObjectOnly key
   /// can tell; no hash).
   bool MatchesObject(vtkObject* object) const;

@@ -135,7 +135,16 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
   double* out = extruded ? layerDeformed.data() : deformed->GetPointer(0);
 
   const dgmf::DelaunayMapping* mapping = nullptr;
-  if (needs.Graph)
+  // What the gathering left for later (keys' hashes) runs beside the graph's insertion.
+  const dgmf::DelaunayGraph::SideJobs deferred = caches.Inputs.TakeDeferredJobs();
+  if (!needs.Graph)
+  {
+    for (const std::function<void()>& job : deferred)
+    {
+      job();
+    }
+  }
+  else
   {
     // A new graph: r and f are computed anew, and their arrays and the output points are first
     // touched while the graph is built (on another thread), off the critical path.
@@ -150,7 +159,7 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
         touched.push_back(deformed);
         return touched;
       },
-      parallelFor, result.GraphReused, result.Report.Warnings);
+      deferred, parallelFor, result.GraphReused, result.Report.Warnings);
     if (!result.GraphReused)
     {
       result.GraphSeconds = mapping->GetGraphSeconds();

@@ -154,6 +154,7 @@ dgmf::DeformationProblem InputNodes::ToProblem() const
 void InputGatherer::Gather(
   vtkUnstructuredGrid* mesh, const GatherOptions& options, InputNodes& nodes)
 {
+  this->Deferred.clear();
   const SelectedArrays& arrays = options.Arrays;
   const auto n = static_cast<std::size_t>(mesh->GetNumberOfPoints());
   if (n == 0 && options.Distributed)
@@ -345,6 +346,13 @@ std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
   return flags;
 }
 
+std::vector<std::function<void()>> InputGatherer::TakeDeferredJobs()
+{
+  std::vector<std::function<void()>> jobs;
+  jobs.swap(this->Deferred);
+  return jobs;
+}
+
 bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes)
 {
   if (nodes.Dimension != 3)
@@ -378,7 +386,10 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
         }
       }
     }
-    this->ClosingCells.Set(cells, [&]() { return HashCells(mesh); });
+    // The key's hash is for the next execution: computed beside the graph's insertion.
+    this->ClosingCells.SetHashLater(cells);
+    this->Deferred.emplace_back(
+      [this, mesh]() { this->ClosingCells.SetHash(HashCells(mesh, false)); });
     this->ClosingPatches.Set(patches);
   }
   if (this->ClosingPolygons.empty())

@@ -54,11 +54,16 @@ const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem&
 const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem& problem,
   vtkDataArray* pointsArray, const std::function<std::size_t()>& hintStride,
   const std::function<std::vector<vtkDoubleArray*>()>& beforeBuild,
-  const dgmf::ParallelFor& parallelFor, bool& reused, std::vector<std::string>& warnings)
+  const dgmf::DelaunayGraph::SideJobs& alongside, const dgmf::ParallelFor& parallelFor,
+  bool& reused, std::vector<std::string>& warnings)
 {
   reused = this->Matches(problem, pointsArray);
   if (reused)
   {
+    for (const std::function<void()>& job : alongside)
+    {
+      job();
+    }
     return *this->Mapping;
   }
   const std::vector<vtkDoubleArray*> arrays = beforeBuild();
@@ -70,7 +75,7 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
     dgmf::AppendFirstTouchParts(
       array->GetPointer(0), static_cast<std::size_t>(array->GetDataSize()) * sizeof(double), parts);
   }
-  dgmf::DelaunayGraph::SideJobs touches;
+  dgmf::DelaunayGraph::SideJobs touches = alongside; // single jobs of their own first
   dgmf::AppendFirstTouchJobs(parts, touches);
   const dgmf::DelaunayMapping& built =
     this->Build(problem, pointsArray, hintStride(), touches, parallelFor);

@@ -46,14 +46,16 @@ public:
    * The mapping of `problem`: Matches() or Build(), with the hint stride `hintStride()` (asked
    * only for a build: it samples the cells). Before a build, `beforeBuild` runs (on this
    * thread) and returns arrays whose memory is then zeroed, in parts, beside the graph's
-   * insertion (first touches of output arrays, off the critical path). `reused` tells which;
+   * insertion (first touches of output arrays, off the critical path), and so do the
+   * `alongside` jobs (run here, in order, when the mapping is reused). `reused` tells which;
    * `warnings` gets what the new graph found (static nodes on moving ones, nodes outside the
    * graph).
    */
   const dgmf::DelaunayMapping& Update(const dgmf::DeformationProblem& problem,
     vtkDataArray* pointsArray, const std::function<std::size_t()>& hintStride,
     const std::function<std::vector<vtkDoubleArray*>()>& beforeBuild,
-    const dgmf::ParallelFor& parallelFor, bool& reused, std::vector<std::string>& warnings);
+    const dgmf::DelaunayGraph::SideJobs& alongside, const dgmf::ParallelFor& parallelFor,
+    bool& reused, std::vector<std::string>& warnings);
 
   /// The current mapping, or null.
   const dgmf::DelaunayMapping* Get() const { return this->Mapping.get(); }

@@ -165,23 +165,28 @@ TEST(InputNodes, AMarkerIsNotReusedAfterAnotherOnesConversionFailedHalfWay)
   EXPECT_EQ(kindsWith("BoundaryMarker"), first);
 }
 
-TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
+namespace
 {
-  // A box of n^3 hexahedra and its sides' quads kept apart on its points (a composite input's
-  // patches: CompositeMesh::GetPatches), the roles of named boundaries on the sides read. With
-  // every side, the quads close the volume and its boundary is not searched for; without the
-  // side x = n (a patch the reader was not asked for), it is, and that side becomes static.
-  const int n = 5;
-  const auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  const vtkSmartPointer<vtkUnstructuredGrid> volume = dgmf_test::HexahedralBox(n);
-  vtkPoints* points = volume->GetPoints();
-  for (const bool allSides : { true, false })
+/// A box of n^3 hexahedra and its sides' quads kept apart on its points (a composite input's
+/// patches: CompositeMesh::GetPatches), with the roles of named boundaries on the sides read:
+/// the side x = 0 moving, the others static; without the side x = n when `allSides` is false (a
+/// patch the reader was not asked for).
+struct BoxWithPatches
+{
+  static constexpr int N = 5;
+  vtkSmartPointer<vtkUnstructuredGrid> Volume = dgmf_test::HexahedralBox(N);
+  vtkNew<vtkUnstructuredGrid> Patches;
+  dgmf_vtk::NodeRoles Roles;
+
+  static vtkIdType Id(int i, int j, int k) { return i + (N + 1) * (j + (N + 1) * k); }
+
+  explicit BoxWithPatches(bool allSides)
   {
-    vtkNew<vtkUnstructuredGrid> patches;
-    patches->SetPoints(points);
-    dgmf_vtk::NodeRoles roles;
-    roles.Kinds.resize(static_cast<std::size_t>(points->GetNumberOfPoints()));
-    std::fill(roles.Kinds.begin(), roles.Kinds.end(), dgmf::NodeKind::Interior);
+    const int n = N;
+    vtkPoints* points = this->Volume->GetPoints();
+    this->Patches->SetPoints(points);
+    this->Roles.Kinds.resize(static_cast<std::size_t>(points->GetNumberOfPoints()));
+    std::fill(this->Roles.Kinds.begin(), this->Roles.Kinds.end(), dgmf::NodeKind::Interior);
     for (int axis = 0; axis < 3; ++axis)
     {
       for (int side = 0; side < 2; ++side)
@@ -202,12 +207,12 @@ TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
               ijk[axis] = side * n;
               ijk[(axis + 1) % 3] = corners[k][0];
               ijk[(axis + 2) % 3] = corners[k][1];
-              quad[k] = id(ijk[0], ijk[1], ijk[2]);
-              roles.Kinds[static_cast<std::size_t>(quad[k])] = axis == 0 && side == 0
+              quad[k] = Id(ijk[0], ijk[1], ijk[2]);
+              this->Roles.Kinds[static_cast<std::size_t>(quad[k])] = axis == 0 && side == 0
                 ? dgmf::NodeKind::MovingBoundary
                 : dgmf::NodeKind::StaticBoundary;
             }
-            patches->InsertNextCell(VTK_QUAD, 4, quad);
+            this->Patches->InsertNextCell(VTK_QUAD, 4, quad);
           }
         }
       }
@@ -215,17 +220,36 @@ TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
     // The moving side's own nodes are moving, corners shared with a static side too.
     for (int k = 0; k <= n; ++k)
       for (int j = 0; j <= n; ++j)
-        roles.Kinds[static_cast<std::size_t>(id(0, j, k))] = dgmf::NodeKind::MovingBoundary;
+        this->Roles.Kinds[static_cast<std::size_t>(Id(0, j, k))] = dgmf::NodeKind::MovingBoundary;
+  }
+
+  /// The options of a composite input's merged mesh, with these roles and patches.
+  dgmf_vtk::GatherOptions Options()
+  {
     dgmf_vtk::GatherOptions options;
-    options.Roles = &roles;
-    options.Patches = patches;
+    options.Roles = &this->Roles;
+    options.Patches = this->Patches;
     options.DistinctPoints = true;
     options.OneCellThick = dgmf_vtk::OneCellThickOff;
+    return options;
+  }
+};
+} // namespace
+
+TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
+{
+  // With every side, the quads close the volume and its boundary is not searched for; without
+  // the side x = n, it is, and that side becomes static.
+  const int n = BoxWithPatches::N;
+  const auto id = &BoxWithPatches::Id;
+  for (const bool allSides : { true, false })
+  {
+    BoxWithPatches box(allSides);
     dgmf_vtk::InputGatherer gatherer;
     dgmf_vtk::InputNodes nodes;
-    gatherer.Gather(volume, options, nodes);
+    gatherer.Gather(box.Volume, box.Options(), nodes);
     EXPECT_EQ(gatherer.SearchedBoundary(), !allSides);
-    EXPECT_EQ(nodes.Patches, patches.Get());
+    EXPECT_EQ(nodes.Patches, box.Patches.Get());
     // The side x = n: static either way (its patch's role, or the mesh's own boundary).
     for (int k = 0; k <= n; ++k)
       for (int j = 0; j <= n; ++j)
@@ -234,4 +258,43 @@ TEST(InputNodes, PatchesThatCloseTheVolumeApartSpareTheSearchForItsBoundary)
           << "node " << id(n, j, k) << ", all sides " << allSides;
     EXPECT_EQ(nodes.Kinds[static_cast<std::size_t>(id(2, 2, 2))], dgmf::NodeKind::Interior);
   }
+}
+
+TEST(InputNodes, TheClosingCheckIsKeptForTheSameCellsOnceItsDeferredHashHasRun)
+{
+  // The check that the patches close the volume is kept with a hash of the volume's cells, so
+  // that a reader's new objects with the same cells skip it. The hash is left as a job for later
+  // (beside the graph's insertion): until it has run, only the same object matches.
+  BoxWithPatches box(true);
+  dgmf_vtk::InputGatherer gatherer;
+  const auto gather = [&](vtkUnstructuredGrid* volume)
+  {
+    dgmf_vtk::InputNodes nodes;
+    gatherer.Gather(volume, box.Options(), nodes);
+    EXPECT_FALSE(gatherer.SearchedBoundary());
+    return gatherer.TakeDeferredJobs();
+  };
+  const auto copyOf = [&]()
+  {
+    auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New(); // a reader's next time step
+    copy->DeepCopy(box.Volume);
+    return copy;
+  };
+  EXPECT_EQ(gather(box.Volume).size(), 1u) << "checked: the key's hash left for later";
+  EXPECT_TRUE(gatherer.TakeDeferredJobs().empty()) << "taken once";
+  EXPECT_TRUE(gather(box.Volume).empty()) << "the same object: kept without a hash";
+  auto first = copyOf();
+  const auto notRun = gather(first);
+  EXPECT_EQ(notRun.size(), 1u) << "a new object before the hash ran: checked again";
+  for (const auto& job : notRun)
+  {
+    job();
+  }
+  EXPECT_TRUE(gather(copyOf()).empty()) << "a new object of the same cells, after the hash ran";
+  auto changed = copyOf();
+  const vtkIdType swapped[8] = { BoxWithPatches::Id(1, 0, 0), BoxWithPatches::Id(0, 0, 0),
+    BoxWithPatches::Id(0, 1, 0), BoxWithPatches::Id(1, 1, 0), BoxWithPatches::Id(1, 0, 1),
+    BoxWithPatches::Id(0, 0, 1), BoxWithPatches::Id(0, 1, 1), BoxWithPatches::Id(1, 1, 1) };
+  changed->GetCells()->ReplaceCellAtId(0, 8, swapped); // a mirrored first cell: other cells
+  EXPECT_EQ(gather(changed).size(), 1u) << "other cells: checked again";
 }
