@@ -22,8 +22,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -390,4 +392,100 @@ TEST(CompositeMesh, AVolumeLendsItsCellsAndItsPatchesKeepTheirPolygonsApart)
       EXPECT_EQ(ids->GetId(k), own->GetId(k)) << "cell " << c;
     }
   }
+}
+
+TEST(CompositeMesh, NodesAreNumberedInTheOrderTheyAreFirstMetOverManyBlocksOfPoints)
+{
+  // More points than the numbering's blocks of 65,536: a first leaf of distinct points but one
+  // repeat near its end (so that the leading run of first points ends inside a block), then a
+  // leaf with some of the first leaf's points (in another order) and new ones. Each leaf's node
+  // map against a std::map of the coordinates, in the order met.
+  const auto leafOf = [](const std::vector<double>& xs)
+  {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const double x : xs)
+    {
+      points->InsertNextPoint(x, 0.5 * x, 0.0);
+    }
+    grid->SetPoints(points);
+    const vtkIdType vertex[1] = { 0 };
+    grid->InsertNextCell(VTK_VERTEX, 1, vertex);
+    return grid;
+  };
+  std::vector<double> first(150'000);
+  for (std::size_t i = 0; i < first.size(); ++i)
+  {
+    first[i] = static_cast<double>(i);
+  }
+  first[140'000] = 7.0; // a repeat inside the first leaf
+  std::vector<double> second;
+  for (int k = 0; k < 50; ++k)
+  {
+    second.push_back(1049.0 - k); // the first leaf's points 1000 - 1049, reversed
+    second.push_back(-1.0 - k);   // new points
+  }
+  second.push_back(149'999.0); // the first leaf's last point
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, leafOf(first));
+  blocks->SetBlock(1, leafOf(second));
+  const dgmf_vtk::CompositeMesh composite(blocks, "", "");
+
+  std::map<double, vtkIdType> nodeAt;
+  std::vector<std::vector<vtkIdType>> expected(2);
+  for (int l = 0; l < 2; ++l)
+  {
+    for (const double x : l == 0 ? first : second)
+    {
+      const auto found = nodeAt.emplace(x, static_cast<vtkIdType>(nodeAt.size())).first;
+      expected[static_cast<std::size_t>(l)].push_back(found->second);
+    }
+  }
+  vtkUnstructuredGrid* merged = composite.GetMergedMesh();
+  ASSERT_EQ(merged->GetNumberOfPoints(), static_cast<vtkIdType>(nodeAt.size()));
+  ASSERT_EQ(composite.GetLeaves().size(), 2u);
+  for (std::size_t l = 0; l < 2; ++l)
+  {
+    const auto& leaf = composite.GetLeaves()[l];
+    EXPECT_FALSE(leaf.SameNumbering) << "leaf " << l;
+    const std::vector<double>& xs = l == 0 ? first : second;
+    for (std::size_t i = 0; i < xs.size(); ++i)
+    {
+      const vtkIdType node = leaf.Node(static_cast<vtkIdType>(i));
+      ASSERT_EQ(node, expected[l][i]) << "leaf " << l << ", point " << i;
+      ASSERT_EQ(merged->GetPoint(node)[0], xs[i]) << "leaf " << l << ", point " << i;
+    }
+  }
+}
+
+TEST(CompositeMesh, AFirstLeafOfDistinctPointsIsItsOwnNumbering)
+{
+  // A CFD reader's volume first (its points all distinct, more than one block of the numbering),
+  // then a patch on some of them: the volume needs no node map, the patch maps onto its nodes.
+  auto volume = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < 70'000; ++i)
+  {
+    points->InsertNextPoint(i, 0.0, 0.0);
+  }
+  volume->SetPoints(points);
+  const vtkIdType vertex[1] = { 0 };
+  volume->InsertNextCell(VTK_VERTEX, 1, vertex);
+  auto patch = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> patchPoints;
+  patchPoints->InsertNextPoint(69'999.0, 0.0, 0.0);
+  patchPoints->InsertNextPoint(3.0, 0.0, 0.0);
+  patch->SetPoints(patchPoints);
+  patch->InsertNextCell(VTK_VERTEX, 1, vertex);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, volume);
+  blocks->SetBlock(1, patch);
+  const dgmf_vtk::CompositeMesh composite(blocks, "", "");
+  EXPECT_EQ(composite.GetMergedMesh()->GetNumberOfPoints(), 70'000);
+  EXPECT_TRUE(composite.GetLeaves()[0].SameNumbering);
+  EXPECT_FALSE(composite.GetLeaves()[1].SameNumbering);
+  EXPECT_EQ(composite.GetLeaves()[1].Node(0), 69'999);
+  EXPECT_EQ(composite.GetLeaves()[1].Node(1), 3);
 }
