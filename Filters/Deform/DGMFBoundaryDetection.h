@@ -68,7 +68,7 @@ BoundaryFacets FindBoundaryFacetsByGeometryFilter(
 /**
  * Whether the 2D cells of a 3D mesh close it: every face of its 3D cells that no other 3D cell
  * has is one of its polygons (triangles, quads, pixels, polygons), and every polygon is such a
- * face (dgmf::FacesPairUp: one pass over the cells, no memory, decided by a 128-bit hash). The
+ * face (dgmf::FacesPairUp: one pass over the cells, no memory, decided by a 64-bit hash). The
  * boundary's nodes are then the polygons' nodes: a composite input whose boundary patches cover
  * the volume's boundary needs no search for it. False for meshes without polygons, with ghost
  * cells, or with cells the face matching does not read (quadratic and Lagrange cells, 2D cells
