@@ -497,6 +497,24 @@ TEST(FaceParity, ACollapsedCellInARunIsNotClosed)
   EXPECT_FALSE(dgmf::FacesPairUp(streams, 4, dgmf::SerialFor));
 }
 
+TEST(FaceParity, ACollapsedCellIsNotClosedByPolygonsOnItsOtherFaces)
+{
+  // The same cell with a polygon on each of its four other faces: every face then occurs twice
+  // (the caps with each other), so only the check for twin faces in one cell refuses it.
+  RunCells cells;
+  cells.Add({ 0, 1, 2, 3, 0, 1, 2, 3 });
+  for (const std::vector<std::int64_t>& quad :
+    { std::vector<std::int64_t>{ 0, 0, 3, 3 }, { 1, 2, 2, 1 }, { 0, 1, 1, 0 }, { 3, 3, 2, 2 } })
+  {
+    std::vector<std::int64_t> polygon{ 1, 4 }; // one face of four points
+    polygon.insert(polygon.end(), quad.begin(), quad.end());
+    cells.Streams.push_back(polygon);
+  }
+  EXPECT_FALSE(dgmf::FacesPairUp(cells, 4, dgmf::SerialFor));
+  const StreamCells streams = cells; // sliced: without runs
+  EXPECT_FALSE(dgmf::FacesPairUp(streams, 4, dgmf::SerialFor));
+}
+
 // The internal and boundary faces, and OpenFOAM's non-orthogonality (whose cell centres read the
 // faces by runs too), are the same when the cells come as runs of one shape as when they come as
 // face streams, for hexahedra, wedges and tetrahedra, on one and two threads.
