@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace dgmf_vtk
 {
@@ -113,9 +114,22 @@ std::array<bool, 256> CellTypesPresent(vtkUnstructuredGrid* mesh)
     [&](std::size_t block)
     {
       std::array<bool, 256> present{};
-      for (std::size_t c = block * CellTypeBlock; c < std::min(n, (block + 1) * CellTypeBlock); ++c)
+      const std::size_t end = std::min(n, (block + 1) * CellTypeBlock);
+      for (std::size_t c = block * CellTypeBlock; c < end;)
       {
-        present[values[c]] = true;
+        // A run of one type (as a rule, all the cells of a mesh), skipped 8 bytes at a time.
+        const unsigned char type = values[c];
+        present[type] = true;
+        const std::uint64_t eight = 0x0101010101010101ull * type;
+        std::uint64_t word;
+        while (c + 8 <= end && (std::memcpy(&word, values + c, 8), word == eight))
+        {
+          c += 8;
+        }
+        while (c < end && values[c] == type)
+        {
+          ++c;
+        }
       }
       perBlock[block] = present;
     });
@@ -174,6 +188,10 @@ vtkIdType CellsWithPatches(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patch
 
 std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<bool, 256>& wanted)
 {
+  if (std::none_of(wanted.begin(), wanted.end(), [](bool type) { return type; }))
+  {
+    return {};
+  }
   vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
   const auto n = static_cast<std::size_t>(types ? types->GetNumberOfValues() : 0);
   const unsigned char* values = n > 0 ? types->GetPointer(0) : nullptr;

@@ -26,11 +26,13 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
@@ -289,6 +291,47 @@ TEST(MeshConversion, CellShapesDimensionAndGrids)
   patch->SetLines(lines);
   EXPECT_EQ(dgmf_vtk::CellDimensionOf(dgmf_vtk::CellTypesOf(patch), polygonsOnly), 2);
   EXPECT_FALSE(polygonsOnly) << "a line";
+}
+
+TEST(MeshConversion, CellTypesAreFoundWhereverTheyAreInLongRuns)
+{
+  // 600,003 cells over three of the passes' blocks: hexahedra, and other types alone or in short
+  // runs at places that are not multiples of 8 (the runs are skipped 8 bytes at a time).
+  const vtkIdType n = 600'003;
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetNumberOfValues(n);
+  types->FillValue(VTK_HEXAHEDRON);
+  types->SetValue(5, VTK_TRIANGLE);
+  types->SetValue(262'150, VTK_TRIANGLE);
+  for (vtkIdType c = 300'001; c < 300'014; ++c)
+  {
+    types->SetValue(c, VTK_TETRA);
+  }
+  types->SetValue(n - 1, VTK_QUAD);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(n);
+  connectivity->FillValue(0);
+  for (vtkIdType c = 0; c <= n; ++c)
+  {
+    offsets->SetValue(c, c);
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetCells(types, cells, nullptr, nullptr);
+  std::array<bool, 256> present{};
+  dgmf_vtk::RunWithThreads(2, [&]() { present = dgmf_vtk::CellTypesPresent(grid); });
+  for (int type = 0; type < 256; ++type)
+  {
+    const bool expected =
+      type == VTK_HEXAHEDRON || type == VTK_TRIANGLE || type == VTK_TETRA || type == VTK_QUAD;
+    EXPECT_EQ(present[static_cast<std::size_t>(type)], expected) << "type " << type;
+  }
+  std::array<bool, 256> polygons{};
+  polygons[VTK_TRIANGLE] = polygons[VTK_QUAD] = true;
+  EXPECT_EQ(dgmf_vtk::CellsOfTypes(grid, polygons), (std::vector<vtkIdType>{ 5, 262'150, n - 1 }));
+  EXPECT_TRUE(dgmf_vtk::CellsOfTypes(grid, std::array<bool, 256>{}).empty());
 }
 
 TEST(OutputArrays, ReportsSummariesAndLocalNodesUnderTheSharedNames)
