@@ -178,17 +178,23 @@ DGMF_SIMD_INLINE simd::UInt4 Mix64(simd::UInt4 x)
   return x ^ (x >> 31);
 }
 
-// AddHexahedra's faces, from the sums of the corners k and k + 4 (VTK's hexahedron).
-static_assert(Hexahedron.Faces == 6 && Hexahedron.Corner[0][0] == 0 &&
-    Hexahedron.Corner[0][1] == 4 && Hexahedron.Corner[0][2] == 7 && Hexahedron.Corner[0][3] == 3 &&
-    Hexahedron.Corner[1][0] == 1 && Hexahedron.Corner[1][1] == 2 && Hexahedron.Corner[1][2] == 6 &&
-    Hexahedron.Corner[1][3] == 5 && Hexahedron.Corner[2][0] == 0 && Hexahedron.Corner[2][1] == 1 &&
-    Hexahedron.Corner[2][2] == 5 && Hexahedron.Corner[2][3] == 4 && Hexahedron.Corner[3][0] == 3 &&
-    Hexahedron.Corner[3][1] == 7 && Hexahedron.Corner[3][2] == 6 && Hexahedron.Corner[3][3] == 2 &&
-    Hexahedron.Corner[4][0] == 0 && Hexahedron.Corner[4][1] == 3 && Hexahedron.Corner[4][2] == 2 &&
-    Hexahedron.Corner[4][3] == 1 && Hexahedron.Corner[5][0] == 4 && Hexahedron.Corner[5][1] == 5 &&
-    Hexahedron.Corner[5][2] == 6 && Hexahedron.Corner[5][3] == 7,
-  "AddHexahedra sums VTK's hexahedron faces");
+/// The faces AddHexahedra sums (from the sums of corners k and k + 4): VTK's hexahedron's.
+constexpr int HexahedronFaces[6][4] = { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 },
+  { 3, 7, 6, 2 }, { 0, 3, 2, 1 }, { 4, 5, 6, 7 } };
+
+constexpr bool HasFaces(const RunShape& shape, const int (&faces)[6][4])
+{
+  bool same = shape.Faces == 6;
+  for (int f = 0; f < 6; ++f)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      same = same && shape.Size[f] == 4 && shape.Corner[f][k] == faces[f][k];
+    }
+  }
+  return same;
+}
+static_assert(HasFaces(Hexahedron, HexahedronFaces), "AddHexahedra sums VTK's hexahedron faces");
 
 /**
  * AddRun for `count` hexahedra in VTK's corner order: the same faces and hashes, the corners of

@@ -268,6 +268,12 @@ struct UInt4
   std::uint64_t operator[](int l) const { return this->Lane[l]; }
 };
 
+/// An integer in every lane.
+inline UInt4 SplatUInt4(std::uint64_t v)
+{
+  return UInt4{ { v, v, v, v } };
+}
+
 /// UInt4's operators lane by lane, with an integer on either side used in every lane.
 #define DGMF_SIMD_UINT4_OPERATOR(OP)                                                               \
   inline UInt4 operator OP(const UInt4& a, const UInt4& b)                                         \
@@ -277,17 +283,11 @@ struct UInt4
   }                                                                                                \
   inline UInt4 operator OP(const UInt4& a, std::uint64_t b)                                        \
   {                                                                                                \
-    return a OP UInt4{ { b, b, b, b } };                                                           \
+    return a OP SplatUInt4(b);                                                                     \
   }                                                                                                \
   inline UInt4 operator OP(std::uint64_t a, const UInt4& b)                                        \
   {                                                                                                \
-    return UInt4                                                                                   \
-    {                                                                                              \
-      {                                                                                            \
-        a, a, a, a                                                                                 \
-      }                                                                                            \
-    }                                                                                              \
-    OP b;                                                                                          \
+    return SplatUInt4(a) OP b;                                                                     \
   }                                                                                                \
   inline UInt4& operator OP##=(UInt4& a, const UInt4& b)                                           \
   {                                                                                                \
