@@ -30,8 +30,9 @@ struct PointPieces
  *
  * How: the points are spread over parts of about 16,000 by a hash of their coordinates (a
  * stable counting sort of their hashes and indices: each part keeps the points' order), then
- * each part, on its own thread, goes through an open-addressing table small enough to stay in
- * cache, which reads coordinates only when 23 bits of two hashes agree. The parts and blocks
+ * each part, on its own thread, goes through an open-addressing table of 8 slots per point (1 MB,
+ * in the second-level cache; each slot asked for 16 points ahead), which reads coordinates only
+ * when 23 bits of two hashes agree. The parts and blocks
  * depend on the counts only, so the result does not depend on the threads. About 18 bytes per
  * point while it runs, besides the result. The result and the records are allocated unwritten
  * (UninitializedVector, on huge pages when large) and first touched by the threads that fill them.
