@@ -25,23 +25,29 @@ std::uint64_t Mix64(std::uint64_t x)
   return x ^ (x >> 31);
 }
 
-/// Whether two of the `count` face `hashes` are equal (a cell with two faces of the same points);
-/// may reorder them.
+/// Whether two of the `count` face `hashes` are equal (a cell with two faces of the same points),
+/// for a cell of a few faces: pair by pair.
+inline bool HasTwinFacesAmongFew(const std::uint64_t* hashes, std::size_t count)
+{
+  for (std::size_t a = 1; a < count; ++a)
+  {
+    for (std::size_t b = 0; b < a; ++b)
+    {
+      if (hashes[a] == hashes[b])
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// HasTwinFacesAmongFew for any number of faces (a polyhedron's); may reorder them.
 inline bool HasTwinFaces(std::uint64_t* hashes, std::size_t count)
 {
   if (count <= 8)
   {
-    for (std::size_t a = 1; a < count; ++a)
-    {
-      for (std::size_t b = 0; b < a; ++b)
-      {
-        if (hashes[a] == hashes[b])
-        {
-          return true;
-        }
-      }
-    }
-    return false;
+    return HasTwinFacesAmongFew(hashes, count);
   }
   std::sort(hashes, hashes + count);
   return std::adjacent_find(hashes, hashes + count) != hashes + count;
@@ -160,7 +166,7 @@ bool AddRun(const RunShape& runShape, const void* idBytes, std::size_t count, in
       faceHash[f] = face;
       sum ^= face;
     }
-    if (HasTwinFaces(faceHash, static_cast<std::size_t>(faces)))
+    if (HasTwinFacesAmongFew(faceHash, static_cast<std::size_t>(faces))) // at most RunFaces
     {
       return true;
     }

@@ -52,6 +52,7 @@ void WriteAll(int fd, const std::string& bytes)
 /// body's length in bytes (8, native order: the same program on both ends).
 constexpr std::size_t AnswerHeaderBytes = 1 + sizeof(std::uint64_t);
 
+#if !defined(__SANITIZE_ADDRESS__) // (AddressSanitizer maps its own memory as it goes: no limit)
 /// Limits this process's address space to what it has now plus `budget` bytes.
 void LimitAddressSpace(std::size_t budget)
 {
@@ -67,6 +68,7 @@ void LimitAddressSpace(std::size_t budget)
     ::setrlimit(RLIMIT_AS, &limit);
   }
 }
+#endif
 
 /// The child's answer room: the memory file, grown to the size asked for and mapped.
 char* TakeRoom(int memory, std::size_t bytes, std::size_t& taken)
