@@ -2,11 +2,11 @@
 
 #include "DGMFAppendedData.h"
 #include "DGMFCompressedArray.h"
+#include "DGMFGridCells.h"
 #include "DGMFTupleAllocation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
@@ -22,7 +22,6 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <new>
 #include <utility>
@@ -442,18 +441,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Read(const std::string& path)
       cellArray->SetData(vtkCellArray::ArrayType32::SafeDownCast(offsets),
         vtkCellArray::ArrayType32::SafeDownCast(connectivity));
     }
-    // VTK's SetCells(types, cells) looks for a polyhedron type one value at a time (10 ms at 8M
-    // cells) to read a special layout; without one it sets the arrays as the four-argument form.
-    auto* typeArray = vtkUnsignedCharArray::SafeDownCast(types);
-    if (cells > 0 &&
-      std::memchr(typeArray->GetPointer(0), VTK_POLYHEDRON, static_cast<std::size_t>(cells)))
-    {
-      output->SetCells(typeArray, cellArray);
-    }
-    else
-    {
-      output->SetCells(typeArray, cellArray, nullptr, nullptr);
-    }
+    dgmf_vtk::SetGridCells(output, vtkUnsignedCharArray::SafeDownCast(types), cellArray);
   }
   if (vtkXMLDataElement* pointData = Child(piece, "PointData"))
   {

@@ -1,6 +1,7 @@
 #include "DGMFMergedCells.h"
 
 #include "DGMFArrayAllocation.h"
+#include "DGMFGridCells.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 #include "DGMFTupleAllocation.h"
@@ -93,17 +94,7 @@ void MergedCells::SetOn(vtkUnstructuredGrid* grid)
   cells->SetData(this->Offsets, this->Connectivity);
   if (this->FaceLocations.empty())
   {
-    // VTK's SetCells(types, cells) looks for a polyhedron type one value at a time (10 ms at 8M
-    // cells) to read a special layout; without one it sets the arrays as the four-argument form.
-    const auto n = static_cast<std::size_t>(this->Types->GetNumberOfValues());
-    if (n > 0 && std::memchr(this->Types->GetPointer(0), VTK_POLYHEDRON, n))
-    {
-      grid->SetCells(this->Types, cells);
-    }
-    else
-    {
-      grid->SetCells(this->Types, cells, nullptr, nullptr);
-    }
+    SetGridCells(grid, this->Types, cells);
     return;
   }
   const auto idArray = [](const std::vector<vtkIdType>& values)
