@@ -23,7 +23,8 @@ namespace dgmf_vtk
  * have there; without one it sets the arrays as the four-argument form with no faces, which a
  * `memchr` lets this call directly.
  */
-inline void SetGridCells(vtkUnstructuredGrid* grid, vtkUnsignedCharArray* types, vtkCellArray* cells)
+inline void SetGridCells(
+  vtkUnstructuredGrid* grid, vtkUnsignedCharArray* types, vtkCellArray* cells)
 {
   const auto n = static_cast<std::size_t>(types->GetNumberOfValues());
   if (n > 0 && std::memchr(types->GetPointer(0), VTK_POLYHEDRON, n))
