@@ -217,7 +217,7 @@ double NodeRepairer::TrialMinimumCube(const FreeNode& node, const Vec3& position
   inverted = false;
   for (std::size_t j = 0; j < count; ++j)
   {
-    const std::size_t offset = j + first < count ? j + first : j + first - count;
+    const std::size_t offset = WrappedOffset(j, first, count);
     double cube;
     if (forms && this->Forms[offset].Usable)
     {
@@ -522,10 +522,9 @@ void NodeRepairer::Accept(FreeNode& node, const Vec3& position)
     ActiveCell& cell = this->Cells[this->Incident[i]];
     const std::size_t offset = i - node.CellBegin;
     // The groups start at offset FormGroupsFirst and wrap around.
-    const CellQuality quality = grouped ? this->AcceptedQualities[offset >= this->FormGroupsFirst
-                                              ? offset - this->FormGroupsFirst
-                                              : offset + count - this->FormGroupsFirst]
-                                        : this->QualityAt(node, offset, position);
+    const CellQuality quality = grouped
+      ? this->AcceptedQualities[VisitOfOffset(offset, this->FormGroupsFirst, count)]
+      : this->QualityAt(node, offset, position);
     cell.Quality = quality.SizeSkew;
     cell.Inverted = quality.Inverted;
     for (int k = 0; !onlyTetrahedra && k < cell.NumberOfNodes; ++k)

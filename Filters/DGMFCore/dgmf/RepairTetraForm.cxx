@@ -92,8 +92,7 @@ void StoreFormsInGroups(
   for (std::size_t j = 0; j < padded; ++j)
   {
     const std::size_t k = std::min(j, count - 1);
-    const std::size_t offset = k + first < count ? k + first : k + first - count;
-    StoreFormInGroup(forms[offset], j, groups.data());
+    StoreFormInGroup(forms[WrappedOffset(k, first, count)], j, groups.data());
   }
 }
 

@@ -105,6 +105,19 @@ struct TetraForm
 constexpr std::size_t kFormGroupFields = 15;
 constexpr std::size_t kFormGroupDoubles = 4 * kFormGroupFields;
 
+/// The cell offset visited j-th when a node's `count` cells are visited from offset `first`
+/// (< count) on, wrapping around: (first + j) % count, for j < count.
+inline std::size_t WrappedOffset(std::size_t j, std::size_t first, std::size_t count)
+{
+  return j + first < count ? j + first : j + first - count;
+}
+
+/// The inverse of WrappedOffset: the visit index j of cell offset `offset` (< count).
+inline std::size_t VisitOfOffset(std::size_t offset, std::size_t first, std::size_t count)
+{
+  return offset >= first ? offset - first : offset + count - first;
+}
+
 /// Writes usable `form` as form `index` of `groups` (group index / 4, lane index % 4).
 void StoreFormInGroup(const TetraForm& form, std::size_t index, double* groups);
 
