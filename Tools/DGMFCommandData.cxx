@@ -4,6 +4,7 @@
 #include "vtkDGMFMeshFileWriter.h"
 #include "vtkDGMFOpenFOAMWriter.h"
 
+#include "dgmf/ResultNames.h"
 #include "dgmf/openfoam/CaseDirectory.h"
 
 #include "DGMFCommandMessages.h"
@@ -15,6 +16,7 @@
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -180,6 +182,31 @@ vtkUnstructuredGrid* VolumeOf(vtkDataObject* data)
   return nullptr;
 }
 
+vtkSmartPointer<vtkUnstructuredGrid> VolumeToWrite(vtkDataObject* data)
+{
+  vtkUnstructuredGrid* volume = VolumeOf(data);
+  if (!volume || volume == data)
+  {
+    return volume;
+  }
+  auto written = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  written->ShallowCopy(volume);
+  vtkNew<vtkFieldData> fieldData;
+  fieldData->PassData(volume->GetFieldData());
+  // The composite's numeric arrays: the filter's summary and results, and the reader's own (the
+  // OpenFOAM reader's CasePath, characters). The filter's Method string WriteMeshFile leaves out.
+  vtkFieldData* summary = data->GetFieldData();
+  for (int k = 0; summary && k < summary->GetNumberOfArrays(); ++k)
+  {
+    if (vtkDataArray* values = summary->GetArray(k))
+    {
+      fieldData->AddArray(values); // replaces an array of the same name
+    }
+  }
+  written->SetFieldData(fieldData);
+  return written;
+}
+
 bool IsMeshFileName(const std::string& path)
 {
   return EndsWith(path, ".vtu") || EndsWith(path, ".vtk");
@@ -208,21 +235,15 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
   SetStage("writing " + path);
   const int errorsBefore = GetErrorCount();
   unsigned long errorCode = 0;
-  // String arrays (the filter's Method) are left out: meshio 7 cannot read them ("Illegal data
-  // type 'String'"), nor can every VTK reader.
+  // The filter's own string, its Method field, is left out: meshio 7 cannot read a file with a
+  // string array ("Illegal data type 'String'"), nor can every VTK reader. String arrays the
+  // input had are the user's data and are written, like every other input array (such a file
+  // was not meshio's to read anyway).
   vtkNew<vtkUnstructuredGrid> written;
   written->ShallowCopy(mesh);
-  for (vtkFieldData* arrays : { static_cast<vtkFieldData*>(written->GetFieldData()),
-         static_cast<vtkFieldData*>(written->GetPointData()),
-         static_cast<vtkFieldData*>(written->GetCellData()) })
+  if (vtkStringArray::SafeDownCast(written->GetFieldData()->GetAbstractArray(dgmf::names::Method)))
   {
-    for (int k = arrays->GetNumberOfArrays() - 1; k >= 0; --k)
-    {
-      if (vtkStringArray::SafeDownCast(arrays->GetAbstractArray(k)))
-      {
-        arrays->RemoveArray(k);
-      }
-    }
+    written->GetFieldData()->RemoveArray(dgmf::names::Method);
   }
   mesh = written;
   if (EndsWith(path, ".vtk"))

@@ -47,6 +47,14 @@ bool WriteSolverMeshFile(
  */
 vtkUnstructuredGrid* VolumeOf(vtkDataObject* data);
 
+/**
+ * The grid to write as a .vtu or .vtk for `data`: VolumeOf(data), and for a composite `data` (a
+ * reader's blocks) a shallow copy of it with the composite's numeric field data added (the
+ * quality summary and the method's results, which the filter puts on the composite output, and
+ * the reader's own, such as the OpenFOAM reader's CasePath); null if there is no volume.
+ */
+vtkSmartPointer<vtkUnstructuredGrid> VolumeToWrite(vtkDataObject* data);
+
 /// Reads a .vtu (XML) or .vtk (legacy) unstructured grid; null or empty when it cannot.
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path);
 
@@ -65,8 +73,9 @@ bool IsMeshFileName(const std::string& path);
 
 /**
  * Writes `mesh` to `path`: an XML unstructured grid (`encoding`; DGMFVTUWriter) for .vtu, a legacy
- * VTK file (binary) for .vtk. String arrays are left out (meshio 7 and older VTK readers cannot
- * read them). The file is written beside `path` under a temporary name and renamed over it, so
+ * VTK file (binary) for .vtk. The filter's `Method` string field is left out (meshio 7 and older
+ * VTK readers cannot read string arrays); the input's arrays, string arrays included, are
+ * written. The file is written beside `path` under a temporary name and renamed over it, so
  * `path` never holds half a file. False, with the reason printed, when it cannot.
  */
 bool WriteMeshFile(

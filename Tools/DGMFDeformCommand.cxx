@@ -199,7 +199,8 @@ bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
     dgmf_cli::VTUEncoding encoding;
     encoding.Appended = options.VTUAppended;
     encoding.Compression = options.Compression;
-    vtkUnstructuredGrid* volume = dgmf_cli::VolumeOf(filter->GetOutputDataObject(0));
+    const vtkSmartPointer<vtkUnstructuredGrid> volume =
+      dgmf_cli::VolumeToWrite(filter->GetOutputDataObject(0));
     ok = volume && dgmf_cli::WriteMeshFile(volume, options.Output, encoding);
   }
   else if (kind == InputKind::SolverFile)

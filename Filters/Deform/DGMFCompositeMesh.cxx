@@ -507,8 +507,9 @@ void CompositeMesh::ScatterResult(vtkUnstructuredGrid* deformed,
 {
   namespace names = dgmf::names;
   output->Initialize();
+  // Every array the filter adds to one grid's output: the blocks get what a grid would.
   this->Scatter(deformed, deformedPatches, { names::R, names::F },
-    { names::SizeSkew, names::Inverted }, output);
+    { names::SizeSkew, names::Inverted, names::InputInvalid, names::NonOrthogonality }, output);
   vtkNew<vtkFieldData> fieldData;
   fieldData->PassData(this->Input->GetFieldData());
   for (int k = 0; k < deformed->GetFieldData()->GetNumberOfArrays(); ++k)

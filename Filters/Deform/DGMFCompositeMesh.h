@@ -61,7 +61,8 @@ public:
 
   /**
    * The deformation's result as the composite output: Scatter() with the filters' point arrays
-   * (r, f) and cell arrays (SizeSkew, Inverted), and the input's field data with the result's.
+   * (r, f) and cell arrays (SizeSkew, Inverted, InputInvalid, NonOrthogonality: those present),
+   * and the input's field data with the result's.
    */
   void ScatterResult(vtkUnstructuredGrid* deformed, vtkUnstructuredGrid* deformedPatches,
     vtkCompositeDataSet* output) const;

@@ -211,6 +211,7 @@ TEST(Composite, AVolumeAndItsPatchesDeformAsOneGridWithItsPolygons)
         filter->SetSubSteps(2);
         filter->SetRepairThreshold(0.2);
       }
+      filter->ComputeNonOrthogonalityOn();
       filter->Update();
       filters.push_back(filter);
     }
@@ -233,32 +234,48 @@ TEST(Composite, AVolumeAndItsPatchesDeformAsOneGridWithItsPolygons)
       moved += std::memcmp(deformed->GetPoint(i), volume->GetPoint(i), 3 * sizeof(double)) != 0;
     }
     EXPECT_GT(moved, (n + 1) * (n + 1) + 20) << "interior nodes moved, not only xmin's";
-    // The quality: the volume's hexahedra, then each side's quads, as in the one grid.
-    vtkDataArray* oneSkew = oneOut->GetCellData()->GetArray("SizeSkew");
-    ASSERT_TRUE(oneSkew);
-    std::vector<vtkDataArray*> skews{ deformed->GetCellData()->GetArray("SizeSkew") };
+    // The quality: the volume's hexahedra, then each side's quads, as in the one grid; every
+    // quality array the one grid has.
     auto* sides = vtkMultiBlockDataSet::SafeDownCast(out->GetBlock(1));
     ASSERT_TRUE(sides);
     ASSERT_EQ(sides->GetNumberOfBlocks(), 6u);
-    for (unsigned int b = 0; b < 6; ++b)
+    for (const char* name : { "SizeSkew", "Inverted", "InputInvalid" })
     {
-      auto* side = vtkPolyData::SafeDownCast(sides->GetBlock(b));
-      ASSERT_TRUE(side);
-      skews.push_back(side->GetCellData()->GetArray("SizeSkew"));
-    }
-    vtkIdType cell = 0;
-    double lowest = 1.0;
-    for (vtkDataArray* skew : skews)
-    {
-      ASSERT_TRUE(skew);
-      for (vtkIdType c = 0; c < skew->GetNumberOfTuples(); ++c, ++cell)
+      vtkDataArray* oneValues = oneOut->GetCellData()->GetArray(name);
+      ASSERT_TRUE(oneValues) << name;
+      std::vector<vtkDataArray*> blocks{ deformed->GetCellData()->GetArray(name) };
+      for (unsigned int b = 0; b < 6; ++b)
       {
-        ASSERT_EQ(skew->GetTuple1(c), oneSkew->GetTuple1(cell)) << "cell " << cell;
-        lowest = std::min(lowest, skew->GetTuple1(c));
+        auto* side = vtkPolyData::SafeDownCast(sides->GetBlock(b));
+        ASSERT_TRUE(side);
+        blocks.push_back(side->GetCellData()->GetArray(name));
+      }
+      vtkIdType cell = 0;
+      double lowest = 1.0;
+      for (vtkDataArray* values : blocks)
+      {
+        ASSERT_TRUE(values) << name;
+        for (vtkIdType c = 0; c < values->GetNumberOfTuples(); ++c, ++cell)
+        {
+          ASSERT_EQ(values->GetTuple1(c), oneValues->GetTuple1(cell)) << name << ", cell " << cell;
+          lowest = std::min(lowest, values->GetTuple1(c));
+        }
+      }
+      EXPECT_EQ(cell, oneOut->GetNumberOfCells()) << name;
+      if (std::string(name) == "SizeSkew")
+      {
+        EXPECT_LT(lowest, 0.999) << "the motion deformed cells";
       }
     }
-    EXPECT_EQ(cell, oneOut->GetNumberOfCells());
-    EXPECT_LT(lowest, 0.999) << "the motion deformed cells";
+    // The volume's face non-orthogonality (its hexahedra are the one grid's first cells).
+    vtkDataArray* angles = deformed->GetCellData()->GetArray("NonOrthogonality");
+    vtkDataArray* oneAngles = oneOut->GetCellData()->GetArray("NonOrthogonality");
+    ASSERT_TRUE(angles && oneAngles);
+    ASSERT_EQ(angles->GetNumberOfTuples(), deformed->GetNumberOfCells());
+    for (vtkIdType c = 0; c < angles->GetNumberOfTuples(); ++c)
+    {
+      ASSERT_EQ(angles->GetTuple1(c), oneAngles->GetTuple1(c)) << "cell " << c;
+    }
     vtkFieldData* summary = out->GetFieldData();
     vtkFieldData* oneSummary = oneOut->GetFieldData();
     for (const char* name :

@@ -252,7 +252,71 @@ class Formats(unittest.TestCase):
         reader = vtkXMLUnstructuredGridReader()
         reader.SetFileName(vtu)
         reader.Update()
-        self.assertEqual(reader.GetOutput().GetNumberOfPoints(), len(self.read(source)[0]))
+        grid = reader.GetOutput()
+        self.assertEqual(grid.GetNumberOfPoints(), len(self.read(source)[0]))
+        # The volume carries what the filter gives one grid: every quality array, and the summary
+        # it printed (the filter puts the summary on the reader's blocks, not on the volume).
+        for name in ("SizeSkew", "Inverted", "InputInvalid"):
+            array = grid.GetCellData().GetArray(name)
+            self.assertIsNotNone(array, name)
+            self.assertEqual(array.GetNumberOfTuples(), grid.GetNumberOfCells())
+        field = grid.GetFieldData()
+        mean, minimum, inverted = summary(out)
+        self.assertIsNotNone(field.GetArray("SizeSkewMean"))
+        self.assertAlmostEqual(field.GetArray("SizeSkewMean").GetValue(0), mean, places=5)
+        self.assertAlmostEqual(field.GetArray("SizeSkewMinimum").GetValue(0), minimum, places=5)
+        self.assertEqual(field.GetArray("InvertedCellCount").GetValue(0), inverted)
+        self.assertEqual(field.GetArray("InputInvalidCellCount").GetValue(0), 0)
+
+    def test_string_arrays_of_the_input_reach_the_output(self):
+        from vtkmodules.vtkCommonCore import vtkStringArray
+        from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+
+        # The .msh route's output, as a .vtu with a BoundaryMarker, and two string arrays.
+        source = self.files["3d_msh4.1"]
+        self.vtu_route(source, 3)
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(source + ".marker.vtu")
+        reader.Update()
+        grid = reader.GetOutput()
+        labels = vtkStringArray()
+        labels.SetName("PointLabel")
+        for p in range(grid.GetNumberOfPoints()):
+            labels.InsertNextValue("node %d" % p)
+        grid.GetPointData().AddArray(labels)
+        case = vtkStringArray()
+        case.SetName("CaseName")
+        case.InsertNextValue("sphere in a box")
+        grid.GetFieldData().AddArray(case)
+        labelled = os.path.join(ARGS.work, "labelled.vtu")
+        writer = vtkXMLUnstructuredGridWriter()
+        writer.SetInputData(grid)
+        writer.SetFileName(labelled)
+        writer.SetDataModeToBinary()
+        writer.Write()
+        for extension, reading in ((".vtu", vtkXMLUnstructuredGridReader),
+                                   (".vtk", vtkUnstructuredGridReader)):
+            with self.subTest(output=extension):
+                output = os.path.join(ARGS.work, "labelled_out" + extension)
+                code, out, err = run(labelled, output, *motion(3))
+                self.assertEqual(code, 0, err)
+                back = reading()
+                back.SetFileName(output)
+                if extension == ".vtk":
+                    back.ReadAllScalarsOn()
+                    back.ReadAllFieldsOn()
+                back.Update()
+                deformed = back.GetOutput()
+                written = deformed.GetPointData().GetAbstractArray("PointLabel")
+                self.assertIsNotNone(written)
+                self.assertEqual(written.GetNumberOfValues(), grid.GetNumberOfPoints())
+                self.assertEqual(written.GetValue(17), "node 17")
+                self.assertEqual(
+                    deformed.GetFieldData().GetAbstractArray("CaseName").GetValue(0),
+                    "sphere in a box")
+                # The filter's own string (Method) stays out: meshio cannot read strings.
+                self.assertIsNone(deformed.GetFieldData().GetAbstractArray("Method"))
 
     def test_paraview_reads_deforms_and_saves_each_format(self):
         from paraview import servermanager
