@@ -113,6 +113,13 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
     solved.Cells = &cells;
   }
   std::vector<double> weights;
+  if (needs.BoundaryWeights && distributed)
+  {
+    // A piece knows only the boundary faces it holds: the area of a node on a partition
+    // interface would be partial, and a remote node's unknown (measured: 0.2 off the serial run).
+    throw std::invalid_argument("IDW is not available in distributed runs (its boundary weights "
+                                "need every boundary face); use DGMF, DGM, DGRBF or RBF.");
+  }
   if (needs.BoundaryWeights)
   {
     const BoundaryFacets& facets =

@@ -149,6 +149,19 @@ def main():
     difference = float(np.abs(results[0] - results[1]).max())
     print("process %d: no marker vs marker, largest difference %.3g" % (rank, difference))
     assert difference <= 1e-12, difference
+
+    # IDW on pieces: its boundary weights need every boundary face, so it is refused with an
+    # error and an empty output on every process (it ran before with weights 0.2 off).
+    deform = DGMFDeform(Input=ghosts)  # noqa: F821
+    deform.BoundaryMarkerArray = ["POINTS", "BoundaryMarker"]
+    deform.DisplacementArray = ["POINTS", "None"]
+    deform.Method = "IDW"
+    deform.RotationAngles = [0.0, 0.0, 10.0]
+    points = local_piece(deform).GetNumberOfPoints()
+    if size > 1:
+        assert points == 0, "IDW ran on %d processes" % size
+    else:
+        assert points == original.GetNumberOfPoints(), "IDW refused on one process"
     controller.Barrier()
     if rank == 0:
         print("distributed OK on %d processes" % size)
