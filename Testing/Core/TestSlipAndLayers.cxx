@@ -137,6 +137,46 @@ TEST(SlipPlanes, AnAxisPlaneIsExactAndATiltedOneIsFitted)
     std::string::npos);
 }
 
+TEST(SlipPlanes, ASlipBoundaryOfA2DMeshIsAStraightLineItsNodesSlideAlong)
+{
+  // A 2D mesh's slip boundary on the tilted line y = 2x + 1 (z = 0.5 for every node).
+  const std::vector<double> points = { 0, 1, 0.5, 1, 3, 0.5, 2, 5, 0.5, 0.5, 2, 0.5 };
+  const std::vector<std::int32_t> nodes = { 0, 1, 2, 3 };
+  dgmf::SlipPlane line = dgmf::FitSlipPlane(points.data(), nodes.data(), 4, "tilted", 1e-9, 2);
+  EXPECT_EQ(line.Axis, -1);
+  EXPECT_EQ(line.Normal[2], 0.0);
+  EXPECT_NEAR(std::abs(line.Normal[0]), 2.0 / std::sqrt(5.0), 1e-15);
+  EXPECT_NEAR(std::abs(line.Normal[1]), 1.0 / std::sqrt(5.0), 1e-15);
+  // A node pushed off the line comes back onto it, keeping z; its move along the line stays.
+  dgmf::SlipConstraint slip;
+  slip.Planes.push_back(line);
+  slip.Nodes = { 1 };
+  slip.NodePlanes = { 0 };
+  std::vector<double> deformed = points;
+  deformed[3] += 0.3;  // x
+  deformed[4] += 0.45; // y: 0.15 off the line's direction (1, 2)
+  slip.Apply(points.data(), deformed.data());
+  EXPECT_NEAR(deformed[4] - (2.0 * deformed[3] + 1.0), 0.0, 1e-14);
+  EXPECT_GT(deformed[3], 1.0);
+  EXPECT_EQ(deformed[5], 0.5);
+  // On x = 1 (two nodes are enough for a line): the axis, exactly.
+  const std::vector<double> vertical = { 1, 0, 0, 1, 2, 0 };
+  const std::vector<std::int32_t> two = { 0, 1 };
+  line = dgmf::FitSlipPlane(vertical.data(), two.data(), 2, "x1", 1e-9, 2);
+  EXPECT_EQ(line.Axis, 0);
+  EXPECT_EQ(line.Normal[0], 1.0);
+  // The whole outer square of a 2D mesh is not a line: refused, where a plane z = 0 took it.
+  const std::vector<double> square = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+  EXPECT_NE(Message([&]() { dgmf::FitSlipPlane(square.data(), nodes.data(), 4, "box", 1e-9, 2); })
+              .find("The slip boundary 'box' is not straight"),
+    std::string::npos);
+  EXPECT_NO_THROW(dgmf::FitSlipPlane(square.data(), nodes.data(), 4, "box"));
+  const std::vector<double> point = { 0.5, 0.5, 0, 0.5, 0.5, 0 };
+  EXPECT_NE(Message([&]() { dgmf::FitSlipPlane(point.data(), two.data(), 2, "dot", 1e-9, 2); })
+              .find("does not span a line"),
+    std::string::npos);
+}
+
 TEST(SlipPlanes, SlipNodesStayInTheirPlaneAndSlideWithTheBody)
 {
   const dgmf_test::NodeSet set = HalfSphereInHalfBox();

@@ -164,6 +164,25 @@ TEST(BadInput, CoplanarBoundaryOf3DMeshIsRejected)
   EXPECT_TRUE(FilterRun::Has(run.Errors, "coplanar"));
 }
 
+TEST(BadInput, ASlipBoundaryOfA2DMeshThatIsNotStraightIsRejected)
+{
+  // The whole outer square of the 2D circle mesh as slip (marker 3): four lines, not one. It lies
+  // in the mesh's plane z = 0, so it passed as a plane before, and its nodes left their sides.
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+  vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    if (marker->GetTuple1(i) == 1)
+    {
+      marker->SetTuple1(i, 3);
+    }
+  }
+  FilterRun run;
+  run.Filter->SetRotationAngles(0, 0, 5);
+  EXPECT_EQ(run.Execute(mesh)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(FilterRun::Has(run.Errors, "is not straight"));
+}
+
 TEST(BadInput, PlanarMeshOffZeroAndTiltedMesh)
 {
   // z = 3.5 everywhere: still 2D, and z is kept.

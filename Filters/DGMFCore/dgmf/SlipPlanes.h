@@ -30,9 +30,15 @@ struct SlipPlane
  * a coordinate axis when the nodes share that coordinate. Throws std::invalid_argument, naming the
  * boundary `name`, when there are fewer than 3 nodes, when they lie on a line, or when a node is
  * farther than `relativeTolerance` times the nodes' extent from the plane ("not planar").
+ *
+ * `dimension` 2 (a mesh in a plane z = constant): the slip boundary is a straight line of that
+ * plane, and the "plane" returned is the one through it normal to the mesh's plane (normal (nx,
+ * ny, 0); axis 0 or 1 when the nodes share x or y), so that the nodes slide along the line. It
+ * needs at least 2 nodes that are not all at one place; a node farther than `relativeTolerance`
+ * times the extent from the line is an error ("not straight").
  */
 SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::size_t count,
-  const std::string& name, double relativeTolerance = 1e-9);
+  const std::string& name, double relativeTolerance = 1e-9, int dimension = 3);
 
 /// The nodes of the slip boundaries and the plane each one stays in.
 struct SlipConstraint
