@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 // The filter's enumerations are the core's values.
 static_assert(vtkDGMFDeformFilter::DGMF == static_cast<int>(dgmf::Method::DGMF) &&
@@ -73,6 +75,14 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
   double t) const
 {
   const std::int32_t bodies = std::max<std::int32_t>(nodes.NumberOfBodies, 1);
+  if (trajectory && trajectory->GetLargestBody() > bodies)
+  {
+    // A row for a body the mesh does not have would otherwise be ignored, and the mesh not moved.
+    throw std::invalid_argument("The trajectory table moves body " +
+      std::to_string(trajectory->GetLargestBody()) + ", but the mesh has " +
+      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
+      " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
+  }
   // With BODY_CENTROID: the centroid of each body's moving nodes (this piece's).
   std::vector<std::array<double, 4>> sums(static_cast<std::size_t>(bodies), { 0, 0, 0, 0 });
   if (filter->GetRotationCenterMode() == vtkDGMFDeformFilter::BODY_CENTROID)

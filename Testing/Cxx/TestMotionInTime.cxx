@@ -271,4 +271,9 @@ TEST(MotionInTime, ATrajectoryTableMovesItsBodyBetweenRows)
   EXPECT_NE(quaternion.find("length"), std::string::npos) << quaternion;
   EXPECT_NE(message(Table({ { "Time", { 0.0, 1.0 } }, { "QW", { 1.0, 1.0 } } })).find("all four"),
     std::string::npos);
+  // Rows for a body the mesh does not have (one body here): refused, not ignored with the mesh
+  // left where it is.
+  const std::string body =
+    message(Table({ { "Time", { 0.0, 1.0 } }, { "Body", { 3, 3 } }, { "TX", { 0.0, 1.0 } } }));
+  EXPECT_NE(body.find("moves body 3, but the mesh has 1 moving body"), std::string::npos) << body;
 }
