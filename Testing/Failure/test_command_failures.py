@@ -136,6 +136,16 @@ class CommandFailures(unittest.TestCase):
                 self.assertNotIn("vtkDGMFDeformFilter (0x", err)
                 self.assertFalse(os.path.exists(output))
 
+    def test_an_empty_file_is_said_to_be_empty(self):
+        empty = self.path("empty.vtu")
+        open(empty, "w").close()
+        output = self.path("empty_out.vtu")
+        code, out, err = run(empty, output, "--rotate", 0, 0, 10)
+        self.assertEqual(code, 1, err)
+        self.assertIn("empty.vtu is empty (0 bytes)", err)
+        self.assertNotIn("Error parsing XML", err)
+        self.assertFalse(os.path.exists(output))
+
     def test_integer_options_refuse_fractions(self):
         for option in ("--threads", "--sub-steps", "--damping", "--repair-passes"):
             with self.subTest(option=option):
