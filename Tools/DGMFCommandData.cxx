@@ -339,10 +339,15 @@ vtkSmartPointer<vtkAlgorithm> ReadOpenFOAMCase(const std::string& path, bool dec
   reader->DisableAllLagrangianArrays();
   reader->SetDecomposePolyhedra(decomposePolyhedra ? 1 : 0);
   reader->SetCreateCellToPoint(0);
+  const int errorsBefore = GetErrorCount();
   reader->Update();
-  if (reader->GetNumberOfPatchArrays() == 0 || !reader->GetOutputDataObject(0))
+  // A points file that does not parse leaves the reader's error and no internal mesh: that is
+  // what to say, not that the named patches are missing.
+  vtkUnstructuredGrid* volume = VolumeOf(reader->GetOutputDataObject(0));
+  if (reader->GetNumberOfPatchArrays() == 0 || !reader->GetOutputDataObject(0) ||
+    GetErrorCount() > errorsBefore || !volume || volume->GetNumberOfPoints() == 0)
   {
-    std::cerr << "dgmf-deform: could not read an OpenFOAM mesh from " << path << "\n";
+    std::cerr << "dgmf-deform: error: could not read an OpenFOAM mesh from " << path << "\n";
     return nullptr;
   }
   return reader;

@@ -135,6 +135,8 @@ def main():
     parser.add_argument("--same-as")
     parser.add_argument("--same-tolerance", type=float, default=0.0)
     parser.add_argument("--expect-error")
+    parser.add_argument("--corrupt-points", action="store_true",
+                        help="run on a copy whose points file has a word for a number")
     parser.add_argument("options", nargs=argparse.REMAINDER)
     args = parser.parse_args()
     options = [o for o in args.options if o != "--"]
@@ -150,10 +152,24 @@ def main():
     if args.in_place:
         shutil.copytree(args.case, out)
         source = out
+    if args.corrupt_points:
+        source = out + ".source"
+        shutil.rmtree(source, ignore_errors=True)
+        shutil.copytree(args.case, source)
+        path = os.path.join(source, "constant", "polyMesh", "points")
+        with open(path) as f:
+            lines = f.read().split("\n")
+        first = next(k for k, line in enumerate(lines) if re.match(r"^\(\S+ \S+ \S+\)$", line))
+        lines[first] = "(0 0 nonsense)"
+        with open(path, "w") as f:
+            f.write("\n".join(lines))
     before = case_hash(source)
     constant_before = case_hash(os.path.join(source, "constant"))
-    source_points, source_format, source_gz = read_points(
-        points_file(os.path.join(source, "constant", "polyMesh")))
+    if args.corrupt_points:
+        source_points = None
+    else:
+        source_points, source_format, source_gz = read_points(
+            points_file(os.path.join(source, "constant", "polyMesh")))
 
     command = [args.deform, source, out] + options
     if args.time != "constant":
