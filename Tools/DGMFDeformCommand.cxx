@@ -311,6 +311,24 @@ int RunSeries(
     }
   }
   std::vector<std::pair<double, std::string>> frames;
+  // The .pvd of the frames written so far: at the end, and when a frame stops the series (the
+  // frames before it are whole, and ParaView opens them as a series).
+  const auto writeCollection = [&]()
+  {
+    if (!files || options.NoWrite || !dgmf_cli::IsMeshFileName(options.Output) || frames.empty())
+    {
+      return true;
+    }
+    const std::string collection = dgmf_cli::CollectionPath(options.Output);
+    if (!dgmf_cli::WriteCollection(collection, frames))
+    {
+      std::cerr << "dgmf-deform: error: could not write " << collection << "\n";
+      return false;
+    }
+    std::cout << "dgmf-deform: wrote the series " << collection << " (" << frames.size()
+              << " frames)" << std::endl;
+    return true;
+  };
   for (std::size_t k = 0; k < steps.size(); ++k)
   {
     const double t = steps[k];
@@ -325,8 +343,9 @@ int RunSeries(
       std::cerr << "dgmf-deform: " << why << " at time " << t << "; "
                 << (verdict == ExitInvertedCells
                        ? "this frame was not written (--fail-on-inverted), " +
-                         std::to_string(frames.size()) + " earlier frames were\n"
+                         std::to_string(frames.size()) + " earlier frames were written\n"
                        : std::to_string(frames.size()) + " earlier frames were written\n");
+      writeCollection();
       return verdict;
     }
     dgmf_cli::CommandOptions frame = options;
@@ -341,22 +360,12 @@ int RunSeries(
     std::string written;
     if (!WriteAndReport(filter, kind, frame, times, written))
     {
+      writeCollection();
       return ExitFailure;
     }
     frames.emplace_back(t, frame.Output);
   }
-  if (files && !options.NoWrite && dgmf_cli::IsMeshFileName(options.Output))
-  {
-    const std::string collection = dgmf_cli::CollectionPath(options.Output);
-    if (!dgmf_cli::WriteCollection(collection, frames))
-    {
-      std::cerr << "dgmf-deform: error: could not write " << collection << "\n";
-      return ExitFailure;
-    }
-    std::cout << "dgmf-deform: wrote the series " << collection << " (" << frames.size()
-              << " frames)" << std::endl;
-  }
-  return ExitSuccess;
+  return writeCollection() ? ExitSuccess : ExitFailure;
 }
 } // namespace
 
