@@ -97,7 +97,8 @@ bool ReadLaw(int argc, char* argv[], int& i, bool pitch, int& kind, double param
   return true;
 }
 
-/// START:END:COUNT as COUNT equally spaced times (COUNT >= 1; END >= START).
+/// START:END:COUNT as COUNT equally spaced times (COUNT >= 1; END >= START; END > START when
+/// COUNT > 1, else the frames would share one time; COUNT 1 gives START alone).
 bool ReadTimes(const char* text, std::vector<double>& times)
 {
   std::stringstream stream(text);
@@ -116,7 +117,8 @@ bool ReadTimes(const char* text, std::vector<double>& times)
     whole = whole && used == end.size();
     const long n = std::stol(count, &used);
     whole = whole && used == count.size();
-    if (!whole || !std::isfinite(a) || !std::isfinite(b) || b < a || n < 1 || n > 1000000)
+    if (!whole || !std::isfinite(a) || !std::isfinite(b) || b < a || n < 1 || n > 1000000 ||
+      (n > 1 && !(b > a)))
     {
       return false;
     }
