@@ -89,7 +89,7 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
   {
     warnings.push_back(std::to_string(built.GetNumberOfOutsideNodes()) +
       " nodes lie outside the Delaunay graph of the boundary nodes (is the whole outer boundary "
-      "marked?); they use the nearest hull element.");
+      "marked?); they use the hull facet they project onto.");
   }
   return built;
 }

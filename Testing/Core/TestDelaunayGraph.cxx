@@ -365,3 +365,48 @@ TEST(DelaunayGraph, EverySideJobRunsOnceAndTheFirstFailureInOrderIsThrown)
     }
   }
 }
+
+TEST(DelaunayGraph, APointJustOutsideAFlatHullFaceGetsTheFacetUnderIt)
+{
+  // The boundary of a cube as a grid of points: its faces are flat, the graph's hull facets there
+  // lie in one plane (up to the graph's perturbation). A point a hair outside a face (what
+  // single-precision input or a tilted symmetry plane gives) must be interpolated in the facet it
+  // projects onto: a linear field then comes out as at the projection.
+  const int n = 7;
+  std::vector<double> xyz;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        if (i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1)
+        {
+          xyz.insert(xyz.end(), { double(i), double(j), double(k) });
+        }
+  dgmf::DelaunayGraph graph(3, xyz.data(), xyz.size() / 3);
+  const auto field = [](const double* x) { return x[0] + 2.0 * x[1] + 3.0 * x[2]; };
+  double worst = 0.0;
+  int outside = 0;
+  for (int a = 0; a < 40; ++a)
+  {
+    for (int b = 0; b < 40; ++b)
+    {
+      const double p[3] = { 0.1 + 0.15 * a, 0.07 + 0.15 * b, -1e-9 * (1 + (a + b) % 3) };
+      const dgmf::DelaunayGraph::Location location = graph.LocateExactly(p, -1);
+      ASSERT_GE(location.Element, 0);
+      outside += location.Outside ? 1 : 0;
+      double value = 0.0;
+      double sum = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        ASSERT_GE(location.Weights[k], 0.0);
+        sum += location.Weights[k];
+        const std::int32_t v = graph.GetElement(location.Element)[k];
+        value += location.Weights[k] * field(&xyz[3 * graph.GetPointOfVertex()[v]]);
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+      const double projected[3] = { p[0], p[1], 0.0 };
+      worst = std::max(worst, std::abs(value - field(projected)));
+    }
+  }
+  EXPECT_GT(outside, 1000) << "the points are outside the hull";
+  EXPECT_LT(worst, 1e-6) << "a linear field at the projection";
+}

@@ -48,9 +48,10 @@ public:
   /// Result of a point location.
   struct Location
   {
-    std::int32_t Element = -1; ///< element containing the point (or the nearest hull element)
+    /// Element containing the point (outside: the one under the hull facet it projects onto).
+    std::int32_t Element = -1;
     double Weights[4] = { 0, 0, 0, 0 }; ///< barycentric coordinates, >= 0, sum 1 (dim+1 used)
-    bool Outside = false; ///< the point is outside the graph's convex hull (weights clamped)
+    bool Outside = false; ///< outside the graph's convex hull (the facet's weights, clamped)
   };
 
   /**

@@ -5,6 +5,7 @@
 #include "dgmf/DelaunayGraphCgal.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -18,6 +19,122 @@ bool DelaunayGraph::ComputeWeights(std::int32_t e, const double p[3], double w[4
 {
   return BarycentricWeights(this->Records[static_cast<std::size_t>(e)], this->Dimension, p, w);
 }
+
+namespace
+{
+/// Largest number of hull facets (edges in 2D) a walk to a point's projection crosses.
+constexpr int HullWalkSteps = 100000;
+
+/**
+ * The weights of `p` projected onto the hull facet of `record` opposite corner `opposite` (3D:
+ * a triangle; 2D: an edge), the corner `opposite` getting 0: unnormalised, the facet's own
+ * barycentric coordinates. Returns the smallest of them over the facet's size (>= 0: the
+ * projection is in the facet) and its corner in `most`.
+ */
+double FacetWeights(
+  const WalkRecord& record, int dimension, int opposite, const double p[3], double w[4], int& most)
+{
+  int corner[3];
+  int count = 0;
+  std::fill(w, w + 4, 0.0);
+  for (int k = 0; k <= dimension; ++k)
+  {
+    if (k != opposite)
+    {
+      corner[count++] = k;
+    }
+  }
+  const auto at = [&](int k, int c) { return record.Corners[corner[k]][c]; };
+  double smallest = 0.0;
+  most = corner[0];
+  if (dimension == 2)
+  {
+    // The edge A B: p's projection at A + s (B - A).
+    const double e[2] = { at(1, 0) - at(0, 0), at(1, 1) - at(0, 1) };
+    const double length2 = e[0] * e[0] + e[1] * e[1];
+    const double s = ((p[0] - at(0, 0)) * e[0] + (p[1] - at(0, 1)) * e[1]) / length2;
+    w[corner[0]] = 1.0 - s;
+    w[corner[1]] = s;
+    smallest = std::min(1.0 - s, s);
+    most = 1.0 - s < s ? corner[0] : corner[1];
+    return smallest;
+  }
+  // The triangle A B C: the areas of p's sub-triangles along the facet's normal.
+  double a[3], b[3], c[3], x[3], y[3], normal[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    a[d] = at(0, d);
+    b[d] = at(1, d);
+    c[d] = at(2, d);
+    x[d] = b[d] - a[d];
+    y[d] = c[d] - a[d];
+  }
+  normal[0] = x[1] * y[2] - x[2] * y[1];
+  normal[1] = x[2] * y[0] - x[0] * y[2];
+  normal[2] = x[0] * y[1] - x[1] * y[0];
+  const double area2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
+  const double* v[3] = { a, b, c };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double* u = v[(k + 1) % 3];
+    const double* t = v[(k + 2) % 3];
+    const double su[3] = { u[0] - p[0], u[1] - p[1], u[2] - p[2] };
+    const double st[3] = { t[0] - p[0], t[1] - p[1], t[2] - p[2] };
+    const double cross[3] = { su[1] * st[2] - su[2] * st[1], su[2] * st[0] - su[0] * st[2],
+      su[0] * st[1] - su[1] * st[0] };
+    const double lambda =
+      (cross[0] * normal[0] + cross[1] * normal[1] + cross[2] * normal[2]) / area2;
+    w[corner[k]] = lambda;
+    if (k == 0 || lambda < smallest)
+    {
+      smallest = lambda;
+      most = corner[k];
+    }
+  }
+  return smallest;
+}
+
+/**
+ * From the infinite element `outer` of `t` (CGAL's answer for a point `p` outside the hull),
+ * walks over the hull's facets to the one `p` projects onto (on a flat face, CGAL's answer is any
+ * facet `p` is beyond): crosses the facet edge opposite the corner with the most negative
+ * coordinate, up to HullWalkSteps facets, keeping the best. Returns the finite element under the
+ * facet and `p`'s weights in it (the corner off the facet 0; clamped, summing to 1).
+ */
+template <typename Triangulation, typename Handle>
+std::int32_t ProjectOntoHull(const Triangulation& t, Handle outer, int dimension,
+  const UninitializedVector<WalkRecord>& records, const double p[3], double weights[4])
+{
+  double best = -std::numeric_limits<double>::infinity();
+  std::int32_t bestElement = -1;
+  double bestWeights[4] = { 0, 0, 0, 0 };
+  for (int step = 0; step < HullWalkSteps; ++step)
+  {
+    const Handle inner = outer->neighbor(outer->index(t.infinite_vertex()));
+    const std::int32_t element = inner->info();
+    const int opposite = inner->index(outer);
+    double w[4];
+    int most = 0;
+    const double smallest =
+      FacetWeights(records[static_cast<std::size_t>(element)], dimension, opposite, p, w, most);
+    if (smallest > best)
+    {
+      best = smallest;
+      bestElement = element;
+      std::copy(w, w + 4, bestWeights);
+    }
+    if (!(smallest < 0.0))
+    {
+      break; // the projection is in this facet (or a weight is NaN: stop)
+    }
+    // Across the facet edge opposite `most`: the infinite element sharing that edge.
+    outer = outer->neighbor(outer->index(inner->vertex(most)));
+  }
+  std::copy(bestWeights, bestWeights + 4, weights);
+  ClampWeights(weights, dimension + 1);
+  return bestElement;
+}
+} // namespace
 
 DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int32_t hint) const
 {
@@ -35,7 +152,8 @@ DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int
     if (t.is_infinite(f))
     {
       result.Outside = true;
-      f = f->neighbor(f->index(t.infinite_vertex()));
+      result.Element = ProjectOntoHull(t, f, 2, this->Records, p, result.Weights);
+      return result;
     }
     element = f->info();
   }
@@ -51,7 +169,8 @@ DelaunayGraph::Location DelaunayGraph::LocateExactly(const double p[3], std::int
     if (t.is_infinite(c))
     {
       result.Outside = true;
-      c = c->neighbor(c->index(t.infinite_vertex()));
+      result.Element = ProjectOntoHull(t, c, 3, this->Records, p, result.Weights);
+      return result;
     }
     element = c->info();
   }

@@ -137,7 +137,8 @@ public:
     return this->VertexNode[static_cast<std::size_t>(v)];
   }
 
-  /// Number of interior nodes outside the graph's convex hull (they got the nearest hull element).
+  /// Number of interior nodes outside the graph's convex hull (interpolated in the hull facet they
+  /// project onto).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
   /// Number of interior nodes found from their stride neighbour's element (see hintStride).
   std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
