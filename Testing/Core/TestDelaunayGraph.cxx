@@ -410,3 +410,38 @@ TEST(DelaunayGraph, APointJustOutsideAFlatHullFaceGetsTheFacetUnderIt)
   EXPECT_GT(outside, 1000) << "the points are outside the hull";
   EXPECT_LT(worst, 1e-6) << "a linear field at the projection";
 }
+
+TEST(DelaunayGraph, APointJustOutsideAStraightHullEdgeGetsTheEdgeUnderIt)
+{
+  // The 2D case: the boundary of a square as a grid of points, points a hair below y = 0.
+  const int n = 9;
+  std::vector<double> xyz;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (i == 0 || j == 0 || i == n - 1 || j == n - 1)
+      {
+        xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
+      }
+  dgmf::DelaunayGraph graph(2, xyz.data(), xyz.size() / 3);
+  const auto field = [](const double* x) { return 3.0 * x[0] - x[1]; };
+  double worst = 0.0;
+  int outside = 0;
+  for (int a = 0; a < 200; ++a)
+  {
+    const double p[3] = { 0.013 + 0.04 * a, -1e-9 * (1 + a % 3), 0.0 };
+    const dgmf::DelaunayGraph::Location location = graph.LocateExactly(p, -1);
+    ASSERT_GE(location.Element, 0);
+    outside += location.Outside ? 1 : 0;
+    double value = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_GE(location.Weights[k], 0.0);
+      const std::int32_t v = graph.GetElement(location.Element)[k];
+      value += location.Weights[k] * field(&xyz[3 * graph.GetPointOfVertex()[v]]);
+    }
+    const double projected[3] = { p[0], 0.0, 0.0 };
+    worst = std::max(worst, std::abs(value - field(projected)));
+  }
+  EXPECT_GT(outside, 150);
+  EXPECT_LT(worst, 1e-6);
+}
