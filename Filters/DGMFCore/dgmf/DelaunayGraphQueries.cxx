@@ -2,6 +2,7 @@
 // inverted elements, the memory kept.
 #include "dgmf/DelaunayGraph.h"
 
+#include "dgmf/CellGeometry.h"
 #include "dgmf/DelaunayGraphCgal.h"
 
 #include <algorithm>
@@ -60,30 +61,14 @@ double FacetWeights(
     return smallest;
   }
   // The triangle A B C: the areas of p's sub-triangles along the facet's normal.
-  double a[3], b[3], c[3], x[3], y[3], normal[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    a[d] = at(0, d);
-    b[d] = at(1, d);
-    c[d] = at(2, d);
-    x[d] = b[d] - a[d];
-    y[d] = c[d] - a[d];
-  }
-  normal[0] = x[1] * y[2] - x[2] * y[1];
-  normal[1] = x[2] * y[0] - x[0] * y[2];
-  normal[2] = x[0] * y[1] - x[1] * y[0];
-  const double area2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
-  const double* v[3] = { a, b, c };
+  const auto corner3 = [&](int k) { return Vec3{ at(k, 0), at(k, 1), at(k, 2) }; };
+  const Vec3 v[3] = { corner3(0), corner3(1), corner3(2) };
+  const Vec3 q{ p[0], p[1], p[2] };
+  const Vec3 normal = Cross(v[1] - v[0], v[2] - v[0]);
+  const double area2 = Dot(normal, normal);
   for (int k = 0; k < 3; ++k)
   {
-    const double* u = v[(k + 1) % 3];
-    const double* t = v[(k + 2) % 3];
-    const double su[3] = { u[0] - p[0], u[1] - p[1], u[2] - p[2] };
-    const double st[3] = { t[0] - p[0], t[1] - p[1], t[2] - p[2] };
-    const double cross[3] = { su[1] * st[2] - su[2] * st[1], su[2] * st[0] - su[0] * st[2],
-      su[0] * st[1] - su[1] * st[0] };
-    const double lambda =
-      (cross[0] * normal[0] + cross[1] * normal[1] + cross[2] * normal[2]) / area2;
+    const double lambda = Dot(Cross(v[(k + 1) % 3] - q, v[(k + 2) % 3] - q), normal) / area2;
     w[corner[k]] = lambda;
     if (k == 0 || lambda < smallest)
     {
