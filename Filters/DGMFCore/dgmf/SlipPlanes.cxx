@@ -13,6 +13,72 @@ namespace dgmf
 
 namespace
 {
+/**
+ * The least-spread fit of the first D coordinates of `nodes` of `points` (3 per point): their
+ * centroid and bounds, the direction of least spread (the covariance's smallest eigenvector),
+ * and the farthest node from the hyperplane through the centroid normal to it. The planes'
+ * (D = 3) and the 2D meshes' lines' (D = 2) common arithmetic.
+ */
+template <int D>
+struct LeastSpreadFit
+{
+  using Vector = Eigen::Matrix<double, D, 1>;
+  using Matrix = Eigen::Matrix<double, D, D>;
+
+  const double* Points;
+  const std::int32_t* Nodes;
+  std::size_t Count;
+  Vector Centroid = Vector::Zero();
+  Vector Low = Vector::Constant(std::numeric_limits<double>::infinity());
+  Vector High = -Vector::Constant(std::numeric_limits<double>::infinity());
+  double Extent = 0.0;
+
+  LeastSpreadFit(const double* points, const std::int32_t* nodes, std::size_t count)
+    : Points(points)
+    , Nodes(nodes)
+    , Count(count)
+  {
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const Vector p = this->At(k);
+      this->Centroid += p;
+      this->Low = this->Low.cwiseMin(p);
+      this->High = this->High.cwiseMax(p);
+    }
+    this->Centroid /= static_cast<double>(count);
+    this->Extent = (this->High - this->Low).norm();
+  }
+
+  /// Node k's first D coordinates.
+  Vector At(std::size_t k) const
+  {
+    return Eigen::Map<const Vector>(this->Points + 3 * static_cast<std::size_t>(this->Nodes[k]));
+  }
+
+  /// The eigen-decomposition of the nodes' covariance (eigenvalues ascending).
+  Eigen::SelfAdjointEigenSolver<Matrix> Spread() const
+  {
+    Matrix covariance = Matrix::Zero();
+    for (std::size_t k = 0; k < this->Count; ++k)
+    {
+      const Vector y = this->At(k) - this->Centroid;
+      covariance += y * y.transpose();
+    }
+    return Eigen::SelfAdjointEigenSolver<Matrix>(covariance);
+  }
+
+  /// The largest distance of a node from the hyperplane through the centroid normal to `normal`.
+  double Farthest(const Vector& normal) const
+  {
+    double farthest = 0.0;
+    for (std::size_t k = 0; k < this->Count; ++k)
+    {
+      farthest = std::max(farthest, std::abs(normal.dot(this->At(k) - this->Centroid)));
+    }
+    return farthest;
+  }
+};
+
 /// FitSlipPlane of a 2D mesh: the line of the nodes in the plane z = constant.
 SlipPlane FitSlipLine(const double* points, const std::int32_t* nodes, std::size_t count,
   const std::string& name, double relativeTolerance)
@@ -22,71 +88,45 @@ SlipPlane FitSlipLine(const double* points, const std::int32_t* nodes, std::size
     throw std::invalid_argument("The slip boundary '" + name + "' has " + std::to_string(count) +
       " node: a line needs at least 2.");
   }
-  SlipPlane plane;
-  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d high = -low;
-  double z = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const double* x = points + 3 * static_cast<std::size_t>(nodes[k]);
-    const Eigen::Vector2d p(x[0], x[1]);
-    centroid += p;
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-    z = x[2];
-  }
-  centroid /= static_cast<double>(count);
-  const double extent = (high - low).norm();
-  if (!(extent > 0.0) || !std::isfinite(extent))
+  const LeastSpreadFit<2> fit(points, nodes, count);
+  const double z = points[3 * static_cast<std::size_t>(nodes[count - 1]) + 2];
+  if (!(fit.Extent > 0.0) || !std::isfinite(fit.Extent))
   {
     throw std::invalid_argument(
       "The slip boundary '" + name + "' does not span a line (its nodes are at one place).");
   }
+  SlipPlane plane;
+  plane.Point[2] = z;
+  plane.Normal[2] = 0.0;
   for (int axis = 0; axis < 2; ++axis)
   {
-    if (low[axis] == high[axis])
+    if (fit.Low[axis] == fit.High[axis])
     {
       plane.Axis = axis;
-      plane.Point[0] = axis == 0 ? low[0] : centroid[0];
-      plane.Point[1] = axis == 1 ? low[1] : centroid[1];
-      plane.Point[2] = z;
-      plane.Normal[0] = axis == 0 ? 1.0 : 0.0;
-      plane.Normal[1] = axis == 1 ? 1.0 : 0.0;
-      plane.Normal[2] = 0.0;
+      for (int c = 0; c < 2; ++c)
+      {
+        plane.Point[c] = c == axis ? fit.Low[axis] : fit.Centroid[c];
+        plane.Normal[c] = c == axis ? 1.0 : 0.0;
+      }
       return plane;
     }
   }
-  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const double* x = points + 3 * static_cast<std::size_t>(nodes[k]);
-    const Eigen::Vector2d y = Eigen::Vector2d(x[0], x[1]) - centroid;
-    covariance += y * y.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
-  const Eigen::Vector2d normal = solver.eigenvectors().col(0).normalized(); // least spread
-  double farthest = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const double* x = points + 3 * static_cast<std::size_t>(nodes[k]);
-    farthest = std::max(farthest, std::abs(normal.dot(Eigen::Vector2d(x[0], x[1]) - centroid)));
-  }
-  if (farthest > relativeTolerance * extent)
+  const Eigen::Vector2d normal = fit.Spread().eigenvectors().col(0).normalized(); // least spread
+  const double farthest = fit.Farthest(normal);
+  if (farthest > relativeTolerance * fit.Extent)
   {
     std::ostringstream message;
     message << "The slip boundary '" << name << "' is not straight: a node is " << farthest
-            << " from the best line through its nodes (size " << extent
+            << " from the best line through its nodes (size " << fit.Extent
             << "). A slip boundary of a 2D mesh must be a straight line; split a bent one, or "
                "make it static.";
     throw std::invalid_argument(message.str());
   }
-  plane.Point[0] = centroid[0];
-  plane.Point[1] = centroid[1];
-  plane.Point[2] = z;
-  plane.Normal[0] = normal[0];
-  plane.Normal[1] = normal[1];
-  plane.Normal[2] = 0.0;
+  for (int c = 0; c < 2; ++c)
+  {
+    plane.Point[c] = fit.Centroid[c];
+    plane.Normal[c] = normal[c];
+  }
   return plane;
 }
 } // namespace
@@ -103,64 +143,41 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
     throw std::invalid_argument("The slip boundary '" + name + "' has " + std::to_string(count) +
       " nodes: a plane needs at least 3.");
   }
+  const LeastSpreadFit<3> fit(points, nodes, count);
   SlipPlane plane;
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d high = -low;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Eigen::Vector3d p(points + 3 * static_cast<std::size_t>(nodes[k]));
-    centroid += p;
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  centroid /= static_cast<double>(count);
-  const double extent = (high - low).norm();
   for (int axis = 0; axis < 3; ++axis)
   {
-    if (low[axis] == high[axis] && extent > 0.0)
+    if (fit.Low[axis] == fit.High[axis] && fit.Extent > 0.0)
     {
       plane.Axis = axis;
       for (int c = 0; c < 3; ++c)
       {
         plane.Normal[c] = c == axis ? 1.0 : 0.0;
-        plane.Point[c] = c == axis ? low[axis] : centroid[c];
+        plane.Point[c] = c == axis ? fit.Low[axis] : fit.Centroid[c];
       }
       return plane;
     }
   }
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Eigen::Vector3d y =
-      Eigen::Vector3d(points + 3 * static_cast<std::size_t>(nodes[k])) - centroid;
-    covariance += y * y.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver = fit.Spread();
   const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
-  if (!(spread[1] > 1e-12 * spread[2]) || !(extent > 0.0) || !std::isfinite(extent))
+  if (!(spread[1] > 1e-12 * spread[2]) || !(fit.Extent > 0.0) || !std::isfinite(fit.Extent))
   {
     throw std::invalid_argument(
       "The slip boundary '" + name + "' does not span a plane (its nodes lie on a line).");
   }
   const Eigen::Vector3d normal = solver.eigenvectors().col(0).normalized();
-  double farthest = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Eigen::Vector3d p(points + 3 * static_cast<std::size_t>(nodes[k]));
-    farthest = std::max(farthest, std::abs(normal.dot(p - centroid)));
-  }
-  if (farthest > relativeTolerance * extent)
+  const double farthest = fit.Farthest(normal);
+  if (farthest > relativeTolerance * fit.Extent)
   {
     std::ostringstream message;
     message << "The slip boundary '" << name << "' is not planar: a node is " << farthest
-            << " from the best plane through its nodes (size " << extent
+            << " from the best plane through its nodes (size " << fit.Extent
             << "). A slip boundary must be a plane; split a curved one, or make it static.";
     throw std::invalid_argument(message.str());
   }
   for (int c = 0; c < 3; ++c)
   {
-    plane.Point[c] = centroid[c];
+    plane.Point[c] = fit.Centroid[c];
     plane.Normal[c] = normal[c];
   }
   return plane;
