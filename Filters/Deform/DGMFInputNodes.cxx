@@ -306,8 +306,8 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
     {
       continue;
     }
-    nodes.Slip.Planes.push_back(dgmf::FitSlipPlane(
-      nodes.Points, groups[g].data(), groups[g].size(), names[g], 1e-9, nodes.Dimension));
+    nodes.Slip.Planes.push_back(dgmf::FitSlipPlane(nodes.Points, groups[g].data(), groups[g].size(),
+      names[g], dgmf::SlipPlaneTolerance, nodes.Dimension));
     for (std::int32_t node : groups[g])
     {
       nodes.Slip.Nodes.push_back(node);

@@ -25,7 +25,7 @@ std::uint64_t HashPoints(const dgmf::DeformationProblem& problem, bool onThreads
 bool MappingCache::Matches(const dgmf::DeformationProblem& problem, vtkDataArray* pointsArray)
 {
   const std::size_t n = problem.NumberOfNodes;
-  return this->Mapping && this->Dimension == problem.Dimension &&
+  return this->Mapping && this->Dimension == problem.Dimension && this->Slip == problem.Slip &&
     this->Mapping->GetNumberOfNodes() == n &&
     std::memcmp(problem.Kinds, this->Mapping->GetNodeKinds().data(), n * sizeof(dgmf::NodeKind)) ==
     0 &&
@@ -45,9 +45,10 @@ const dgmf::DelaunayMapping& MappingCache::Build(const dgmf::DeformationProblem&
   jobs.emplace_back([&pointsHash, &problem]() { pointsHash = HashPoints(problem, false); });
   jobs.insert(jobs.end(), alongside.begin(), alongside.end());
   this->Mapping = std::make_unique<dgmf::DelaunayMapping>(problem.Dimension, problem.Points,
-    problem.NumberOfNodes, problem.Kinds, parallelFor, hintStride, jobs);
+    problem.NumberOfNodes, problem.Kinds, parallelFor, hintStride, jobs, &problem.Slip);
   this->Points.Set(pointsArray, [pointsHash]() { return pointsHash; });
   this->Dimension = problem.Dimension;
+  this->Slip = problem.Slip;
   return *this->Mapping;
 }
 

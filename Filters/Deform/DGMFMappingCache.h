@@ -28,8 +28,8 @@ class MappingCache
 {
 public:
   /**
-   * True when the cached mapping is that of `problem`'s points, kinds and dimension (the identity
-   * and MTime of `pointsArray`, or else a hash of the points, tell).
+   * True when the cached mapping is that of `problem`'s points, kinds, slip boundaries and
+   * dimension (the identity and MTime of `pointsArray`, or else a hash of the points, tell).
    */
   bool Matches(const dgmf::DeformationProblem& problem, vtkDataArray* pointsArray);
 
@@ -66,6 +66,7 @@ public:
 private:
   ContentKey Points;
   int Dimension = 0;
+  dgmf::SlipConstraint Slip; ///< the slip boundaries the mapping located its slip nodes with
   std::unique_ptr<dgmf::DelaunayMapping> Mapping;
 };
 

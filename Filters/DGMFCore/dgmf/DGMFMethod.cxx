@@ -177,6 +177,7 @@ void DeformLargeMotion(const DeformationProblem& problem, const DelaunayMapping&
     // Every step keeps the slip nodes in their planes (before the quality guard sees the step).
     parameters.Constrain = [&problem](double* deformed)
     { problem.Slip.Apply(problem.Points, deformed); };
+    parameters.Slip = &problem.Slip;
   }
   const SubStepReport steps = DeformInSubSteps(problem.Dimension, problem.Points,
     problem.NumberOfNodes, problem.Kinds, *problem.Cells, problem.Motions.front(),

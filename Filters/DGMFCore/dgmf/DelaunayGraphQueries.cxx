@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <unordered_set>
 #include <vector>
 
 namespace dgmf
@@ -83,8 +84,10 @@ double FacetWeights(
  * From the infinite element `outer` of `t` (CGAL's answer for a point `p` outside the hull),
  * walks over the hull's facets to the one `p` projects onto (on a flat face, CGAL's answer is any
  * facet `p` is beyond): crosses the facet edge opposite the corner with the most negative
- * coordinate, up to HullWalkSteps facets, keeping the best. Returns the finite element under the
- * facet and `p`'s weights in it (the corner off the facet 0; clamped, summing to 1).
+ * coordinate, keeping the best, until a facet is visited again (`p` projects onto no facet but
+ * beyond the hull's edges or corners: the walk goes round them) or after HullWalkSteps facets.
+ * Returns the finite element under the facet and `p`'s weights in it (the corner off the facet 0;
+ * clamped, summing to 1).
  */
 template <typename Triangulation, typename Handle>
 std::int32_t ProjectOntoHull(const Triangulation& t, Handle outer, int dimension,
@@ -93,10 +96,15 @@ std::int32_t ProjectOntoHull(const Triangulation& t, Handle outer, int dimension
   double best = -std::numeric_limits<double>::infinity();
   std::int32_t bestElement = -1;
   double bestWeights[4] = { 0, 0, 0, 0 };
+  std::unordered_set<std::int32_t> visited;
   for (int step = 0; step < HullWalkSteps; ++step)
   {
     const Handle inner = outer->neighbor(outer->index(t.infinite_vertex()));
     const std::int32_t element = inner->info();
+    if (!visited.insert(element).second)
+    {
+      break; // round a hull edge or corner: the best facet so far is the nearest
+    }
     const int opposite = inner->index(outer);
     double w[4];
     int most = 0;

@@ -8,7 +8,9 @@
 #include "dgmf/NumberingCoherence.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <numeric>
 #include <stdexcept>
@@ -25,7 +27,7 @@ constexpr std::size_t KindBlock = std::size_t(1) << 16;
 
 DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
   const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride,
-  const DelaunayGraph::SideJobs& alongside)
+  const DelaunayGraph::SideJobs& alongside, const SlipConstraint* slip)
 {
   if (numberOfNodes > static_cast<std::size_t>(INT32_MAX))
   {
@@ -175,10 +177,21 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
       });
     this->AddCounts(counts);
     this->FromStartGrid = true;
-    this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
-    return;
   }
+  else
+  {
+    this->LocateInWaves(points, numberOfNodes, parallelFor, hintStride);
+  }
+  if (slip)
+  {
+    this->LocateSlipNodesInside(points, *slip, parallelFor);
+  }
+  this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
+}
 
+void DelaunayMapping::LocateInWaves(const double* points, std::size_t numberOfNodes,
+  const ParallelFor& parallelFor, std::size_t hintStride)
+{
   // The pieces located in parallel. With a hint stride of at least a block, the nodes go in
   // waves of `hintStride` nodes, each cut into WavePieces pieces: every node's stride neighbour
   // is then in an earlier wave, located whatever the number of threads. Otherwise one wave of
@@ -203,16 +216,97 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
         {
           continue;
         }
-        const NodeLocationCounts count =
-          LocateNodes(*this->Graph, points, kinds, begin, std::min(begin + pieceLength, waveEnd),
-            this->NodeElement.data(), this->Weights.data(), hintStride, waveBegin);
+        const NodeLocationCounts count = LocateNodes(*this->Graph, points, this->Kinds.data(),
+          begin, std::min(begin + pieceLength, waveEnd), this->NodeElement.data(),
+          this->Weights.data(), hintStride, waveBegin);
         counts[piece].Outside += count.Outside;
+        counts[piece].SlipOutside += count.SlipOutside;
         counts[piece].StrideHits += count.StrideHits;
         counts[piece].Steps += count.Steps;
       }
     });
   this->AddCounts(counts);
-  this->LocationSeconds = std::chrono::duration<double>(Clock::now() - graphBuilt).count();
+}
+
+void DelaunayMapping::LocateSlipNodesInside(
+  const double* points, const SlipConstraint& slip, const ParallelFor& parallelFor)
+{
+  const DelaunayGraph& graph = *this->Graph;
+  const int dimension = graph.GetDimension();
+  const std::size_t vertices = graph.GetNumberOfVertices();
+  // The graph's size (its bounding box's diagonal) and, for each plane, the side of it the graph's
+  // vertices are on: that of the vertex farthest from it (a symmetry plane bounds the domain, so
+  // every vertex is on that side, up to the plane's deviation).
+  double low[3], high[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    low[c] = high[c] = graph.GetVertexPosition(0)[c];
+  }
+  for (std::int32_t v = 1; v < static_cast<std::int32_t>(vertices); ++v)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      low[c] = std::min(low[c], graph.GetVertexPosition(v)[c]);
+      high[c] = std::max(high[c], graph.GetVertexPosition(v)[c]);
+    }
+  }
+  const double size = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) +
+    (high[1] - low[1]) * (high[1] - low[1]) + (high[2] - low[2]) * (high[2] - low[2]));
+  std::vector<std::array<double, 3>> inward(slip.Planes.size());
+  for (std::size_t k = 0; k < slip.Planes.size(); ++k)
+  {
+    const SlipPlane& plane = slip.Planes[k];
+    double farthest = 0.0;
+    for (std::int32_t v = 0; v < static_cast<std::int32_t>(vertices); ++v)
+    {
+      const double* x = graph.GetVertexPosition(v);
+      double distance = 0.0;
+      for (int c = 0; c < dimension; ++c)
+      {
+        distance += (x[c] - plane.Point[c]) * plane.Normal[c];
+      }
+      farthest = std::abs(distance) > std::abs(farthest) ? distance : farthest;
+    }
+    const double offset = std::copysign(
+      std::max(SlipOffset * size, SlipOffsetOverDeviation * plane.Deviation), farthest);
+    for (int c = 0; c < 3; ++c)
+    {
+      inward[k][static_cast<std::size_t>(c)] = c < dimension ? offset * plane.Normal[c] : 0.0;
+    }
+  }
+  // Each slip node on its own (any split gives the same result); the nodes outside the graph are
+  // then the other nodes outside and the slip nodes whose point inside is still outside.
+  const std::size_t count = slip.Nodes.size();
+  const std::size_t blocks = (count + BlockSize - 1) / BlockSize;
+  std::vector<std::size_t> stillOutside(blocks, 0);
+  const int n = dimension + 1;
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      for (std::size_t k = block * BlockSize; k < std::min(count, (block + 1) * BlockSize); ++k)
+      {
+        const auto i = static_cast<std::size_t>(slip.Nodes[k]);
+        if (this->IsBoundaryNode(i))
+        {
+          continue;
+        }
+        const double* p = points + 3 * i;
+        const std::array<double, 3>& shift = inward[static_cast<std::size_t>(slip.NodePlanes[k])];
+        const double inside[3] = { p[0] + shift[0], p[1] + shift[1], p[2] + shift[2] };
+        const DelaunayGraph::Location location = graph.LocateExactly(inside, this->NodeElement[i]);
+        if (location.Outside)
+        {
+          ++stillOutside[block]; // even a hair inside it: the node keeps its own location
+          continue;
+        }
+        this->NodeElement[i] = location.Element;
+        std::copy(location.Weights, location.Weights + n, this->Weights.data() + i * n);
+      }
+    });
+  this->OutsideNodes -= this->SlipOutsideNodes;
+  this->SlipOutsideNodes =
+    std::accumulate(stillOutside.begin(), stillOutside.end(), std::size_t(0));
+  this->OutsideNodes += this->SlipOutsideNodes;
 }
 
 void DelaunayMapping::AddCounts(const std::vector<NodeLocationCounts>& counts)
@@ -220,6 +314,7 @@ void DelaunayMapping::AddCounts(const std::vector<NodeLocationCounts>& counts)
   for (const NodeLocationCounts& count : counts)
   {
     this->OutsideNodes += count.Outside;
+    this->SlipOutsideNodes += count.SlipOutside;
     this->StrideHits += count.StrideHits;
     this->WalkSteps += count.Steps;
   }

@@ -10,6 +10,7 @@
 #include "dgmf/NodeKind.h"
 #include "dgmf/NodeLocation.h"
 #include "dgmf/ParallelFor.h"
+#include "dgmf/SlipPlanes.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -58,6 +59,12 @@ public:
   /// The element of an interior node not located yet (while the mapping is being built).
   static constexpr std::int32_t NotLocated = INT32_MIN;
 
+  /// How far inside the graph a slip node is located, relative to the graph's size (the diagonal
+  /// of its bounding box); see the constructor's `slip`.
+  static constexpr double SlipOffset = 1e-7;
+  /// ... and at least this many times its plane's deviation (SlipPlane::Deviation).
+  static constexpr double SlipOffsetOverDeviation = 10.0;
+
   /**
    * Calls body(i) for every node i, in the fixed blocks of BlockSize nodes that run in parallel
    * (the split does not depend on the number of threads, so neither does the result).
@@ -96,12 +103,20 @@ public:
    *   output arrays, in parts), run beside the graph's insertion with the mapping's own first
    *   touches (DelaunayGraph::SideJobs: on a second thread while the graph is built on one, then
    *   on both). Exceptions they throw are passed on.
+   * @param slip the slip boundaries, or null. A slip plane bounds the domain, so it lies on the
+   *   graph's hull, where the elements under it can be flat (a tilted plane's rounding, the
+   *   graph's perturbation) and a node's barycentric coordinates in them arbitrary. Each slip node
+   *   is therefore located at the point a hair inside the graph along its plane's normal
+   *   (SlipOffset times the graph's size, and at least SlipOffsetOverDeviation times the plane's
+   *   deviation, towards the graph's vertices): it gets the values of the well-shaped element
+   *   beside the plane, the same whatever the plane's orientation. A node whose point is outside
+   *   the graph keeps its own location.
    * Throws std::invalid_argument when there are no boundary nodes, when the boundary nodes do
    * not span the dimension, or when any node's coordinate is not finite.
    */
   DelaunayMapping(int dimension, const double* points, std::size_t numberOfNodes,
     const NodeKind* kinds, const ParallelFor& parallelFor, std::size_t hintStride = 0,
-    const DelaunayGraph::SideJobs& alongside = {});
+    const DelaunayGraph::SideJobs& alongside = {}, const SlipConstraint* slip = nullptr);
 
   int GetDimension() const { return this->Graph->GetDimension(); }
   std::size_t GetNumberOfNodes() const { return this->NodeElement.size(); }
@@ -158,6 +173,12 @@ public:
   std::size_t GetMemorySize() const;
 
 private:
+  /// Locates the nodes in waves of `hintStride` nodes, or in one wave (see the constructor).
+  void LocateInWaves(const double* points, std::size_t numberOfNodes,
+    const ParallelFor& parallelFor, std::size_t hintStride);
+  /// Locates every slip node a hair inside the graph (see the constructor's `slip`).
+  void LocateSlipNodesInside(
+    const double* points, const SlipConstraint& slip, const ParallelFor& parallelFor);
   /// Adds the location blocks' counts to the mapping's.
   void AddCounts(const std::vector<NodeLocationCounts>& counts);
 
@@ -170,6 +191,7 @@ private:
   std::vector<NodeKind> VertexKind;
   std::vector<std::int32_t> VertexNode;
   std::size_t OutsideNodes = 0;
+  std::size_t SlipOutsideNodes = 0; ///< slip nodes among the OutsideNodes
   std::size_t StrideHits = 0;
   std::size_t ConflictingNodes = 0;
   std::size_t WalkSteps = 0;

@@ -322,6 +322,7 @@ DeformationProblem ReduceToLayer(
     ToLayer(axis, plane.Point, turned.Point);
     ToLayer(axis, plane.Normal, turned.Normal);
     turned.Axis = plane.Axis < 0 ? -1 : (plane.Axis - axis + 2) % 3; // u -> 0, v -> 1, w -> 2
+    turned.Deviation = plane.Deviation;
     layer.Slip.Planes.push_back(turned);
   }
   std::vector<std::uint8_t> listed(m, 0);

@@ -111,7 +111,11 @@ NodeLocationCounts LocateNodes(const DelaunayGraph& graph, const double* points,
   {
     nodeElement[lane.Node] = element;
     StoreWeights(w, n, weights + lane.Node * static_cast<std::size_t>(n));
-    counts.Outside += outside ? 1 : 0;
+    if (outside)
+    {
+      ++counts.Outside;
+      counts.SlipOutside += kinds[lane.Node] == NodeKind::SlipBoundary ? 1 : 0;
+    }
     strideScore += lane.From == Start::Stride ? 1 : 0;
     counts.StrideHits += lane.From == Start::Stride ? 1 : 0;
     lane.Previous = element;

@@ -17,10 +17,11 @@ namespace dgmf
 /// What the location of a block counted.
 struct NodeLocationCounts
 {
-  std::size_t Outside = 0;    ///< nodes outside the graph's convex hull
-  std::size_t Restarts = 0;   ///< walks started from the graph's seed grid
-  std::size_t StrideHits = 0; ///< nodes found by the walk from their stride neighbour's element
-  std::size_t Steps = 0;      ///< steps of the visibility walks (elements crossed)
+  std::size_t Outside = 0;     ///< nodes outside the graph's convex hull
+  std::size_t SlipOutside = 0; ///< those of them that are slip nodes (NodeKind::SlipBoundary)
+  std::size_t Restarts = 0;    ///< walks started from the graph's seed grid
+  std::size_t StrideHits = 0;  ///< nodes found by the walk from their stride neighbour's element
+  std::size_t Steps = 0;       ///< steps of the visibility walks (elements crossed)
 };
 
 /**

@@ -127,6 +127,7 @@ SlipPlane FitSlipLine(const double* points, const std::int32_t* nodes, std::size
     plane.Point[c] = fit.Centroid[c];
     plane.Normal[c] = normal[c];
   }
+  plane.Deviation = farthest;
   return plane;
 }
 } // namespace
@@ -180,7 +181,21 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
     plane.Point[c] = fit.Centroid[c];
     plane.Normal[c] = normal[c];
   }
+  plane.Deviation = farthest;
   return plane;
+}
+
+bool SlipConstraint::operator==(const SlipConstraint& other) const
+{
+  const auto samePlane = [](const SlipPlane& a, const SlipPlane& b)
+  {
+    return std::equal(a.Point, a.Point + 3, b.Point) &&
+      std::equal(a.Normal, a.Normal + 3, b.Normal) && a.Axis == b.Axis &&
+      a.Deviation == b.Deviation;
+  };
+  return this->Nodes == other.Nodes && this->NodePlanes == other.NodePlanes &&
+    std::equal(this->Planes.begin(), this->Planes.end(), other.Planes.begin(), other.Planes.end(),
+      samePlane);
 }
 
 void SlipConstraint::Apply(const double* points, double* deformed) const

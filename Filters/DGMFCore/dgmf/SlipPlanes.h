@@ -22,7 +22,17 @@ struct SlipPlane
   /// 0, 1 or 2 when the plane is normal to that coordinate axis exactly (every node has the same
   /// coordinate there): the projection then keeps that coordinate bit for bit; -1 otherwise.
   int Axis = -1;
+  /// The largest distance of the boundary's nodes from the plane (0 for an axis plane): how far
+  /// from flat the boundary is, at most SlipPlaneTolerance times its extent.
+  double Deviation = 0.0;
 };
+
+/**
+ * How far from its plane a slip boundary's node may be, relative to the boundary's extent: 1e-6,
+ * above the rounding of coordinates read in single precision (about 6e-8 of their magnitude, as
+ * from OpenFOAM's reader), far below any curvature meant.
+ */
+constexpr double SlipPlaneTolerance = 1e-6;
 
 /**
  * The plane through the nodes `nodes[0..count)` of `points` (3 coordinates per node): their
@@ -38,7 +48,7 @@ struct SlipPlane
  * times the extent from the line is an error ("not straight").
  */
 SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::size_t count,
-  const std::string& name, double relativeTolerance = 1e-9, int dimension = 3);
+  const std::string& name, double relativeTolerance = SlipPlaneTolerance, int dimension = 3);
 
 /// The nodes of the slip boundaries and the plane each one stays in.
 struct SlipConstraint
@@ -48,6 +58,9 @@ struct SlipConstraint
   std::vector<std::int32_t> NodePlanes; ///< the plane of each of Nodes (index into Planes)
 
   bool Empty() const { return this->Nodes.empty(); }
+
+  /// True when both have the same nodes in the same planes (every field equal).
+  bool operator==(const SlipConstraint& other) const;
 
   /**
    * Moves every slip node of `deformed` back into its plane: the component of its displacement

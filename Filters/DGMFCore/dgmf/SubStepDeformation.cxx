@@ -163,7 +163,8 @@ SubStepReport DeformInSubSteps(int dimension, const double* points, std::size_t 
     // and the first step, when the caller has the input's graph, reuse it), and the DGMF step.
     if (!mapping)
     {
-      built = std::make_unique<DelaunayMapping>(dimension, current.data(), n, kinds, parallelFor);
+      built = std::make_unique<DelaunayMapping>(dimension, current.data(), n, kinds, parallelFor, 0,
+        DelaunayGraph::SideJobs(), parameters.Slip);
       mapping = built.get();
       report.GraphSeconds += mapping->GetGraphSeconds();
       report.LocationSeconds += mapping->GetLocationSeconds();

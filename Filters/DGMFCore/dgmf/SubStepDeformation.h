@@ -12,6 +12,7 @@
 #include "dgmf/ParallelFor.h"
 #include "dgmf/Progress.h"
 #include "dgmf/RigidMotion.h"
+#include "dgmf/SlipPlanes.h"
 
 #include <cstddef>
 #include <functional>
@@ -39,6 +40,9 @@ struct SubStepParameters
   /// If set, applied to the mesh after each step's deformation, before the quality guard (e.g.
   /// SlipConstraint::Apply: slip nodes back into their planes).
   std::function<void(double* deformed)> Constrain;
+  /// The slip boundaries whose nodes Constrain keeps in their planes, or null: each step's graph
+  /// locates them as the input's does (DelaunayMapping's `slip`).
+  const SlipConstraint* Slip = nullptr;
   /// Told the fraction of the motion done after each step and during the repairs; may stop the
   /// run (Aborted).
   dgmf::Progress Progress;
