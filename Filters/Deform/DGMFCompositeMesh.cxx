@@ -343,7 +343,8 @@ CompositeMesh::CompositeMesh(
   vtkSmartPointer<vtkPoints> mergedPoints;
   for (std::size_t l = 0; l < blocks.size() && !mergedPoints; ++l)
   {
-    auto* doubles = vtkDoubleArray::SafeDownCast(blocks[l]->GetPoints()->GetData());
+    vtkPoints* points = blocks[l]->GetPoints(); // null in an empty block
+    auto* doubles = points ? vtkDoubleArray::SafeDownCast(points->GetData()) : nullptr;
     if (this->Leaves[l].SameNumbering && blocks[l]->GetNumberOfPoints() == nodes && doubles &&
       doubles->GetNumberOfComponents() == 3) // plain doubles, as the merged points are
     {

@@ -30,6 +30,11 @@ constexpr std::size_t CellTypeBlock = std::size_t(1) << 18;
 
 const double* PointsAsDouble(vtkPoints* points, std::vector<double>& copy)
 {
+  if (!points)
+  {
+    copy.clear(); // a data set without points (an empty block of a composite input)
+    return copy.data();
+  }
   auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData());
   if (doubles && doubles->GetNumberOfComponents() == 3)
   {

@@ -17,6 +17,7 @@
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -321,6 +322,25 @@ TEST(Composite, MultiBlockIsDeformedAsOneMeshAndKeepsItsStructure)
   filter->SetRotationAngles(0, 0, 30);
   filter->Update();
   EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+
+  // Empty blocks without a points object (what a clip or a threshold leaves of a patch) are
+  // passed on empty; the rest deforms as before (they crashed the filter until 2026-11-30).
+  blocks->SetNumberOfBlocks(4);
+  blocks->SetBlock(2, vtkNew<vtkUnstructuredGrid>());
+  blocks->SetBlock(3, vtkNew<vtkPolyData>());
+  ASSERT_EQ(vtkPointSet::SafeDownCast(blocks->GetBlock(2))->GetPoints(), nullptr);
+  filter->SetRotationAngles(0, 0, 60);
+  filter->Update();
+  out = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(out->GetNumberOfBlocks(), 4u);
+  CheckBlock(lower, vtkUnstructuredGrid::SafeDownCast(out->GetBlock(0)), reference);
+  CheckBlock(upper, vtkUnstructuredGrid::SafeDownCast(out->GetBlock(1)), reference);
+  for (unsigned int b : { 2u, 3u })
+  {
+    ASSERT_NE(out->GetBlock(b), nullptr);
+    EXPECT_EQ(vtkPointSet::SafeDownCast(out->GetBlock(b))->GetNumberOfPoints(), 0);
+  }
 }
 
 TEST(Composite, PartitionedDataSetCollection)
