@@ -8,6 +8,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataAssembly.h"
 #include "vtkDataAssemblyUtilities.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
@@ -52,6 +53,55 @@ enum Rank : int
   StaticRank = 2,
   MovingRank = 3
 };
+
+/**
+ * True when every cell of `leaf` lies in one of the two planes of the one-cell-thick mesh
+ * `layers` (a `front`, a `back`, or one `frontAndBack` patch holding both), or, for a leaf without
+ * cells, when all its points lie in one of them. A side patch (a wall between the planes) has
+ * faces across both.
+ */
+bool InLayerPlanes(const CompositeMesh& mesh, const CompositeMesh::Leaf& leaf, const double* xyz,
+  const dgmf::ExtrudedLayers& layers)
+{
+  const auto along = [&](vtkIdType node)
+  { return xyz[3 * static_cast<std::size_t>(node) + layers.Axis]; };
+  const auto onAPlane = [&](double x) { return x == layers.Low || x == layers.High; };
+  if (leaf.Cells == 0)
+  {
+    for (const double plane : { layers.Low, layers.High })
+    {
+      bool all = true;
+      for (vtkIdType point = 0; point < leaf.NumberOfPoints && all; ++point)
+      {
+        all = along(leaf.Node(point)) == plane;
+      }
+      if (all)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  vtkUnstructuredGrid* grid = leaf.InPatches ? mesh.GetPatches() : mesh.GetMergedMesh();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = leaf.FirstCell; c < leaf.FirstCell + leaf.Cells; ++c)
+  {
+    grid->GetCellPoints(c, ids);
+    const double first = ids->GetNumberOfIds() > 0 ? along(ids->GetId(0)) : layers.Low;
+    if (!onAPlane(first))
+    {
+      return false;
+    }
+    for (vtkIdType k = 1; k < ids->GetNumberOfIds(); ++k)
+    {
+      if (along(ids->GetId(k)) != first)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
 } // namespace
 
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
@@ -194,18 +244,7 @@ NodeRoles AssignRoles(
     {
       continue;
     }
-    const auto onPlane = [&](double plane)
-    {
-      for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
-      {
-        if (xyz[3 * static_cast<std::size_t>(leaves[l].Node(point)) + layers.Axis] != plane)
-        {
-          return false;
-        }
-      }
-      return true;
-    };
-    const bool inPlane = layers.Found() && (onPlane(layers.Low) || onPlane(layers.High));
+    const bool inPlane = layers.Found() && InLayerPlanes(mesh, leaves[l], xyz, layers);
     if (!inPlane)
     {
       mark(l, StaticRank, 0, -1);

@@ -90,9 +90,11 @@ void Name(vtkMultiBlockDataSet* blocks, unsigned int index, const std::string& n
  * The circle mesh as a CFD reader gives it: block "internalMesh" (the triangles, without the
  * marker) and one polydata block per patch, its points its own (as the OpenFOAM reader's).
  * `layer` > 0: the mesh extruded by `layer` along z into one layer of wedges, the patches quads,
- * with the "front" and "back" triangles as two more patches.
+ * with the "front" and "back" triangles as two more patches (`frontAndBack`: as one patch, as
+ * OpenFOAM cases have them).
  */
-vtkSmartPointer<vtkMultiBlockDataSet> NamedBlocks(vtkUnstructuredGrid* circle, double layer = 0.0)
+vtkSmartPointer<vtkMultiBlockDataSet> NamedBlocks(
+  vtkUnstructuredGrid* circle, double layer = 0.0, bool frontAndBack = false)
 {
   const vtkIdType n = circle->GetNumberOfPoints();
   auto volume = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -140,8 +142,10 @@ vtkSmartPointer<vtkMultiBlockDataSet> NamedBlocks(vtkUnstructuredGrid* circle, d
     for (vtkIdType c = 0; c < circle->GetNumberOfCells(); ++c)
     {
       circle->GetCellPoints(c, ids);
-      patches["front"].push_back({ ids->GetId(0), ids->GetId(1), ids->GetId(2) });
-      patches["back"].push_back({ ids->GetId(0) + n, ids->GetId(1) + n, ids->GetId(2) + n });
+      patches[frontAndBack ? "frontAndBack" : "front"].push_back(
+        { ids->GetId(0), ids->GetId(1), ids->GetId(2) });
+      patches[frontAndBack ? "frontAndBack" : "back"].push_back(
+        { ids->GetId(0) + n, ids->GetId(1) + n, ids->GetId(2) + n });
     }
   }
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
@@ -304,11 +308,14 @@ TEST(BoundaryNames, AOneCellThickMeshMovesAsItsLayerBothLayersAlike)
   flat->SetRotationAngles(0, 0, 45);
   flat->Update();
 
-  auto blocks = NamedBlocks(circle, 0.1);
-  for (int mode : { vtkDGMFDeformFilter::DETECT, vtkDGMFDeformFilter::ON })
+  // The planes as two patches, or as one (frontAndBack: until 2026-11-30 it was taken for a
+  // static boundary, which froze the interior and inverted cells).
+  for (const auto& [mode, frontAndBack] :
+    { std::pair{ vtkDGMFDeformFilter::DETECT, false }, std::pair{ vtkDGMFDeformFilter::ON, false },
+      std::pair{ vtkDGMFDeformFilter::DETECT, true }, std::pair{ vtkDGMFDeformFilter::ON, true } })
   {
     vtkNew<vtkDGMFDeformFilter> layered;
-    layered->SetInputData(blocks);
+    layered->SetInputData(NamedBlocks(circle, 0.1, frontAndBack));
     layered->AddMovingBoundary("circle"); // front and back are not boundaries: not static
     layered->SetRotationAngles(0, 0, 45);
     layered->SetOneCellThickMode(mode);
@@ -334,6 +341,7 @@ TEST(BoundaryNames, AOneCellThickMeshMovesAsItsLayerBothLayersAlike)
       0.0);
   }
   // As a 3D mesh (OFF), every front and back node is a boundary node: the layers do not follow.
+  auto blocks = NamedBlocks(circle, 0.1);
   vtkNew<vtkDGMFDeformFilter> solid;
   solid->SetInputData(blocks);
   solid->AddMovingBoundary("circle");
