@@ -134,7 +134,7 @@ NodeRoles AssignRoles(
 {
   // The block hierarchy of a multiblock (selectors such as "/Root/boundary/wing"); a partitioned
   // data set collection (ParaView's IOSS reader) has none that VTK 9.2 can generate: its blocks
-  // are found by their names.
+  // are found by their names, or by the last name of a selector.
   vtkNew<vtkDataAssembly> hierarchy;
   const bool hasHierarchy = !vtkPartitionedDataSetCollection::SafeDownCast(mesh.GetInput()) &&
     vtkDataAssemblyUtilities::GenerateHierarchy(mesh.GetInput(), hierarchy);
@@ -164,10 +164,16 @@ NodeRoles AssignRoles(
     }
     else
     {
-      const std::string name = NameOf(entry);
+      // A selector of ParaView's block tree for a partitioned data set collection
+      // ("/Root/wing", or "/Root/boundary/wing" from its assembly) names the block last, made a
+      // valid node name (vtkDataAssembly::MakeValidNodeName).
+      std::string name = NameOf(entry);
+      const bool selector = !name.empty() && name[0] == '/';
+      name = selector ? name.substr(name.rfind('/') + 1) : name;
       for (std::size_t l = 0; l < leaves.size(); ++l)
       {
-        if (leaves[l].Name == name)
+        if (leaves[l].Name == name ||
+          (selector && vtkDataAssembly::MakeValidNodeName(leaves[l].Name.c_str()) == name))
         {
           found.push_back(l);
         }

@@ -21,6 +21,8 @@
 #include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -240,6 +242,38 @@ TEST(BoundaryNames, NamedPatchesGiveTheMarkersResultBitForBit)
   EXPECT_EQ(std::memcmp(VolumeOf(byPath->GetOutputDataObject(0))->GetPoint(5), volume->GetPoint(5),
               3 * sizeof(double)),
     0);
+
+  // The same blocks as a partitioned data set collection (ParaView's IOSS reader), one named
+  // partitioned data set per block: ParaView's block tree offers "/Root/circle" (refused until
+  // 2026-11-30), and the plain name works too.
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+  for (unsigned int b = 0; b <= boundary->GetNumberOfBlocks(); ++b)
+  {
+    vtkNew<vtkPartitionedDataSet> partitioned;
+    partitioned->SetPartition(0, b == 0 ? blocks->GetBlock(0) : boundary->GetBlock(b - 1));
+    collection->SetPartitionedDataSet(b, partitioned);
+    collection->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(),
+      b == 0 ? "internalMesh" : boundary->GetMetaData(b - 1)->Get(vtkCompositeDataSet::NAME()));
+  }
+  for (const char* entry : { "/Root/circle", "circle" })
+  {
+    vtkNew<vtkDGMFDeformFilter> partitions;
+    partitions->SetInputData(collection);
+    partitions->AddMovingBoundary(entry);
+    partitions->SetRotationAngles(0, 0, 60);
+    partitions->Update();
+    auto* out = vtkPartitionedDataSetCollection::SafeDownCast(partitions->GetOutputDataObject(0));
+    ASSERT_NE(out, nullptr) << entry;
+    ASSERT_EQ(out->GetNumberOfPartitionedDataSets(), collection->GetNumberOfPartitionedDataSets());
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(out->GetPartition(0, 0));
+    ASSERT_NE(grid, nullptr) << entry;
+    for (vtkIdType i = 0; i < CirclePoints; ++i)
+    {
+      ASSERT_EQ(std::memcmp(grid->GetPoint(i), reference->GetPoint(i), 3 * sizeof(double)), 0)
+        << entry << ", node " << i;
+    }
+  }
 }
 
 TEST(BoundaryNames, AnUnknownNameListsTheBlocksAndANameNeedsBlocks)
