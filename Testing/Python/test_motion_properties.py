@@ -67,6 +67,16 @@ if field.GetArray("MotionTime").GetTuple1(0) != 0.5:
 still, _ = coordinates(deformed(Translation=[0.2, 0, 0], RotationAngle=15))
 if abs(halfway - still).max() > 1e-12:
     sys.exit("FAILED: the table's motion at t = 0.5 is not half of it")
+# The table removed, the filter goes back to its properties' motion (none here) and reports no
+# times of its own (until 2026-11-30 the table stayed connected and kept moving the mesh).
+moved.Trajectory = None
+moved.UpdatePipelineInformation()
+if list(moved.TimestepValues):
+    sys.exit("FAILED: the removed table's times are still reported: %s" % list(moved.TimestepValues))
+unmoved, field = coordinates(moved, 1.0)
+original, _ = coordinates(deformed())
+if abs(unmoved - original).max() != 0.0 or field.GetArray("MotionTime") is not None:
+    sys.exit("FAILED: the removed table still moves the mesh")
 
 # The series in one Exodus file, through ParaView's own Exodus writer with all time steps (Save
 # Data of a .exo picks the DGMF mesh-file writer, which writes into a copy of a source file).
