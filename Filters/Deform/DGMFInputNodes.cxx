@@ -178,7 +178,8 @@ void InputGatherer::Gather(
   {
     throw std::invalid_argument(
       "The mesh has no 3D cell but its points do not all have the same z: 2D meshes must lie in a "
-      "plane z = constant.");
+      "plane z = constant (up to 1e-6 of their extent in x and y). Turn a mesh in another plane "
+      "into one (ParaView's Transform filter).");
   }
   if (nodes.Dimension == 3 && options.OneCellThick != OneCellThickOff && !options.Distributed)
   {

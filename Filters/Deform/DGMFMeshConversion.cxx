@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace dgmf_vtk
 {
@@ -257,19 +258,28 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
       return 3;
     }
   }
-  // Non-finite coordinates are left to the core's check (which names them).
-  const double* z0 = nullptr;
+  // Non-finite coordinates are left to the core's check (which names them). The z of a plane
+  // z = constant may carry round-off (a 2D mesh turned into it by a transform, single-precision
+  // points): a spread of PlanarZTolerance of the x-y extent is allowed.
+  double low[3], high[3];
+  std::fill(low, low + 3, std::numeric_limits<double>::infinity());
+  std::fill(high, high + 3, -std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < n; ++i)
   {
-    const double* z = xyz + 3 * i + 2;
-    if (std::isfinite(*z))
+    for (int c = 0; c < 3; ++c)
     {
-      z0 = z0 ? z0 : z;
-      if (*z != *z0)
+      const double x = xyz[3 * i + static_cast<std::size_t>(c)];
+      if (std::isfinite(x))
       {
-        return -1;
+        low[c] = std::min(low[c], x);
+        high[c] = std::max(high[c], x);
       }
     }
+  }
+  if (high[2] > low[2] &&
+    high[2] - low[2] > PlanarZTolerance * std::hypot(high[0] - low[0], high[1] - low[1]))
+  {
+    return -1;
   }
   return 2;
 }

@@ -69,7 +69,12 @@ std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<
  */
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches = nullptr);
 
-/// 2 when the mesh is planar (no 3D cell, all z equal), 3 otherwise; -1 for 2D cells off a z plane.
+/// How far apart the z of a 2D mesh's points may be, relative to its extent in x and y: the
+/// round-off of a transform into a plane z = constant, or of single-precision points.
+constexpr double PlanarZTolerance = 1e-6;
+
+/// 2 when the mesh is planar (no 3D cell, all z equal up to PlanarZTolerance), 3 otherwise; -1 for
+/// 2D cells off a z plane.
 int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n);
 
 /// The mesh's hint stride for the node location (dgmf::FindHintStride), from up to 4,096 cells

@@ -37,7 +37,8 @@
  * The output has the input's type (vtkPassInputTypeAlgorithm); GetOutput() returns it for
  * unstructured-grid input, GetOutputDataObject(0) for any.
  *
- * A mesh is 2D when it has no 3D cell and all its nodes have the same z; the graph is then 2D and
+ * A mesh is 2D when it has no 3D cell and all its nodes have the same z (up to 1e-6 of its x-y
+ * extent: round-off; each node keeps its own z); the graph is then 2D and
  * the mesh can only rotate about z. Otherwise the graph is 3D.
  *
  * Output: the deformed grid, with every input point, cell and field array passed through, plus

@@ -202,6 +202,28 @@ TEST(BadInput, PlanarMeshOffZeroAndTiltedMesh)
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
     ASSERT_EQ(out->GetPoint(i)[2], 3.5);
 
+  // z with round-off (a mesh turned into the plane by a transform: 1e-15; single precision:
+  // 1e-7): still 2D, the same x and y bit for bit, each z kept (refused until 2026-11-30).
+  auto rounded = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  rounded->DeepCopy(mesh);
+  for (vtkIdType i = 0; i < rounded->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    rounded->GetPoint(i, p);
+    p[2] = 3.5 + (i % 3 - 1) * 4e-7;
+    rounded->GetPoints()->SetPoint(i, p);
+  }
+  FilterRun roundOff;
+  roundOff.Filter->SetRotationAngles(0, 0, 60);
+  vtkUnstructuredGrid* nearly = roundOff.Execute(rounded);
+  ASSERT_EQ(nearly->GetNumberOfPoints(), 822);
+  for (vtkIdType i = 0; i < nearly->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_EQ(nearly->GetPoint(i)[0], out->GetPoint(i)[0]) << "point " << i;
+    ASSERT_EQ(nearly->GetPoint(i)[1], out->GetPoint(i)[1]) << "point " << i;
+    ASSERT_EQ(nearly->GetPoint(i)[2], rounded->GetPoint(i)[2]) << "point " << i;
+  }
+
   // Tilted plane: a clear error.
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
