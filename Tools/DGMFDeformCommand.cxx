@@ -78,8 +78,10 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
 {
   const double seconds = times.Deform;
   vtkDataObject* deformed = filter->GetOutputDataObject(0);
-  std::cout << "dgmf-deform: " << deformed->GetNumberOfElements(vtkDataObject::POINT) << " points, "
-            << deformed->GetNumberOfElements(vtkDataObject::CELL) << " cells, " << seconds << " s";
+  // The mesh deformed: for a composite input (a solver's file), its merged volume, not the sum
+  // of its blocks (which counted the boundary patches' points and faces on top).
+  std::cout << "dgmf-deform: " << filter->GetLastNumberOfNodes() << " points, "
+            << filter->GetLastNumberOfCells() << " cells, " << seconds << " s";
   if (filter->GetComputeQuality() || filter->GetComputeNonOrthogonality())
   {
     std::cout << " (quality " << filter->GetLastQualitySeconds() << " s)";

@@ -284,6 +284,35 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
   return 2;
 }
 
+vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)
+{
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  const auto dimensionOf = [](int type)
+  {
+    return type == VTK_EMPTY_CELL ? -1
+                                  : vtkCellTypes::GetDimension(static_cast<unsigned char>(type));
+  };
+  int largest = -1;
+  bool mixed = false;
+  vtkUnsignedCharArray* types = mesh->GetDistinctCellTypesArray();
+  for (vtkIdType k = 0; types && k < types->GetNumberOfTuples(); ++k)
+  {
+    const int dimension = dimensionOf(types->GetValue(k));
+    mixed = mixed || (largest >= 0 && dimension != largest);
+    largest = std::max(largest, dimension);
+  }
+  if (!mixed)
+  {
+    return cells;
+  }
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    count += dimensionOf(mesh->GetCellType(c)) == largest ? 1 : 0;
+  }
+  return count;
+}
+
 std::size_t HintStrideOf(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches)
 {
   const vtkIdType meshCells = mesh->GetNumberOfCells();

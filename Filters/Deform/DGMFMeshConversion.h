@@ -69,6 +69,10 @@ std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<
  */
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches = nullptr);
 
+/// The cells of `mesh` of its largest cell dimension (its volume cells, without the boundary
+/// faces or edges a merged composite input may hold).
+vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh);
+
 /// How far apart the z of a 2D mesh's points may be, relative to its extent in x and y: the
 /// round-off of a transform into a plane z = constant, or of single-precision points.
 constexpr double PlanarZTolerance = 1e-6;

@@ -423,6 +423,8 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds =
     this->LastQualitySeconds = 0.0;
+  this->LastNumberOfNodes = input->GetNumberOfPoints();
+  this->LastNumberOfCells = dgmf_vtk::CountCellsOfLargestDimension(input);
   dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   const bool distributed = dgmf_vtk::IsDistributed(this->Controller);
 

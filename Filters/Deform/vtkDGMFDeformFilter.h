@@ -546,6 +546,16 @@ public:
   double GetLastQualitySeconds() const { return this->LastQualitySeconds; }
   ///@}
 
+  ///@{
+  /**
+   * The mesh the last execution deformed: its nodes and cells. For a composite input, the merged
+   * mesh: points shared by blocks counted once, and the volume cells (the output's blocks count
+   * every block's points and cells). 0 before an execution.
+   */
+  vtkIdType GetLastNumberOfNodes() const { return this->LastNumberOfNodes; }
+  vtkIdType GetLastNumberOfCells() const { return this->LastNumberOfCells; }
+  ///@}
+
   /// Memory kept between executions (graph, node locations, r), in bytes.
   std::size_t GetCacheMemorySize() const;
 
@@ -613,6 +623,8 @@ private:
   double LastLocationSeconds = 0.0;
   double LastDeformationSeconds = 0.0;
   double LastQualitySeconds = 0.0;
+  vtkIdType LastNumberOfNodes = 0;
+  vtkIdType LastNumberOfCells = 0;
 };
 
 #endif
