@@ -139,6 +139,22 @@ NodeRoles AssignRoles(
   const bool hasHierarchy = !vtkPartitionedDataSetCollection::SafeDownCast(mesh.GetInput()) &&
     vtkDataAssemblyUtilities::GenerateHierarchy(mesh.GetInput(), hierarchy);
   const std::vector<CompositeMesh::Leaf>& leaves = mesh.GetLeaves();
+  const std::size_t n = static_cast<std::size_t>(mesh.GetMergedMesh()->GetNumberOfPoints());
+  // An entry named twice (twice as a body, or in two roles) is a mistake: which was meant?
+  std::map<std::string, std::string> roleOf;
+  for (const auto& [entries, role] : { std::pair{ &selection.Moving, "moving" },
+         std::pair{ &selection.Static, "static" }, std::pair{ &selection.Slip, "slip" } })
+  {
+    for (const std::string& entry : *entries)
+    {
+      const auto [named, first] = roleOf.emplace(NameOf(entry), role);
+      if (!first)
+      {
+        throw std::invalid_argument("The boundary '" + entry + "' is named twice (as " +
+          named->second + " and as " + role + "): name each boundary once.");
+      }
+    }
+  }
   std::map<unsigned int, std::size_t> leafOfFlatIndex;
   int dimension = 0;
   for (std::size_t l = 0; l < leaves.size(); ++l)
@@ -184,10 +200,19 @@ NodeRoles AssignRoles(
       throw std::invalid_argument("No block of the input is named '" + entry +
         "'. The input's blocks are: " + ListBlockNames(mesh) + ".");
     }
+    for (std::size_t l : found)
+    {
+      if (leaves[l].CellDimension == dimension &&
+        static_cast<std::size_t>(leaves[l].NumberOfPoints) == n)
+      {
+        throw std::invalid_argument("'" + entry +
+          "' is the whole mesh (its volume block), not a boundary: name the boundary patches "
+          "that move, stay or slide. The input's blocks are: " +
+          ListBlockNames(mesh) + ".");
+      }
+    }
     return found;
   };
-
-  const std::size_t n = static_cast<std::size_t>(mesh.GetMergedMesh()->GetNumberOfPoints());
   // Per node: its role's rank, and only where there are several bodies or slip entries, its body
   // and its slip entry (the arrays are as large as the merged mesh: not made for nothing).
   // Large arrays on huge pages (a 4 KiB page fault is costly on virtual machines: speed.md).

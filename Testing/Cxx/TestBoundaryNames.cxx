@@ -36,6 +36,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -288,6 +289,29 @@ TEST(BoundaryNames, AnUnknownNameListsTheBlocksAndANameNeedsBlocks)
     vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0))->GetNumberOfBlocks(), 0u);
   EXPECT_TRUE(errors.Contains("No block of the input is named 'wing'"));
   EXPECT_TRUE(errors.Contains("internalMesh, bottom, circle, left, right, top"));
+
+  // The volume block is not a boundary (moving, it turned the whole mesh; static, it froze it),
+  // and a boundary named twice is ambiguous: both were accepted until 2026-11-30.
+  for (const auto& [moving, other, expected] :
+    { std::tuple{ "internalMesh", "", "'internalMesh' is the whole mesh (its volume block)" },
+      std::tuple{ "circle", "internalMesh", "'internalMesh' is the whole mesh" },
+      std::tuple{
+        "circle", "circle", "The boundary 'circle' is named twice (as moving and as static)" } })
+  {
+    vtkNew<vtkDGMFDeformFilter> named;
+    Errors namedErrors(named);
+    named->SetInputData(NamedBlocks(circle));
+    named->AddMovingBoundary(moving);
+    if (*other)
+    {
+      named->AddStaticBoundary(other);
+    }
+    named->SetRotationAngles(0, 0, 10);
+    named->Update();
+    EXPECT_EQ(
+      vtkMultiBlockDataSet::SafeDownCast(named->GetOutputDataObject(0))->GetNumberOfBlocks(), 0u);
+    EXPECT_TRUE(namedErrors.Contains(expected)) << expected;
+  }
 
   vtkNew<vtkDGMFDeformFilter> grid;
   Errors gridErrors(grid);
