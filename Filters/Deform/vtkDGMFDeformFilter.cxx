@@ -444,8 +444,13 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     options.Dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
   }
   dgmf_vtk::InputNodes nodes;
-  const std::string error = !failure.empty()
-    ? failure
+  const std::string settingsFailure = this->FailOnInvertedCells && !this->ComputeQuality
+    ? "Fail On Inverted Cells needs Compute Quality (the quality metric counts the inverted "
+      "cells): turn Compute Quality on."
+    : "";
+  const std::string error = !failure.empty() ? failure
+    : !settingsFailure.empty()
+    ? settingsFailure
     : dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
         this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
@@ -474,6 +479,12 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   // 3. Deform through the core's method interface: the method says what it needs.
   const auto method =
     dgmf::CreateMethod(dgmf_vtk::MethodOf(this), dgmf_vtk::MethodParametersOf(this));
+  if (this->Method != DGMF && (this->SubSteps != 1 || this->RepairThreshold > 0.0))
+  {
+    vtkWarningMacro(<< "Sub Steps and Repair Threshold are DGMF's (the quality guard and the "
+                       "sub-steps need its damping field): ignored by "
+                    << dgmf::GetMethodInfo(dgmf_vtk::MethodOf(this)).Name << ".");
+  }
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
   const Internals& internal = *this->Internal;

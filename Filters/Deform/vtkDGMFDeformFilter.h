@@ -448,7 +448,8 @@ public:
   ///@{
   /**
    * Fail (error message, empty output) when the deformed mesh has an inverted cell, instead of
-   * producing it with the cells flagged in the Inverted array. Needs ComputeQuality. Default: off.
+   * producing it with the cells flagged in the Inverted array. Needs ComputeQuality (on without it
+   * is an error). Default: off.
    */
   vtkSetMacro(FailOnInvertedCells, bool);
   vtkGetMacro(FailOnInvertedCells, bool);

@@ -374,6 +374,25 @@ TEST(BadInput, InvertingMotionIsFlaggedOrRefused)
   refuse.Filter->FailOnInvertedCellsOn();
   EXPECT_EQ(refuse.Execute(mesh)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(FilterRun::Has(refuse.Errors, "inverts"));
+
+  // Without the quality metric nothing counts the inverted cells: the combination is refused
+  // (until 2026-11-30 it produced the inverted mesh without a word).
+  FilterRun blind;
+  blind.Filter->SetMethodToDGM();
+  blind.Filter->SetRotationAngles(0, 0, 90);
+  blind.Filter->FailOnInvertedCellsOn();
+  blind.Filter->ComputeQualityOff();
+  EXPECT_EQ(blind.Execute(mesh)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(FilterRun::Has(blind.Errors, "Fail On Inverted Cells needs Compute Quality"));
+
+  // Sub-steps and the quality guard are DGMF's: another method says it ignores them.
+  FilterRun ignored;
+  ignored.Filter->SetMethodToDGM();
+  ignored.Filter->SetRotationAngles(0, 0, 30);
+  ignored.Filter->SetRepairThreshold(0.3);
+  EXPECT_EQ(ignored.Execute(mesh)->GetNumberOfPoints(), 822);
+  EXPECT_TRUE(FilterRun::Has(ignored.Warnings, "Sub Steps and Repair Threshold are DGMF's"));
+  EXPECT_TRUE(FilterRun::Has(ignored.Warnings, "ignored by DGM"));
 }
 
 TEST(DataSafety, PropertyChangesInAnyOrderGiveTheFreshResult)
