@@ -298,6 +298,15 @@ TEST(ProblemValidation, MarkerValuesBecomeKindsOrANamedError)
       dgmf::MarkerToNodeKinds(std::vector<double>{ 0, -1 }, kinds.data());
     },
     "has the value -1 at point 1");
+  // A value next to an allowed one is shown as it is, not rounded to it.
+  ExpectRejected(
+    [&]() {
+      dgmf::MarkerToNodeKinds(std::vector<double>{ 0, 2.0000001 }, kinds.data());
+    },
+    "has the value 2.0000001 at point 1");
+  ExpectRejected([&]()
+    { dgmf::MarkerToNodeKinds(std::vector<double>{ 1.0 + 0x1p-45 }, kinds.data()); },
+    "has the value 1.0000000000000284 at point 0");
 }
 
 TEST(ProblemValidation, BodyIdsSetTheKindsOrGetANamedError)

@@ -6,15 +6,26 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace dgmf
 {
 namespace
 {
+/// `value` as short as it reads back exactly (2.0000001 is not shown as 2).
 std::string Number(double value)
 {
   std::ostringstream text;
-  text << value;
+  for (int digits = 6; digits <= 17; ++digits)
+  {
+    text.str("");
+    text.precision(digits);
+    text << value;
+    if (!std::isfinite(value) || std::stod(text.str()) == value)
+    {
+      break;
+    }
+  }
   return text.str();
 }
 } // namespace
