@@ -370,14 +370,15 @@ public:
   /**
    * RBF greedy centre selection (Rendall and Allen 2009): centres are added until the error at
    * every boundary node is below RBFGreedyTolerance times the largest boundary displacement, or
-   * RBFGreedyMaximumPoints centres are used. Defaults: off, 1e-3, 2000.
+   * RBFGreedyMaximumPoints centres are used (at least the dimension + 1: 3 in 2D, 4 in 3D; fewer
+   * is an error). Defaults: off, 1e-3, 2000.
    */
   vtkSetMacro(RBFGreedy, bool);
   vtkGetMacro(RBFGreedy, bool);
   vtkBooleanMacro(RBFGreedy, bool);
   vtkSetClampMacro(RBFGreedyTolerance, double, 0.0, 1.0);
   vtkGetMacro(RBFGreedyTolerance, double);
-  vtkSetClampMacro(RBFGreedyMaximumPoints, int, 1, VTK_INT_MAX);
+  vtkSetClampMacro(RBFGreedyMaximumPoints, int, 3, VTK_INT_MAX);
   vtkGetMacro(RBFGreedyMaximumPoints, int);
   ///@}
 
