@@ -185,12 +185,15 @@ std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Tra
   {
     return trajectory->GetTimes();
   }
+  // Increasing and distinct, as a pipeline's times must be: a range given end first is taken
+  // from its low end, and an empty range (or one step) is one time.
   const double* range = filter->GetTimeRange();
-  const int count = filter->GetNumberOfTimeSteps();
+  const double low = std::min(range[0], range[1]), high = std::max(range[0], range[1]);
+  const int count = low < high ? filter->GetNumberOfTimeSteps() : 1;
   std::vector<double> steps;
   for (int k = 0; k < count; ++k)
   {
-    steps.push_back(count == 1 ? range[0] : range[0] + (range[1] - range[0]) * k / (count - 1));
+    steps.push_back(count == 1 ? low : low + (high - low) * k / (count - 1));
   }
   return steps;
 }

@@ -78,6 +78,15 @@ original, _ = coordinates(deformed())
 if abs(unmoved - original).max() != 0.0 or field.GetArray("MotionTime") is not None:
     sys.exit("FAILED: the removed table still moves the mesh")
 
+# A law's times are increasing and distinct whatever the Time Range: given end first, it is taken
+# from its low end; empty, it is one time (until 2026-11-30: [1, 0.5, 0] and [0.5, 0.5, 0.5]).
+for time_range, expected in (([1.0, 0.0], [0.0, 0.5, 1.0]), ([0.5, 0.5], [0.5])):
+    law = deformed(RotationLaw="Harmonic", RotationLawParameters=[0, 20, 1, 0],
+                   TimeRange=time_range, NumberOfTimeSteps=3)
+    law.UpdatePipelineInformation()
+    if list(law.TimestepValues) != expected:
+        sys.exit("FAILED: Time Range %s gives the times %s" % (time_range, list(law.TimestepValues)))
+
 # The series in one Exodus file, through ParaView's own Exodus writer with all time steps (Save
 # Data of a .exo picks the DGMF mesh-file writer, which writes into a copy of a source file).
 pitching = deformed(RotationLaw="Harmonic", RotationLawParameters=[0, 20, 1, 0], NumberOfTimeSteps=5)
