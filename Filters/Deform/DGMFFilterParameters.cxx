@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -54,6 +55,13 @@ bool BodyMotionTable::Set(
 {
   if (!(bodyId >= 1.0) || bodyId != std::floor(bodyId) || bodyId > 1e6)
   {
+    // Kept until the rows are cleared: every execution fails, instead of moving the mesh without
+    // the row.
+    std::ostringstream message;
+    message << "Body Motions has a row for the body id " << bodyId
+            << ": body ids are 1, 2, ... (the body-id array, or the moving boundaries in the "
+               "order named).";
+    this->BadRow = message.str();
     return false;
   }
   dgmf::RigidMotion& motion = this->Motions[static_cast<int>(bodyId)];
@@ -65,8 +73,9 @@ bool BodyMotionTable::Set(
 
 bool BodyMotionTable::Clear()
 {
-  const bool any = !this->Motions.empty();
+  const bool any = !this->Motions.empty() || !this->BadRow.empty();
   this->Motions.clear();
+  this->BadRow.clear();
   return any;
 }
 
@@ -75,6 +84,17 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
   double t) const
 {
   const std::int32_t bodies = std::max<std::int32_t>(nodes.NumberOfBodies, 1);
+  if (!this->BadRow.empty())
+  {
+    throw std::invalid_argument(this->BadRow);
+  }
+  if (!this->Motions.empty() && this->Motions.rbegin()->first > bodies)
+  {
+    throw std::invalid_argument("Body Motions moves body " +
+      std::to_string(this->Motions.rbegin()->first) + ", but the mesh has " +
+      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
+      " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
+  }
   if (trajectory && trajectory->GetLargestBody() > bodies)
   {
     // A row for a body the mesh does not have would otherwise be ignored, and the mesh not moved.

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 class vtkDGMFDeformFilter;
@@ -30,10 +31,11 @@ dgmf::MethodParameters MethodParametersOf(vtkDGMFDeformFilter* filter);
 class BodyMotionTable
 {
 public:
-  /// Sets body `bodyId`'s motion; false (nothing set) when the id is not 1, 2, ... up to 1e6.
+  /// Sets body `bodyId`'s motion; false (nothing set) when the id is not 1, 2, ... up to 1e6:
+  /// For() then fails until Clear().
   bool Set(double bodyId, const double translation[3], const double center[3],
     const double anglesDegrees[3]);
-  /// Forgets every motion; false when there was none.
+  /// Forgets every motion (and a bad row); false when there was none.
   bool Clear();
   /// Number of bodies with a motion.
   std::size_t Size() const { return this->Motions.size(); }
@@ -41,13 +43,16 @@ public:
    * The rigid motion of bodies 1..max(bodies, 1) of `nodes` at time `t`: the trajectory's (if
    * given and it has rows for the body), else the one set for the body, else `properties` (the
    * filter's motion properties at `t`); with RotationCenterMode BODY_CENTROID, the trajectory's and
-   * the properties' motions turn about the centroid of the body's moving nodes.
+   * the properties' motions turn about the centroid of the body's moving nodes. Throws
+   * std::invalid_argument after a row set with a bad body id, and for a row (or a trajectory's)
+   * for a body the mesh does not have.
    */
   std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, const InputNodes& nodes,
     const dgmf::RigidMotion& properties, const dgmf::Trajectory* trajectory, double t) const;
 
 private:
   std::map<int, dgmf::RigidMotion> Motions;
+  std::string BadRow; ///< the error of a row set with a bad body id, or ""
 };
 
 } // namespace dgmf_vtk

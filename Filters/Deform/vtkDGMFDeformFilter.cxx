@@ -101,8 +101,8 @@ void vtkDGMFDeformFilter::SetBodyMotion(double bodyId, double tx, double ty, dou
                angles[3] = { ax, ay, az };
   if (!this->Internal->BodyMotions.Set(bodyId, translation, center, angles))
   {
-    vtkErrorMacro("SetBodyMotion: the body id must be 1, 2, ... (got " << bodyId << ").");
-    return;
+    vtkErrorMacro("SetBodyMotion: the body id must be 1, 2, ... (got "
+      << bodyId << "); the filter fails until RemoveAllBodyMotions().");
   }
   this->Modified();
 }

@@ -1,6 +1,7 @@
 // Rigid motions extracted from displacements, and several moving bodies, through the filter.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ErrorMessages.h"
 #include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCellData.h"
@@ -186,4 +187,31 @@ TEST(Bodies, BadBodyIdsGetAClearError)
   filter->SetBodyIdArrayName("BodyId");
   filter->Update();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(Bodies, BodyMotionRowsForBodiesTheMeshLacksAreErrors)
+{
+  // Until 2026-11-30 a row for a body the mesh does not have was ignored, and one with a bad id
+  // was dropped after a message at set time: either way the mesh came out unmoved.
+  auto mesh = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  dgmf_test::ErrorMessages errors(filter);
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetBodyIdArrayName("BodyId");
+  filter->SetBodyMotion(3, 0, 0, 0, 0, 0, 0, 0, 0, 10);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.Contains("Body Motions moves body 3, but the mesh has 2 moving bodies"));
+
+  filter->RemoveAllBodyMotions();
+  filter->SetBodyMotion(1.5, 0, 0, 0, 0, 0, 0, 0, 0, 10);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.Contains("Body Motions has a row for the body id 1.5"));
+
+  filter->RemoveAllBodyMotions(); // the bad row is gone with the others
+  filter->SetBodyMotion(1, 0, 0, 0, -2.5, 0, 0, 0, 0, 10);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 1118);
 }
