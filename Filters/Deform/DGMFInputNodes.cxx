@@ -9,14 +9,18 @@
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellTypes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -30,7 +34,35 @@ namespace dgmf_vtk
 {
 namespace
 {
-std::string SelectedArrayName(vtkAlgorithm* algorithm, int index)
+/// True when `input` (a data set, or a leaf of a composite one) has the point array `name` with
+/// `components` components.
+bool HasPointArray(vtkDataObject* input, const char* name, int components)
+{
+  const auto has = [&](vtkDataObject* object)
+  {
+    auto* set = vtkDataSet::SafeDownCast(object);
+    vtkDataArray* array = set ? set->GetPointData()->GetArray(name) : nullptr;
+    return array && array->GetNumberOfComponents() == components;
+  };
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+    for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+    {
+      if (has(iterator->GetCurrentDataObject()))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  return input && has(input);
+}
+
+/// The array selected at `index` ("" for None); `defaultName` when none was ever selected (C++
+/// without SetInputArrayToProcess) and `input` has a point array of that name with `components`.
+std::string SelectedArrayName(vtkAlgorithm* algorithm, int index, vtkDataObject* input = nullptr,
+  const char* defaultName = nullptr, int components = 0)
 {
   vtkInformation* info = algorithm->GetInputArrayInformation(index);
   if (info && info->Has(vtkDataObject::FIELD_NAME()))
@@ -39,7 +71,7 @@ std::string SelectedArrayName(vtkAlgorithm* algorithm, int index)
     const std::string selected = name ? name : "";
     return selected == "None" ? std::string() : selected;
   }
-  return "";
+  return defaultName && HasPointArray(input, defaultName, components) ? defaultName : "";
 }
 
 /// The point array `name` of `mesh` with `components` components (what it is, in `what`).
@@ -128,11 +160,12 @@ void PatchesKey::Set(vtkUnstructuredGrid* patches)
   }
 }
 
-SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm)
+SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm, vtkDataObject* input)
 {
   SelectedArrays arrays;
-  arrays.Displacement = SelectedArrayName(algorithm, DisplacementArrayIndex);
-  arrays.Marker = SelectedArrayName(algorithm, MarkerArrayIndex);
+  arrays.Displacement =
+    SelectedArrayName(algorithm, DisplacementArrayIndex, input, "Displacement", 3);
+  arrays.Marker = SelectedArrayName(algorithm, MarkerArrayIndex, input, "BoundaryMarker", 1);
   arrays.BodyIds = SelectedArrayName(algorithm, BodyIdArrayIndex);
   return arrays;
 }

@@ -27,6 +27,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkDataObject;
 class vtkDataArray;
 class vtkUnstructuredGrid;
 
@@ -49,8 +50,13 @@ struct SelectedArrays
   std::string BodyIds;
 };
 
-/// The names given to `algorithm` with SetInputArrayToProcess at the InputArrayIndex indices.
-SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm);
+/**
+ * The names given to `algorithm` with SetInputArrayToProcess at the InputArrayIndex indices ("":
+ * None). With `input`, a selection never made (C++ without SetInputArrayToProcess; ParaView
+ * always makes one) is the point array `Displacement` (3 components) or `BoundaryMarker` (1) when
+ * the input has it, as the plugin's defaults are.
+ */
+SelectedArrays GetSelectedArrays(vtkAlgorithm* algorithm, vtkDataObject* input = nullptr);
 
 /// The nodes of the input mesh, with the copies the core needs (the other processes' boundary
 /// nodes follow this piece's in a distributed run).

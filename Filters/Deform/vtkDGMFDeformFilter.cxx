@@ -346,7 +346,8 @@ int vtkDGMFDeformFilter::RequestData(
           // distributed run a failure here must still reach the other processes' agreement.
           try
           {
-            const dgmf_vtk::SelectedArrays arrays = dgmf_vtk::GetSelectedArrays(this);
+            const dgmf_vtk::SelectedArrays arrays =
+              dgmf_vtk::GetSelectedArrays(this, compositeInput);
             composite = &this->Internal->Cache->Composite.Get(
               compositeInput, arrays.Displacement, arrays.Marker);
           }
@@ -432,7 +433,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   //    (the core checks the values). A distributed run agrees on the dimension and fails on every
   //    process if it fails on one (no process may wait for another in the exchanges).
   dgmf_vtk::GatherOptions options;
-  options.Arrays = dgmf_vtk::GetSelectedArrays(this);
+  options.Arrays = dgmf_vtk::GetSelectedArrays(this, input);
   options.Distributed = distributed;
   options.OneCellThick = this->OneCellThickMode;
   options.DistinctPoints = composite != nullptr; // the merge made every point distinct

@@ -485,7 +485,12 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
       { f->SetBoundaryMarkerArrayName("RealMarker"); },
       "has the value 1.5" },
-    { "no array selected", [](vtkDGMFDeformFilter*, vtkUnstructuredGrid*) {},
+    { "None selected",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      {
+        f->SetBoundaryMarkerArrayName("None");
+        f->SetDisplacementArrayName("None");
+      },
       "Select a boundary-marker array" },
     { "rotation about x of a 2D mesh",
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
@@ -506,6 +511,24 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
     EXPECT_TRUE(errors.Contains(c.Message))
       << c.Name << ": got " << (errors.Messages.empty() ? "no message" : errors.Messages[0]);
   }
+  // Nothing selected (C++ without the setters): the input's BoundaryMarker array, as in ParaView
+  // (until 2026-11-30 an error, though properties.md gave it as the default).
+  vtkNew<vtkDGMFDeformFilter> unselected;
+  unselected->SetInputData(mesh);
+  unselected->SetRotationAngles(0, 0, 30);
+  unselected->Update();
+  vtkNew<vtkDGMFDeformFilter> selected;
+  selected->SetInputData(mesh);
+  selected->SetBoundaryMarkerArrayName("BoundaryMarker");
+  selected->SetRotationAngles(0, 0, 30);
+  selected->Update();
+  ASSERT_EQ(unselected->GetOutput()->GetNumberOfPoints(), CirclePoints);
+  for (vtkIdType i = 0; i < CirclePoints; ++i)
+  {
+    ASSERT_EQ(unselected->GetOutput()->GetPoint(i)[0], selected->GetOutput()->GetPoint(i)[0]);
+    ASSERT_EQ(unselected->GetOutput()->GetPoint(i)[1], selected->GetOutput()->GetPoint(i)[1]);
+  }
+
   vtkNew<vtkDGMFDeformFilter> filter;
   ErrorCatcher errors(filter);
   filter->SetBoundaryMarkerArrayName("BoundaryMarker");
