@@ -402,6 +402,17 @@ int main(int argc, char* argv[])
     std::cerr << "dgmf-deform: " << outputProblem << "\n";
     return ExitUsage;
   }
+  // A single output file's folder must be there (a series makes its own): said before the work,
+  // not as a write failure after it.
+  const std::filesystem::path outputFolder = std::filesystem::path(options.Output).parent_path();
+  std::error_code folderError;
+  if (kind != InputKind::OpenFOAMCase && !options.Series && !options.NoWrite &&
+    !outputFolder.empty() && !std::filesystem::is_directory(outputFolder, folderError))
+  {
+    std::cerr << "dgmf-deform: error: the output's folder " << outputFolder.string()
+              << " does not exist\n";
+    return ExitFailure;
+  }
   Times times;
   const double readStart = vtkTimerLog::GetUniversalTime();
   vtkSmartPointer<vtkAlgorithm> reader;
