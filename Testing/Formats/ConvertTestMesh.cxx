@@ -126,6 +126,13 @@ void WriteExodus(const mf::NamedMesh& mesh, const std::string& path)
 
 void WriteCGNS(const mf::NamedMesh& mesh, const std::string& path)
 {
+  // Simplices only, as the Exodus writer (another cell written as one would be a wrong file).
+  const std::uint8_t cellType = mesh.Dimension == 3 ? mf::Tetra : mf::Triangle;
+  for (std::size_t c = 0; c < mesh.Volume.Size(); ++c)
+  {
+    Check(mesh.Volume.Types[c] == cellType, path + ": only tetrahedra or triangles");
+  }
+
   int fn = 0, base = 0, zone = 0, section = 0, coordinate = 0, boco = 0, family = 0;
   Check(cg_open(path.c_str(), CG_MODE_WRITE, &fn) == CG_OK, path);
   const int d = mesh.Dimension;
