@@ -4,6 +4,7 @@
 #include "vtkNew.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,8 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace dgmf_cli
 {
@@ -90,6 +93,46 @@ vtkSmartPointer<vtkTable> ReadTrajectoryCSV(const std::string& path)
   {
     std::cerr << "dgmf-deform: error: the trajectory table " << path << " is not a file\n";
     return nullptr;
+  }
+  // Every row whole: VTK's reader makes a short row's missing values, and an empty value, 0 (or
+  // shorter columns), which would move a body silently (a table still being written, say).
+  {
+    std::ifstream text(path);
+    std::string line;
+    std::size_t fields = 0;
+    for (std::size_t number = 1; std::getline(text, line); ++number)
+    {
+      if (!line.empty() && line.back() == '\r')
+      {
+        line.pop_back();
+      }
+      if (line.find_first_not_of(" \t") == std::string::npos)
+      {
+        continue; // blank lines are skipped, as VTK's reader does
+      }
+      std::vector<std::string> values;
+      std::stringstream row(line);
+      for (std::string value; std::getline(row, value, ',');)
+      {
+        values.push_back(value);
+      }
+      if (line.back() == ',')
+      {
+        values.emplace_back();
+      }
+      fields = fields == 0 ? values.size() : fields;
+      const bool blank = std::any_of(values.begin(), values.end(),
+        [](const std::string& value)
+        { return value.find_first_not_of(" \t") == std::string::npos; });
+      if (values.size() != fields || blank)
+      {
+        std::cerr << "dgmf-deform: error: the trajectory table " << path << ", line " << number
+                  << ": " << values.size() << " values" << (blank ? ", one of them empty" : "")
+                  << ", where the header has " << fields
+                  << " (a row cut short, or a table still being written?)\n";
+        return nullptr;
+      }
+    }
   }
   vtkNew<vtkDelimitedTextReader> reader;
   reader->SetFileName(path.c_str());

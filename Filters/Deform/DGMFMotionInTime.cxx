@@ -31,13 +31,22 @@ std::string Lower(std::string text)
   return text;
 }
 
-/// The column `name` of `table` (any case), or null; std::invalid_argument if not numeric.
+/// `text` without the spaces and tabs around it (a CSV header's " Time ").
+std::string Trimmed(const std::string& text)
+{
+  const std::size_t first = text.find_first_not_of(" \t");
+  return first == std::string::npos ? ""
+                                    : text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+/// The column `name` of `table` (any case, spaces around ignored), or null; std::invalid_argument
+/// if not numeric.
 vtkDataArray* Column(vtkTable* table, const char* name)
 {
   for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
   {
     vtkAbstractArray* column = table->GetColumn(c);
-    if (column && column->GetName() && Lower(column->GetName()) == Lower(name))
+    if (column && column->GetName() && Trimmed(Lower(column->GetName())) == Lower(name))
     {
       auto* numbers = vtkDataArray::SafeDownCast(column);
       if (!numbers || numbers->GetNumberOfComponents() != 1)
@@ -114,6 +123,20 @@ dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
 
 dgmf::Trajectory ReadTrajectoryTable(vtkTable* table)
 {
+  // Columns of unequal length (a CSV reader's answer to a row cut short) would be read past
+  // their ends.
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    vtkAbstractArray* column = table->GetColumn(c);
+    if (column && column->GetNumberOfTuples() != table->GetNumberOfRows())
+    {
+      throw std::invalid_argument("The trajectory table's rows are not whole: its column '" +
+        std::string(column->GetName() ? column->GetName() : "(unnamed)") + "' has " +
+        std::to_string(column->GetNumberOfTuples()) + " values and the table " +
+        std::to_string(table->GetNumberOfRows()) +
+        " rows (a row cut short, or a table still being written?).");
+    }
+  }
   vtkDataArray* time = Column(table, "Time");
   if (!time)
   {

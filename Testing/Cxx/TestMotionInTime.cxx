@@ -8,6 +8,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
@@ -276,4 +277,16 @@ TEST(MotionInTime, ATrajectoryTableMovesItsBodyBetweenRows)
   const std::string body =
     message(Table({ { "Time", { 0.0, 1.0 } }, { "Body", { 3, 3 } }, { "TX", { 0.0, 1.0 } } }));
   EXPECT_NE(body.find("moves body 3, but the mesh has 1 moving body"), std::string::npos) << body;
+  // A row cut short: VTK's CSV readers give a shorter column, which was read past its end (a
+  // random rotation at that time, until 2026-11-30).
+  vtkSmartPointer<vtkTable> cut = Table({ { "Time", { 0.0, 1.0, 2.0 } } });
+  vtkNew<vtkDoubleArray> shorter;
+  shorter->SetName("RZ");
+  shorter->InsertNextValue(0.0);
+  shorter->InsertNextValue(-10.0);
+  cut->GetRowData()->AddArray(shorter);
+  const std::string whole = message(cut);
+  EXPECT_NE(whole.find("rows are not whole: its column 'RZ' has 2 values and the table 3 rows"),
+    std::string::npos)
+    << whole;
 }
