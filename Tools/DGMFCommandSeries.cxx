@@ -80,11 +80,25 @@ bool WriteCollection(
   return static_cast<bool>(file);
 }
 
-std::string OpenFOAMTimeName(double t)
+std::vector<std::string> OpenFOAMTimeNames(const std::vector<double>& times)
 {
-  char name[64];
-  std::snprintf(name, sizeof name, "%.6g", t);
-  return name;
+  std::vector<std::string> names(times.size());
+  for (int digits = 6; digits <= 17; ++digits)
+  {
+    for (std::size_t k = 0; k < times.size(); ++k)
+    {
+      char name[64];
+      std::snprintf(name, sizeof name, "%.*g", digits, times[k]);
+      names[k] = name;
+    }
+    std::vector<std::string> sorted = names;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+    {
+      break;
+    }
+  }
+  return names;
 }
 
 vtkSmartPointer<vtkTable> ReadTrajectoryCSV(const std::string& path)

@@ -36,8 +36,12 @@ std::string CollectionPath(const std::string& output);
 bool WriteCollection(
   const std::string& path, const std::vector<std::pair<double, std::string>>& frames);
 
-/// The name of time `t`'s directory in an OpenFOAM case ("0.02", "1", "1e-05"; 6 digits).
-std::string OpenFOAMTimeName(double t);
+/**
+ * The names of the time directories of `times` in an OpenFOAM case ("0.02", "1", "1e-05"): 6
+ * significant digits, OpenFOAM's default time precision, or as many more as make every name
+ * distinct (as OpenFOAM raises its timePrecision), 17 at most.
+ */
+std::vector<std::string> OpenFOAMTimeNames(const std::vector<double>& times);
 
 /**
  * The trajectory table of a CSV file with a header row (numbers detected as such), or null with

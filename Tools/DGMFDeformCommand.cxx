@@ -331,6 +331,8 @@ int RunSeries(
               << " frames)" << std::endl;
     return true;
   };
+  // Distinct directory names (times closer than 6 digits tell apart share one at 6 digits).
+  const std::vector<std::string> timeNames = dgmf_cli::OpenFOAMTimeNames(steps);
   for (std::size_t k = 0; k < steps.size(); ++k)
   {
     const double t = steps[k];
@@ -338,8 +340,10 @@ int RunSeries(
     std::string why;
     const int verdict = DeformAndJudge(
       filter, options.FailOnInverted, [&]() { filter->UpdateTimeStep(t); }, times, why);
-    std::cout << "dgmf-deform: time " << t << " (frame " << k + 1 << " of " << steps.size() << ")"
-              << std::endl;
+    // An OpenFOAM series names each frame by its time directory.
+    std::cout << "dgmf-deform: time ";
+    (files ? std::cout << t : std::cout << timeNames[k]);
+    std::cout << " (frame " << k + 1 << " of " << steps.size() << ")" << std::endl;
     if (verdict != ExitSuccess)
     {
       std::cerr << "dgmf-deform: " << why << " at time " << t << "; "
@@ -357,7 +361,7 @@ int RunSeries(
     }
     else
     {
-      frame.Time = dgmf_cli::OpenFOAMTimeName(t);
+      frame.Time = timeNames[k];
     }
     std::string written;
     if (!WriteAndReport(filter, kind, frame, times, written))

@@ -4,7 +4,8 @@
     check_series_case.py --deform BIN --case SRC --work DIR --baseline LOG -- OPTIONS
 
 Runs `dgmf-deform SRC DIR/Series OPTIONS` (OPTIONS with a law and --times), then asserts:
-- one time directory per time the command printed, each with a points file of the source's size;
+- one time directory per time the command printed (each its own), each with a points file of the
+  source's size;
 - checkMesh at each of those times fails no check that the undeformed mesh (--baseline) does not;
 - the wing pitches: the frames differ, and two frames a period apart are the same points;
 - the outer box of the domain did not move, bit for bit, in any frame.
@@ -38,6 +39,8 @@ def main():
     times = re.findall(r"^dgmf-deform: time (\S+) \(frame", log, re.M)
     if len(times) < 3:
         fail("fewer than 3 frames: %s" % times)
+    if len(set(times)) != len(times):
+        fail("frames share a time directory: %s" % times)
     source, _, _ = read_points(points_file(os.path.join(args.case, "constant", "polyMesh")))
     low = [min(p[c] for p in source) for c in range(3)]
     high = [max(p[c] for p in source) for c in range(3)]
