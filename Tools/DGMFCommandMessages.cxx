@@ -25,6 +25,7 @@ namespace
 std::atomic<int> ErrorCount(0); // VTK reports from worker threads too (a compressor's error)
 // Read by the signal handlers: fixed buffers, not std::string.
 char Stage[1024] = "";
+char WrittenSoFar[512] = "nothing was written";
 char TemporaryFile[4096] = "";
 
 void CopyTo(char* buffer, std::size_t size, const std::string& text)
@@ -114,12 +115,16 @@ extern "C" void OnFatalSignal(int signal)
   {
     Write("dgmf-deform: error: VTK stopped the program while ");
     Write(Stage[0] != '\0' ? Stage : "working");
-    Write(" (it aborts when memory runs out: see the message above); nothing was written.\n");
+    Write(" (it aborts when memory runs out: see the message above); ");
+    Write(WrittenSoFar);
+    Write(".\n");
     _exit(1);
   }
   Write("dgmf-deform: interrupted while ");
   Write(Stage[0] != '\0' ? Stage : "working");
-  Write("; nothing was written.\n");
+  Write("; ");
+  Write(WrittenSoFar);
+  Write(".\n");
   _exit(128 + signal);
 }
 } // namespace
@@ -145,6 +150,11 @@ void ResetErrorCount()
 void SetStage(const std::string& stage)
 {
   CopyTo(Stage, sizeof(Stage), stage);
+}
+
+void SetWrittenSoFar(const std::string& written)
+{
+  CopyTo(WrittenSoFar, sizeof(WrittenSoFar), written);
 }
 
 void SetTemporaryFile(const std::string& path)

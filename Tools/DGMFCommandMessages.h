@@ -33,6 +33,12 @@ void ResetErrorCount();
 void SetStage(const std::string& stage);
 
 /**
+ * What is already written, for the same messages ("nothing was written" by default): a series
+ * says how many frames it wrote before the one it is on.
+ */
+void SetWrittenSoFar(const std::string& written);
+
+/**
  * A file being written: removed if VTK aborts or the user interrupts (SIGINT, SIGTERM, SIGHUP)
  * before it is renamed into place. Empty: none.
  */

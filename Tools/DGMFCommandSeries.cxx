@@ -63,7 +63,10 @@ std::string CollectionPath(const std::string& output)
 bool WriteCollection(
   const std::string& path, const std::vector<std::pair<double, std::string>>& frames)
 {
-  std::ofstream file(path);
+  // Written beside and renamed into place: a series stopped while it rewrites the collection
+  // keeps the last one whole.
+  const std::string temporary = path + ".dgmf-writing";
+  std::ofstream file(temporary);
   file << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -77,7 +80,13 @@ bool WriteCollection(
   }
   file << "  </Collection>\n</VTKFile>\n";
   file.close();
-  return static_cast<bool>(file);
+  std::error_code error;
+  if (!file || (std::filesystem::rename(temporary, path, error), error))
+  {
+    std::filesystem::remove(temporary, error);
+    return false;
+  }
+  return true;
 }
 
 std::vector<std::string> OpenFOAMTimeNames(const std::vector<double>& times)

@@ -313,22 +313,28 @@ int RunSeries(
     }
   }
   std::vector<std::pair<double, std::string>> frames;
-  // The .pvd of the frames written so far: at the end, and when a frame stops the series (the
-  // frames before it are whole, and ParaView opens them as a series).
-  const auto writeCollection = [&]()
+  // The .pvd of the frames written so far (a .vtu series: ParaView's .pvd reader reads XML files
+  // only; a .vtk series opens as a numbered file group): after each frame, so that a series
+  // stopped by a frame or by a signal keeps one of the whole frames before, and at the end.
+  const bool collected =
+    files && !options.NoWrite && std::filesystem::path(options.Output).extension() == ".vtu";
+  const std::string collection = collected ? dgmf_cli::CollectionPath(options.Output) : "";
+  const auto writeCollection = [&](bool say = true)
   {
-    if (!files || options.NoWrite || !dgmf_cli::IsMeshFileName(options.Output) || frames.empty())
+    if (!collected || frames.empty())
     {
       return true;
     }
-    const std::string collection = dgmf_cli::CollectionPath(options.Output);
     if (!dgmf_cli::WriteCollection(collection, frames))
     {
       std::cerr << "dgmf-deform: error: could not write " << collection << "\n";
       return false;
     }
-    std::cout << "dgmf-deform: wrote the series " << collection << " (" << frames.size()
-              << " frames)" << std::endl;
+    if (say)
+    {
+      std::cout << "dgmf-deform: wrote the series " << collection << " (" << frames.size()
+                << " frames)" << std::endl;
+    }
     return true;
   };
   // Distinct directory names (times closer than 6 digits tell apart share one at 6 digits).
@@ -370,6 +376,12 @@ int RunSeries(
       return ExitFailure;
     }
     frames.emplace_back(t, frame.Output);
+    if (k + 1 < steps.size())
+    {
+      writeCollection(false);
+      dgmf_cli::SetWrittenSoFar(std::to_string(frames.size()) + " frames before it were written" +
+        (collected ? " (and " + collection + " of them)" : ""));
+    }
   }
   return writeCollection() ? ExitSuccess : ExitFailure;
 }

@@ -9,6 +9,7 @@ import glob
 import hashlib
 import math
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -60,7 +61,16 @@ class CommandFailures(unittest.TestCase):
 
     # 1. A failed write exits 1 and does not say it wrote.
     def test_failed_write_exits_1(self):
+        # A missing folder is said before the work.
         code, out, err = run(self.circle, self.path("no/such/dir/o.vtu"), "--rotate", 0, 0, 30)
+        self.assertEqual(code, 1, err)
+        self.assertNotIn("wrote", out)
+        self.assertIn("the output's folder", err)
+        self.assertNotIn("dgmf-deform: 822 points", out)  # nothing was deformed
+        # A path that cannot be written (a folder of that name): the write fails.
+        blocked = self.path("blocked.vtu")
+        os.makedirs(blocked, exist_ok=True)
+        code, out, err = run(self.circle, blocked, "--rotate", 0, 0, 30)
         self.assertEqual(code, 1, err)
         self.assertNotIn("wrote", out)
         self.assertIn("could not write", err)
@@ -109,6 +119,40 @@ class CommandFailures(unittest.TestCase):
         self.assertIn("interrupted while deforming", err)
         self.assertEqual(digest(target), before)
         self.assertEqual(leftovers(self.work), [])
+
+    def test_interrupted_series_keeps_a_collection_of_its_whole_frames(self):
+        # Until 2026-11-30 a series stopped by a signal left its frames without a .pvd, and said
+        # "nothing was written".
+        folder = self.path("interrupted_series")
+        shutil.rmtree(folder, ignore_errors=True)
+        process = subprocess.Popen(
+            [ARGS.deform, os.path.join(ARGS.data, "pitching_airfoil.vtu"),
+             os.path.join(folder, "pitch.vtu"), "--center", "0.25", "0", "0",
+             "--pitch", "0", "10", "1", "0", "--times", "0:100:100000"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        collection = os.path.join(folder, "pitch.pvd")
+        deadline = time.time() + 120
+        while time.time() < deadline and process.poll() is None:
+            if os.path.exists(collection):
+                with open(collection) as handle:
+                    if handle.read().count("<DataSet") >= 3:
+                        break
+            time.sleep(0.05)
+        self.assertIsNone(process.poll(), "the series ended before it could be interrupted")
+        process.send_signal(signal.SIGINT)
+        out, err = process.communicate(timeout=120)
+        self.assertEqual(process.returncode, 130, err)
+        with open(collection) as handle:
+            listed = re.findall(r'file="([^"]+)"', handle.read())
+        self.assertGreaterEqual(len(listed), 3)
+        for name in listed:  # every frame listed is there, whole
+            frame = os.path.join(folder, name)
+            self.assertTrue(os.path.exists(frame), name)
+            code, _, stderr = run(frame, self.path("reread.vtu"), "--rotate", "0", "0", "1")
+            self.assertEqual(code, 0, stderr)
+        self.assertRegex(err, r"interrupted while .*; \d+ frames before it were written \(and "
+                              r".*pitch.pvd of them\)")
+        self.assertEqual(glob.glob(os.path.join(folder, "*.dgmf-writing")), [])
 
     # 4. Each bad-input class: the filter's own message on stderr, once, without VTK's pipeline
     #    dump or colour codes; exit 1; no output.
