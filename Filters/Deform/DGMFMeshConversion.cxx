@@ -284,6 +284,36 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
   return 2;
 }
 
+vtkIdType CountBadCellsOutsideTheGuard(
+  vtkUnstructuredGrid* mesh, vtkDataArray* sizeSkew, double threshold)
+{
+  if (!sizeSkew || sizeSkew->GetNumberOfTuples() != mesh->GetNumberOfCells())
+  {
+    return 0;
+  }
+  int largest = 0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const int type = mesh->GetCellType(c);
+    largest = std::max(largest,
+      type == VTK_EMPTY_CELL ? 0 : vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
+  }
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const int type = mesh->GetCellType(c);
+    dgmf::CellShape shape;
+    const int* order = nullptr;
+    if (type != VTK_EMPTY_CELL &&
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest &&
+      !CellShapeOf(type, shape, order) && sizeSkew->GetTuple1(c) < threshold)
+    {
+      ++count;
+    }
+  }
+  return count;
+}
+
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)
 {
   const vtkIdType cells = mesh->GetNumberOfCells();

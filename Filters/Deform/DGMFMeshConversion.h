@@ -17,6 +17,7 @@
 
 class vtkPoints;
 class vtkPointSet;
+class vtkDataArray;
 class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
@@ -68,6 +69,13 @@ std::vector<vtkIdType> CellsOfTypes(vtkUnstructuredGrid* mesh, const std::array<
  * those of `patches` (a composite input's boundary patches on the same points) when not null.
  */
 dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patches = nullptr);
+
+/**
+ * The cells of `mesh` of its largest cell dimension that the quality guard does not see (no
+ * CellShapeOf: polyhedra, polygons) and whose `sizeSkew` is below `threshold` (NaN is not).
+ */
+vtkIdType CountBadCellsOutsideTheGuard(
+  vtkUnstructuredGrid* mesh, vtkDataArray* sizeSkew, double threshold);
 
 /// The cells of `mesh` of its largest cell dimension (its volume cells, without the boundary
 /// faces or edges a merged composite input may hold).

@@ -551,6 +551,22 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   }
   this->LastQualitySeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - qualityStart).count();
+  if (this->ComputeQuality && this->Method == DGMF && this->RepairThreshold > 0.0)
+  {
+    // The guard repairs the cells the metric's corner form covers; bad polyhedra are left, and
+    // counted with the cells it could not repair (the summary said "left unrepaired 0").
+    const vtkIdType outside = dgmf_vtk::CountBadCellsOutsideTheGuard(
+      output, output->GetCellData()->GetArray(dgmf::names::SizeSkew), this->RepairThreshold);
+    vtkDataArray* unrepaired = output->GetFieldData()->GetArray(dgmf::names::UnrepairedCellCount);
+    if (outside > 0 && unrepaired)
+    {
+      unrepaired->SetTuple1(0, unrepaired->GetTuple1(0) + static_cast<double>(outside));
+      vtkWarningMacro(<< outside
+                      << " polyhedra or polygons have a SizeSkew below the Repair "
+                         "Threshold: the quality guard does not move their nodes "
+                         "(counted in UnrepairedCellCount).");
+    }
+  }
   if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)
   {
     vtkErrorMacro(
