@@ -117,8 +117,9 @@ bool ReadTimes(const char* text, std::vector<double>& times)
     whole = whole && used == end.size();
     const long n = std::stol(count, &used);
     whole = whole && used == count.size();
+    // (b - a) k must be finite too: the times are a + (b - a) k / (n - 1), here and in the filter.
     if (!whole || !std::isfinite(a) || !std::isfinite(b) || b < a || n < 1 || n > 1000000 ||
-      (n > 1 && !(b > a)))
+      (n > 1 && !(b > a)) || !std::isfinite((b - a) * static_cast<double>(n - 1)))
     {
       return false;
     }
@@ -385,6 +386,12 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   {
     std::cerr << "dgmf-deform: --times needs a motion in time (--rotation-law, --pitch, "
                  "--translation-law or --trajectory)\n";
+    return ExitUsage;
+  }
+  if (options.Series && options.Time != "constant")
+  {
+    std::cerr << "dgmf-deform: --time names the one time directory of a single deformation; a "
+                 "series writes one per time of --times\n";
     return ExitUsage;
   }
   if (options.FailOnInverted && !filter->GetComputeQuality())
