@@ -196,6 +196,15 @@ dgmf::Trajectory ReadTrajectoryTable(vtkTable* table)
       }
       // An angle that is not finite makes the quaternion so: dgmf::Trajectory names the row.
       dgmf::EulerAnglesToQuaternion(degrees, row.Quaternion);
+      // An angle about one axis is kept as given (beyond 180 degrees: Trajectory).
+      const int turned =
+        static_cast<int>(std::count_if(degrees, degrees + 3, [](double d) { return d != 0.0; }));
+      row.AngleAxis = turned == 0 ? dgmf::TrajectoryRow::NoAxis : -1;
+      for (int c = 0; c < 3 && turned == 1; ++c)
+      {
+        row.AngleAxis = degrees[c] != 0.0 ? c : row.AngleAxis;
+        row.AngleDegrees = degrees[c] != 0.0 ? degrees[c] : row.AngleDegrees;
+      }
     }
     rows.push_back(row);
   }

@@ -109,6 +109,50 @@ TEST(Trajectory, InterpolatesTranslationLinearlyAndRotationAlongTheShortestArc)
   EXPECT_THROW(across.At(3, 0.5, center), std::invalid_argument);
 }
 
+TEST(Trajectory, AnAngleAboutOneAxisGoesOnPast180Degrees)
+{
+  // A body turning about z by 90 degrees per unit of time, to 450 degrees: DGMF damps the angle,
+  // so it must not wrap from 180 to -180 (the mesh jumped by 6 in a domain of 10 between two
+  // frames 0.02 apart, until 2026-11-30). As quaternions: the steps' angles add up.
+  std::vector<dgmf::TrajectoryRow> quaternions, angles;
+  for (int k = 0; k <= 5; ++k)
+  {
+    quaternions.push_back(Row(k, 1, 0.0, 90.0 * k, static_cast<std::size_t>(k + 1)));
+    dgmf::TrajectoryRow row = quaternions.back();
+    row.AngleAxis = k == 0 ? dgmf::TrajectoryRow::NoAxis : 2; // RZ alone, as given
+    row.AngleDegrees = 90.0 * k;
+    angles.push_back(row);
+  }
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  for (const auto* rows : { &quaternions, &angles })
+  {
+    const dgmf::Trajectory trajectory(*rows);
+    double previous = 0.0;
+    for (double t = 0.0; t <= 5.0; t += 0.01)
+    {
+      const dgmf::RigidMotion motion = trajectory.At(1, t, center);
+      const double degrees = motion.AxisAngleDegrees * (motion.Axis[2] < 0.0 ? -1.0 : 1.0);
+      EXPECT_NEAR(degrees, 90.0 * t, 1e-9) << "t = " << t;
+      EXPECT_LT(std::abs(degrees - previous), 1.0) << "t = " << t; // no jump
+      previous = degrees;
+    }
+  }
+  // One row of RZ = 270: 270 degrees as given (as --angle 270), not -90.
+  dgmf::TrajectoryRow once = angles[3];
+  const dgmf::Trajectory single({ once });
+  EXPECT_EQ(single.At(1, 0.0, center).AxisAngleDegrees, 270.0);
+  EXPECT_EQ(single.At(1, 0.0, center).Axis[2], 1.0);
+  // Steps about different axes: the orientation's own angle, at most 180 degrees.
+  dgmf::TrajectoryRow tilted = Row(1.0, 1, 0.0, 0.0, 2);
+  const double half = 0.5 * 100.0 * 3.14159265358979323846 / 180.0;
+  tilted.Quaternion[0] = std::cos(half);
+  tilted.Quaternion[1] = std::sin(half);
+  tilted.Quaternion[3] = 0.0;
+  const dgmf::Trajectory bent({ Row(0.0, 1, 0.0, 120.0, 1), tilted });
+  EXPECT_LE(std::abs(bent.At(1, 0.5, center).AxisAngleDegrees), 180.0);
+  EXPECT_NEAR(bent.At(1, 1.0, center).AxisAngleDegrees, 100.0, 1e-9);
+}
+
 TEST(Trajectory, BadRowsAreNamed)
 {
   EXPECT_NE(MessageOf({ Row(0.0, 1, 0, 0, 1), Row(1.0, 1, 0, 0, 2), Row(0.5, 1, 0, 0, 3) })

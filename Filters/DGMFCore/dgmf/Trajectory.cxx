@@ -26,6 +26,18 @@ void Multiply(const double a[4], const double b[4], double q[4])
   q[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
 }
 
+/// The axis (unit, or zero for no rotation) and angle in degrees (0 to 180) of unit quaternion q.
+double AxisAngleOf(const double q[4], double axis[3])
+{
+  const double sign = q[0] < 0.0 ? -1.0 : 1.0; // the same rotation, by at most 180 degrees
+  const double sinHalf = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int k = 0; k < 3; ++k)
+  {
+    axis[k] = sinHalf > 0.0 ? sign * q[1 + k] / sinHalf : 0.0;
+  }
+  return sinHalf > 0.0 ? 2.0 * std::atan2(sinHalf, sign * q[0]) * 180.0 / Pi : 0.0;
+}
+
 /// The shortest-arc interpolation of unit quaternions a and b at s in [0, 1].
 void Slerp(const double a[4], const double b[4], double s, double q[4])
 {
@@ -111,6 +123,62 @@ Trajectory::Trajectory(const std::vector<TrajectoryRow>& rows)
   {
     throw std::invalid_argument("the trajectory table has no rows");
   }
+  for (const auto& [id, rows] : this->Bodies)
+  {
+    std::vector<RowRotation>& path = this->Rotations[id];
+    path.resize(rows.size());
+    // Angles about one coordinate axis in every row: that axis, the angles as given.
+    int axis = TrajectoryRow::NoAxis;
+    bool oneAxis = true;
+    for (const TrajectoryRow& row : rows)
+    {
+      const bool fits = row.AngleAxis == TrajectoryRow::NoAxis ||
+        (row.AngleAxis >= 0 && (axis == TrajectoryRow::NoAxis || axis == row.AngleAxis));
+      oneAxis = oneAxis && fits;
+      axis = row.AngleAxis >= 0 ? row.AngleAxis : axis;
+    }
+    if (oneAxis)
+    {
+      for (std::size_t k = 0; k < rows.size(); ++k)
+      {
+        path[k].Axis[axis >= 0 ? axis : 2] = 1.0;
+        path[k].Degrees = rows[k].AngleAxis >= 0 ? rows[k].AngleDegrees : 0.0;
+        path[k].AxisToNext = true;
+      }
+      continue;
+    }
+    // Otherwise the orientations: each step's own rotation (the shorter way) adds to the angle
+    // while it turns about the axis turned about so far.
+    path[0].Degrees = AxisAngleOf(rows[0].Quaternion, path[0].Axis);
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k)
+    {
+      const double* a = rows[k].Quaternion;
+      const double inverse[4] = { a[0], -a[1], -a[2], -a[3] };
+      double step[4], stepAxis[3];
+      Multiply(rows[k + 1].Quaternion, inverse, step);
+      const double stepDegrees = AxisAngleOf(step, stepAxis);
+      RowRotation& here = path[k];
+      RowRotation& next = path[k + 1];
+      const double along =
+        here.Axis[0] * stepAxis[0] + here.Axis[1] * stepAxis[1] + here.Axis[2] * stepAxis[2];
+      const bool still = here.Axis[0] == 0.0 && here.Axis[1] == 0.0 && here.Axis[2] == 0.0;
+      if (stepDegrees == 0.0 || still || std::abs(std::abs(along) - 1.0) <= 1e-12)
+      {
+        const double sign = still || stepDegrees == 0.0 ? 1.0 : (along < 0.0 ? -1.0 : 1.0);
+        for (int c = 0; c < 3; ++c)
+        {
+          next.Axis[c] = still ? stepAxis[c] : here.Axis[c];
+          here.Axis[c] = next.Axis[c]; // a body at rest turns about the step's axis
+        }
+        next.Degrees = here.Degrees + sign * stepDegrees;
+        here.AxisToNext = true;
+      }
+      else
+      {
+        next.Degrees = AxisAngleOf(rows[k + 1].Quaternion, next.Axis);
+      }
+    }
+  }
 }
 
 std::vector<double> Trajectory::GetTimes() const
@@ -153,21 +221,27 @@ RigidMotion Trajectory::At(int body, double t, const double center[3]) const
     motion.Translation[c] = a.Translation[c] + s * (b.Translation[c] - a.Translation[c]);
     motion.Center[c] = center[c];
   }
-  double q[4];
-  Slerp(a.Quaternion, b.Quaternion, s, q);
-  if (q[0] < 0.0) // the same rotation, by an angle of at most 180 degrees
+  const std::vector<RowRotation>& path = this->Rotations.at(body);
+  const RowRotation& from = path[static_cast<std::size_t>(&a - rows.data())];
+  const RowRotation& to = path[static_cast<std::size_t>(&b - rows.data())];
+  if (&a == &b || from.AxisToNext)
   {
-    for (double& v : q)
-      v = -v;
-  }
-  const double sinHalf = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (sinHalf > 0.0)
-  {
-    motion.AxisAngleDegrees = 2.0 * std::atan2(sinHalf, q[0]) * 180.0 / Pi;
-    for (int k = 0; k < 3; ++k)
+    // About one axis: the angle, continuous over the rows (beyond 180 degrees).
+    const double degrees = from.Degrees + s * (to.Degrees - from.Degrees);
+    if (degrees != 0.0)
     {
-      motion.Axis[k] = q[1 + k] / sinHalf;
+      motion.AxisAngleDegrees = degrees;
+      std::copy(from.Axis, from.Axis + 3, motion.Axis);
     }
+    return motion;
+  }
+  double q[4], axis[3];
+  Slerp(a.Quaternion, b.Quaternion, s, q);
+  const double degrees = AxisAngleOf(q, axis);
+  if (degrees != 0.0)
+  {
+    motion.AxisAngleDegrees = degrees;
+    std::copy(axis, axis + 3, motion.Axis);
   }
   return motion;
 }

@@ -23,6 +23,12 @@ struct TrajectoryRow
   double Translation[3] = { 0.0, 0.0, 0.0 };     ///< from the body's initial position
   double Quaternion[4] = { 1.0, 0.0, 0.0, 0.0 }; ///< rotation (w, x, y, z), unit length
   std::size_t Row = 0;                           ///< the row's number in the table, for messages
+  /// The rotation given as an angle about one coordinate axis (a table of angles RX, RY, RZ with
+  /// at most one of them non-zero in the row): 0, 1 or 2; NoAxis for a row with no rotation;
+  /// -1 otherwise (a quaternion, or angles about several axes).
+  int AngleAxis = -1;
+  double AngleDegrees = 0.0; ///< that angle, as given (beyond 180 degrees too)
+  static constexpr int NoAxis = -2;
 };
 
 /**
@@ -37,8 +43,15 @@ void EulerAnglesToQuaternion(const double anglesDegrees[3], double q[4]);
  * Each body's rows must have strictly increasing times (in table order). Before a body's first
  * time its first row holds, after its last time its last row. Between two rows the translation is
  * interpolated linearly and the rotation along the shortest arc between the two quaternions
- * (slerp); the rotation is then about the given centre, as an axis and an angle (at most 180
- * degrees from the initial orientation).
+ * (slerp); the rotation is then about the given centre, as an axis and an angle.
+ *
+ * The angle is continuous in time where the rotation keeps one axis, beyond 180 degrees: a body
+ * whose rows all turn it about one coordinate axis by angles (RX, RY or RZ alone) turns by the
+ * angle interpolated linearly between its rows, as given (0, 90, ..., 450 degrees: up to 450);
+ * otherwise, over each run of rows whose steps turn about one axis, the steps' angles add up
+ * (slerp about a fixed axis is linear in the angle). Elsewhere the angle is that of the
+ * orientation, at most 180 degrees. DGMF damps the angle (a node turns by f times it), so an
+ * angle that wrapped from 180 to -180 degrees would make the mesh jump between two times.
  */
 class Trajectory
 {
@@ -66,7 +79,16 @@ public:
   RigidMotion At(int body, double t, const double center[3]) const;
 
 private:
+  /// A row's rotation as an axis and an angle, continuous along the body's rows where it can be.
+  struct RowRotation
+  {
+    double Axis[3] = { 0.0, 0.0, 0.0 }; ///< zero while the body has not turned
+    double Degrees = 0.0;
+    bool AxisToNext = false; ///< the step to the next row turns about Axis: angles interpolate
+  };
+
   std::map<int, std::vector<TrajectoryRow>> Bodies;
+  std::map<int, std::vector<RowRotation>> Rotations; ///< per body, one per row
 };
 
 } // namespace dgmf
