@@ -426,7 +426,8 @@ int main(int argc, char* argv[])
     !outputFolder.empty() && !std::filesystem::is_directory(outputFolder, folderError))
   {
     std::cerr << "dgmf-deform: error: the output's folder " << outputFolder.string()
-              << " does not exist\n";
+              << (folderError ? " cannot be used: " + folderError.message() : " does not exist")
+              << "\n";
     return ExitFailure;
   }
   Times times;

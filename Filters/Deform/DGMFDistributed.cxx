@@ -1,5 +1,7 @@
 #include "DGMFDistributed.h"
 
+#include "DGMFMeshConversion.h"
+
 #include "DGMFInputNodes.h"
 #include "DGMFOutputArrays.h"
 
@@ -16,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -29,10 +32,11 @@ bool IsDistributed(vtkMultiProcessController* controller)
 
 int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid* piece, double& z)
 {
-  // Maxima: the dimension of the piece's cells (0 without cells) and its largest z; minimum: its
-  // smallest z.
-  double maxima[2] = { 0.0, -std::numeric_limits<double>::infinity() };
-  double minimum = std::numeric_limits<double>::infinity();
+  // Maxima: the dimension of the piece's cells (0 without cells) and its largest x, y, z; minima:
+  // its smallest x, y, z.
+  const double infinity = std::numeric_limits<double>::infinity();
+  double maxima[4] = { 0.0, -infinity, -infinity, -infinity };
+  double minima[3] = { infinity, infinity, infinity };
   for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
   {
     const int type = piece->GetCellType(c);
@@ -44,17 +48,24 @@ int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid*
   }
   for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
   {
-    const double pz = piece->GetPoint(i)[2];
-    maxima[1] = std::max(maxima[1], pz);
-    minimum = std::min(minimum, pz);
+    const double* p = piece->GetPoint(i);
+    for (int c = 0; c < 3; ++c)
+    {
+      maxima[1 + c] = std::max(maxima[1 + c], p[c]);
+      minima[c] = std::min(minima[c], p[c]);
+    }
   }
-  double globalMaxima[2];
-  double globalMinimum = 0.0;
-  controller->AllReduce(maxima, globalMaxima, 2, vtkCommunicator::MAX_OP);
-  controller->AllReduce(&minimum, &globalMinimum, 1, vtkCommunicator::MIN_OP);
+  double globalMaxima[4];
+  double globalMinima[3];
+  controller->AllReduce(maxima, globalMaxima, 4, vtkCommunicator::MAX_OP);
+  controller->AllReduce(minima, globalMinima, 3, vtkCommunicator::MIN_OP);
   const int dimension = static_cast<int>(globalMaxima[0]);
-  z = globalMinimum;
-  return dimension == 2 && globalMinimum != globalMaxima[1] ? -1 : dimension;
+  z = globalMinima[2];
+  // The serial rule (DetectDimension): z may spread over PlanarZTolerance of the x-y extent.
+  const double spread = globalMaxima[3] - globalMinima[2];
+  const double extent =
+    std::hypot(globalMaxima[1] - globalMinima[0], globalMaxima[2] - globalMinima[1]);
+  return dimension == 2 && spread > 0.0 && !(spread <= PlanarZTolerance * extent) ? -1 : dimension;
 }
 
 void RequestOneGhostLevel(vtkInformation* inputInformation)

@@ -27,8 +27,9 @@ struct InputNodes;
 bool IsDistributed(vtkMultiProcessController* controller);
 
 /// The dimension of the whole distributed mesh: 3 if any piece has a 3D cell; 2 if the pieces
-/// have only lower-dimensional cells and all their points have one z (-1 when the z differ); 0 for
-/// no cell at all. `z` receives that z. Collective.
+/// have only lower-dimensional cells and all their points have one z, up to PlanarZTolerance of
+/// the x-y extent (-1 when the z differ more); 0 for no cell at all. `z` receives the smallest z.
+/// Collective.
 int AgreeOnDimension(vtkMultiProcessController* controller, vtkUnstructuredGrid* piece, double& z);
 
 /// True on every process when `ok` is true on every process. Collective.

@@ -84,11 +84,13 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
   double t) const
 {
   const std::int32_t bodies = std::max<std::int32_t>(nodes.NumberOfBodies, 1);
-  if (!this->BadRow.empty())
+  // The rows count in Properties mode only (Extracted mode fits the motions instead).
+  const bool rows = filter->GetRigidMotionMode() == vtkDGMFDeformFilter::PROPERTIES;
+  if (rows && !this->BadRow.empty())
   {
     throw std::invalid_argument(this->BadRow);
   }
-  if (!this->Motions.empty() && this->Motions.rbegin()->first > bodies)
+  if (rows && !this->Motions.empty() && this->Motions.rbegin()->first > bodies)
   {
     throw std::invalid_argument("Body Motions moves body " +
       std::to_string(this->Motions.rbegin()->first) + ", but the mesh has " +

@@ -322,15 +322,16 @@ vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)
     return type == VTK_EMPTY_CELL ? -1
                                   : vtkCellTypes::GetDimension(static_cast<unsigned char>(type));
   };
-  int largest = -1;
-  bool mixed = false;
+  std::vector<int> dimensions; // of the distinct cell types (-1: empty cells)
   vtkUnsignedCharArray* types = mesh->GetDistinctCellTypesArray();
   for (vtkIdType k = 0; types && k < types->GetNumberOfTuples(); ++k)
   {
-    const int dimension = dimensionOf(types->GetValue(k));
-    mixed = mixed || (largest >= 0 && dimension != largest);
-    largest = std::max(largest, dimension);
+    dimensions.push_back(dimensionOf(types->GetValue(k)));
   }
+  const int largest =
+    dimensions.empty() ? -1 : *std::max_element(dimensions.begin(), dimensions.end());
+  const bool mixed =
+    std::any_of(dimensions.begin(), dimensions.end(), [&](int d) { return d != largest; });
   if (!mixed)
   {
     return cells;

@@ -227,6 +227,8 @@ std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Tra
   {
     steps.push_back(count == 1 ? low : low + (high - low) * k / (count - 1));
   }
+  // Steps finer than the doubles around the range give equal times: each once.
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   return steps;
 }
 

@@ -261,7 +261,8 @@ int vtkDGMFDeformFilter::RequestUpdateExtent(
 {
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   // A distributed mesh without a boundary marker needs one layer of ghost cells.
-  if (dgmf_vtk::IsDistributed(this->Controller) && dgmf_vtk::GetSelectedArrays(this).Marker.empty())
+  if (dgmf_vtk::IsDistributed(this->Controller) &&
+    dgmf_vtk::GetSelectedArrays(this, this->GetInputDataObject(0, 0)).Marker.empty())
   {
     dgmf_vtk::RequestOneGhostLevel(inputVector[0]->GetInformationObject(0));
   }
@@ -424,8 +425,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   this->LastExecutionReusedGraph = false;
   this->LastGraphSeconds = this->LastLocationSeconds = this->LastDeformationSeconds =
     this->LastQualitySeconds = 0.0;
-  this->LastNumberOfNodes = input->GetNumberOfPoints();
-  this->LastNumberOfCells = dgmf_vtk::CountCellsOfLargestDimension(input);
+  this->LastNumberOfNodes = this->LastNumberOfCells = 0;
   dgmf_vtk::DeformationCaches& cache = *this->Internal->Cache;
   const bool distributed = dgmf_vtk::IsDistributed(this->Controller);
 
@@ -573,6 +573,8 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
       "The deformation inverts " << summary.Inverted << " cells (FailOnInvertedCells is on).");
     return 0;
   }
+  this->LastNumberOfNodes = input->GetNumberOfPoints();
+  this->LastNumberOfCells = dgmf_vtk::CountCellsOfLargestDimension(input);
   this->UpdateProgress(1.0);
   return 1;
 }

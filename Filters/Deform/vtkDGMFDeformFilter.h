@@ -555,7 +555,7 @@ public:
   /**
    * The mesh the last execution deformed: its nodes and cells. For a composite input, the merged
    * mesh: points shared by blocks counted once, and the volume cells (the output's blocks count
-   * every block's points and cells). 0 before an execution.
+   * every block's points and cells). 0 before an execution and after one that failed.
    */
   vtkIdType GetLastNumberOfNodes() const { return this->LastNumberOfNodes; }
   vtkIdType GetLastNumberOfCells() const { return this->LastNumberOfCells; }

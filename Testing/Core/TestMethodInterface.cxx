@@ -307,6 +307,12 @@ TEST(ProblemValidation, MarkerValuesBecomeKindsOrANamedError)
   ExpectRejected([&]()
     { dgmf::MarkerToNodeKinds(std::vector<double>{ 1.0 + 0x1p-45 }, kinds.data()); },
     "has the value 1.0000000000000284 at point 0");
+  // A subnormal value is named too (std::stod threw out_of_range on it, the message was "stod").
+  ExpectRejected(
+    [&]() {
+      dgmf::MarkerToNodeKinds(std::vector<double>{ 0, 1e-310 }, kinds.data());
+    },
+    "has the value 1e-310 at point 1");
 }
 
 TEST(ProblemValidation, BodyIdsSetTheKindsOrGetANamedError)

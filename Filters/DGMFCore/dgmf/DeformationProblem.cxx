@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -21,7 +22,7 @@ std::string Number(double value)
     text.str("");
     text.precision(digits);
     text << value;
-    if (!std::isfinite(value) || std::stod(text.str()) == value)
+    if (!std::isfinite(value) || std::strtod(text.str().c_str(), nullptr) == value)
     {
       break;
     }

@@ -96,16 +96,18 @@ std::int32_t ProjectOntoHull(const Triangulation& t, Handle outer, int dimension
   double best = -std::numeric_limits<double>::infinity();
   std::int32_t bestElement = -1;
   double bestWeights[4] = { 0, 0, 0, 0 };
-  std::unordered_set<std::int32_t> visited;
+  // The facets visited, each as its element and the corner opposite it (an element can have
+  // two or three facets on the hull, and the walk can go from one to the next).
+  std::unordered_set<std::int64_t> visited;
   for (int step = 0; step < HullWalkSteps; ++step)
   {
     const Handle inner = outer->neighbor(outer->index(t.infinite_vertex()));
     const std::int32_t element = inner->info();
-    if (!visited.insert(element).second)
+    const int opposite = inner->index(outer);
+    if (!visited.insert(std::int64_t(element) * 4 + opposite).second)
     {
       break; // round a hull edge or corner: the best facet so far is the nearest
     }
-    const int opposite = inner->index(outer);
     double w[4];
     int most = 0;
     const double smallest =
