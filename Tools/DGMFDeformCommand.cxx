@@ -44,6 +44,7 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace
@@ -426,7 +427,9 @@ int main(int argc, char* argv[])
     !outputFolder.empty() && !std::filesystem::is_directory(outputFolder, folderError))
   {
     std::cerr << "dgmf-deform: error: the output's folder " << outputFolder.string()
-              << (folderError ? " cannot be used: " + folderError.message() : " does not exist")
+              << (folderError && folderError != std::errc::no_such_file_or_directory
+                     ? " cannot be used: " + folderError.message()
+                     : " does not exist")
               << "\n";
     return ExitFailure;
   }

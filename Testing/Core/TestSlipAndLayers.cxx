@@ -228,14 +228,17 @@ TEST(SlipPlanes, SlipNodesStayInTheirPlaneAndSlideWithTheBody)
 
 namespace
 {
-/// `problem` deformed with DGMF on its mapping, which locates the slip nodes with the problem's
-/// slip planes (`outside`: the mapping's count of nodes outside the graph).
-std::vector<double> DeformWithSlipPlanes(
-  const dgmf::DeformationProblem& problem, std::size_t& outside)
+/// `problem` deformed with DGMF: 3 coordinates per node. Its mapping locates the slip nodes with
+/// the problem's slip planes (`outside`, if given: the mapping's count of nodes outside the graph).
+std::vector<double> DeformWithDGMF(
+  const dgmf::DeformationProblem& problem, std::size_t* outside = nullptr)
 {
   const dgmf::DelaunayMapping mapping(problem.Dimension, problem.Points, problem.NumberOfNodes,
     problem.Kinds, dgmf::SerialFor, 0, {}, &problem.Slip);
-  outside = mapping.GetNumberOfOutsideNodes();
+  if (outside)
+  {
+    *outside = mapping.GetNumberOfOutsideNodes();
+  }
   std::vector<double> deformed(3 * problem.NumberOfNodes);
   dgmf::VectorFieldStore fields(problem.NumberOfNodes);
   dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
@@ -296,8 +299,8 @@ TEST(SlipPlanes, ATiltedNoisyPlaneGivesTheResultOfTheAxisPlane)
   ASSERT_EQ(tiltedProblem.Slip.Planes[0].Axis, -1);
   ASSERT_GT(tiltedProblem.Slip.Planes[0].Deviation, 0.0);
   std::size_t axisOutside = 0, tiltedOutside = 0;
-  const std::vector<double> expected = DeformWithSlipPlanes(axisProblem, axisOutside);
-  const std::vector<double> deformed = DeformWithSlipPlanes(tiltedProblem, tiltedOutside);
+  const std::vector<double> expected = DeformWithDGMF(axisProblem, &axisOutside);
+  const std::vector<double> deformed = DeformWithDGMF(tiltedProblem, &tiltedOutside);
   EXPECT_EQ(axisOutside, 0u);
   EXPECT_EQ(tiltedOutside, 0u); // the noise put slip nodes outside the graph
   double largest = 0.0, slid = 0.0;
@@ -327,19 +330,6 @@ dgmf::DeformationProblem Turned(const dgmf_test::NodeSet& nodes, int axis, doubl
   problem.Kinds = nodes.Kinds.data();
   problem.Motions[0].AnglesDegrees[axis] = degrees;
   return problem;
-}
-
-/// `problem` deformed with DGMF: 3 coordinates per node.
-std::vector<double> DeformWithDGMF(const dgmf::DeformationProblem& problem)
-{
-  const dgmf::DelaunayMapping mapping(
-    problem.Dimension, problem.Points, problem.NumberOfNodes, problem.Kinds, dgmf::SerialFor);
-  std::vector<double> deformed(3 * problem.NumberOfNodes);
-  dgmf::VectorFieldStore fields(problem.NumberOfNodes);
-  dgmf::CreateMethod(dgmf::Method::DGMF, dgmf::MethodParameters())
-    ->Deform(
-      problem, &mapping, dgmf::DeformationOutputs{ deformed.data(), &fields }, dgmf::SerialFor);
-  return deformed;
 }
 
 /// `problem` deformed with DGMF through the 2D problem of its `layers`: 3 coordinates per node.
