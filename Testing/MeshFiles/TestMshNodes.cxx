@@ -107,6 +107,36 @@ TEST(MshNodes, NodesGoInTheOrderOfTheirTagsAndLineEndsStay)
     "$EndElements\r\n");
 }
 
+TEST(MshNodes, AVersion22NodeNoElementUsesKeepsItsBytes)
+{
+  // Nodes 6, 7 and 9 are used by no element (gmsh's reading, and ours, drop them) and the tags
+  // are out of order: the 7 points read are written by tag, the unused nodes' lines stay as they
+  // were. Until 2026-11-30 such a file went through gmsh's writer, which dropped those nodes (or
+  // refused the file with gaps in its tags).
+  const fs::path dir = mt::FreshDirectory("dgmf-msh-nodes-unused");
+  const std::string source = (dir / "unused.msh").string(), target = (dir / "moved.msh").string();
+  const std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                           "$PhysicalNames\n1\n3 9 \"fluid\"\n$EndPhysicalNames\n"
+                           "$Nodes\n10\n1 0 0 0\n9 5 5 5\n3 0 1 0\n2 1 0 0\n4 0 0 1\n5 1 1 0\n"
+                           "6 1 0 1\n8 1 1 1\n7 0 1 1\n10 2 2 2\n$EndNodes\n"
+                           "$Elements\n2\n20 4 2 9 4 1 2 3 4\n30 4 2 9 4 2 5 8 10\n"
+                           "$EndElements\n";
+  mt::WriteBytes(source, text);
+  const mf::NamedMesh mesh = mf::ReadGmsh(source);
+  ASSERT_EQ(mesh.NumberOfNodes(), 7u);
+  const std::vector<double> moved = Moved(mesh.Points);
+  mf::WriteGmshWithPoints(source, target, moved.data(), mesh.NumberOfNodes());
+  const std::string written = mt::Bytes(target);
+  EXPECT_EQ(OutsideNodes(written), OutsideNodes(text));
+  for (const char* kept : { "\n9 5 5 5\n", "\n6 1 0 1\n", "\n7 0 1 1\n" })
+  {
+    EXPECT_NE(written.find(kept), std::string::npos) << kept << " in\n" << written;
+  }
+  const mf::NamedMesh back = mf::ReadGmsh(target);
+  EXPECT_EQ(back.NodeIds, mesh.NodeIds);
+  EXPECT_EQ(std::memcmp(back.Points.data(), moved.data(), moved.size() * sizeof(double)), 0);
+}
+
 TEST(MshNodes, ALineNodesInsideAnotherSectionIsNotTheNodes)
 {
   const std::string text = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Comments\n$Nodes\n1\n"

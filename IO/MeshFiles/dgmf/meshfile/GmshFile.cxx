@@ -118,6 +118,16 @@ void WriteGmshWithPoints(
     {
       return;
     }
+    // A version 2.2 file with nodes no element uses: read as gmsh reads it, without them; the
+    // points are then the nodes of the tags read, and the others keep their bytes.
+    NamedMesh read;
+    if (std::fabs(format.Version - 2.2) < 1e-9 && ReadMsh22(file.Bytes(), format.Binary, read) &&
+      read.NodeIds.size() == count &&
+      WriteMshWithMovedNodesByTag(
+        file.Bytes(), format, points, read.NodeIds.data(), count, target, temporary.string()))
+    {
+      return;
+    }
   }
   const GmshModule gmsh = LoadGmshModule(source);
   try

@@ -67,7 +67,9 @@ NamedMesh ReadGmshWithGmsh(const std::string& path);
  * Versions 2.2 and 4.1 without parametric nodes (what gmsh writes by default): the source's own
  * bytes with the coordinates in its $Nodes section replaced (ReplaceMshNodeCoordinates,
  * MshNodes.h), every other byte kept, without gmsh's library; ASCII coordinates as the shortest
- * decimal that reads back as the same double, so both modes keep every bit.
+ * decimal that reads back as the same double, so both modes keep every bit. A version 2.2 file
+ * with nodes no element uses (which its reading drops, as gmsh's does): the points replace the
+ * nodes of the tags read (WriteMshWithMovedNodesByTag), the unused nodes keep their bytes.
  *
  * Any other file (versions 2.0, 2.1 and 4.0, parametric nodes, a binary file of the other byte
  * order, a $Nodes section that does not parse, or a number of nodes other than `count`) goes

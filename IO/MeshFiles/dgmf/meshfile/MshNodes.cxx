@@ -228,16 +228,51 @@ bool RanksOfTags(const std::vector<std::uint64_t>& tags, std::vector<std::size_t
   return true;
 }
 
+/// A record that keeps its coordinates (a node no point is: Replacement::Rank).
+constexpr std::size_t KeptNode = static_cast<std::size_t>(-1);
+
 /// Where a file's coordinates are, and the point each node takes.
 struct Replacement
 {
   NodeRecords Records;
-  std::vector<std::size_t> Rank; ///< per record, the index of its point
+  std::vector<std::size_t> Rank; ///< per record, the index of its point, or KeptNode
 };
 
-/// The replacement of `count` nodes' coordinates in `file`; false if this cannot rewrite it.
-bool PlanReplacement(
-  std::string_view file, const MshFormat& format, std::size_t count, Replacement& plan)
+/**
+ * Points given by tag (`tags`, increasing, `count`): each record's point, or KeptNode for a node
+ * no point is; false when a tag is not a node. `plan.Rank` holds the ranks of all the file's tags.
+ */
+bool MatchTags(const std::int64_t* tags, std::size_t count, Replacement& plan)
+{
+  std::vector<std::uint64_t> sorted(plan.Rank.size());
+  for (std::size_t r = 0; r < plan.Rank.size(); ++r)
+  {
+    sorted[plan.Rank[r]] = plan.Records.Tags[r];
+  }
+  std::vector<std::size_t> pointOfRank(sorted.size(), KeptNode);
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < sorted.size() && j < count; ++k)
+  {
+    if (tags[j] >= 0 && static_cast<std::uint64_t>(tags[j]) == sorted[k])
+    {
+      pointOfRank[k] = j++;
+    }
+  }
+  if (j != count)
+  {
+    return false;
+  }
+  for (std::size_t& rank : plan.Rank)
+  {
+    rank = pointOfRank[rank];
+  }
+  return true;
+}
+
+/// The replacement of `count` nodes' coordinates in `file`, or with `tags` of those nodes among
+/// more; false if this cannot rewrite it.
+bool PlanReplacement(std::string_view file, const MshFormat& format, std::size_t count,
+  Replacement& plan, const std::int64_t* tags = nullptr)
 {
   const bool v22 = std::fabs(format.Version - 2.2) < 1e-9;
   const bool v41 = std::fabs(format.Version - 4.1) < 1e-9;
@@ -255,8 +290,10 @@ bool PlanReplacement(
     ? (v22 ? ParseBinary22(cursor, plan.Records) : ParseBinary41(cursor, plan.Records))
     : (v22 ? ParseAscii22(cursor, plan.Records) : ParseAscii41(cursor, plan.Records));
   // (The layouts above give the records in file order, which the ASCII rewrite relies on.)
-  return parsed && plan.Records.Tags.size() == count && RanksOfTags(plan.Records.Tags, plan.Rank) &&
-    std::is_sorted(plan.Records.At.begin(), plan.Records.At.end());
+  const bool counted = tags ? plan.Records.Tags.size() >= count : plan.Records.Tags.size() == count;
+  return parsed && counted && RanksOfTags(plan.Records.Tags, plan.Rank) &&
+    std::is_sorted(plan.Records.At.begin(), plan.Records.At.end()) &&
+    (!tags || MatchTags(tags, count, plan));
 }
 
 /// A binary file appended to `append(data, size)` in pieces: its bytes as they are, each node's
@@ -268,6 +305,10 @@ void WriteBinary(
   std::size_t copied = 0;
   for (std::size_t r = 0; r < plan.Rank.size(); ++r)
   {
+    if (plan.Rank[r] == KeptNode)
+    {
+      continue; // its bytes go with the next piece
+    }
     const std::size_t at = plan.Records.At[r];
     append(file.data() + copied, at - copied);
     append(reinterpret_cast<const char*>(points + 3 * plan.Rank[r]), 3 * sizeof(double));
@@ -287,6 +328,10 @@ void WriteAscii(std::string_view file, const Replacement& plan, const double* po
   char number[32];
   for (std::size_t r = 0; r < plan.Rank.size(); ++r)
   {
+    if (plan.Rank[r] == KeptNode)
+    {
+      continue; // its text goes with the next piece
+    }
     Cursor at{ file, plan.Records.At[r] };
     for (int c = 0; c < 3; ++c)
     {
@@ -337,8 +382,15 @@ bool ReplaceMshNodeCoordinates(
 bool WriteMshWithMovedNodes(std::string_view file, const MshFormat& format, const double* points,
   std::size_t count, const std::string& target, const std::string& temporary)
 {
+  return WriteMshWithMovedNodesByTag(file, format, points, nullptr, count, target, temporary);
+}
+
+bool WriteMshWithMovedNodesByTag(std::string_view file, const MshFormat& format,
+  const double* points, const std::int64_t* tags, std::size_t count, const std::string& target,
+  const std::string& temporary)
+{
   Replacement plan;
-  if (!PlanReplacement(file, format, count, plan))
+  if (!PlanReplacement(file, format, count, plan, tags))
   {
     return false;
   }

@@ -43,6 +43,15 @@ bool ReplaceMshNodeCoordinates(
 bool WriteMshWithMovedNodes(std::string_view file, const MshFormat& format, const double* points,
   std::size_t count, const std::string& target, const std::string& temporary);
 
+/**
+ * The same for a file with more nodes than points: `tags` (increasing, one per point) are the
+ * nodes the points are (a version 2.2 file read as gmsh reads it: the nodes elements use); the
+ * other nodes keep their bytes. False as WriteMshWithMovedNodes, and when a tag is not a node.
+ */
+bool WriteMshWithMovedNodesByTag(std::string_view file, const MshFormat& format,
+  const double* points, const std::int64_t* tags, std::size_t count, const std::string& target,
+  const std::string& temporary);
+
 } // namespace meshfile
 } // namespace dgmf
 
