@@ -219,8 +219,9 @@ NodeRoles AssignRoles(
   std::vector<std::uint8_t> rank;
   dgmf::AssignOnHugePages(rank, n, std::uint8_t(None));
   std::vector<std::int32_t> body(selection.Moving.size() > 1 ? n : 0, 0);
-  // The slip entry of a node, or -2 on two planes.
+  // The slip entry of a node (-2 on three planes or more), and its second one on two planes.
   std::vector<std::int32_t> slipEntry(selection.Slip.empty() ? 0 : n, -1);
+  std::vector<std::int32_t> slipSecond(selection.Slip.empty() ? 0 : n, -1);
   const auto mark = [&](std::size_t l, int role, std::int32_t bodyId, std::int32_t entry)
   {
     for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
@@ -228,7 +229,18 @@ NodeRoles AssignRoles(
       const auto i = static_cast<std::size_t>(leaves[l].Node(point));
       if (role == SlipRank)
       {
-        slipEntry[i] = slipEntry[i] == -1 || slipEntry[i] == entry ? entry : -2;
+        if (slipEntry[i] == -1 || slipEntry[i] == entry)
+        {
+          slipEntry[i] = entry;
+        }
+        else if (slipEntry[i] >= 0 && (slipSecond[i] == -1 || slipSecond[i] == entry))
+        {
+          slipSecond[i] = entry;
+        }
+        else
+        {
+          slipEntry[i] = -2;
+        }
       }
       if (role > rank[i] ||
         (role == MovingRank && rank[i] == MovingRank && !body.empty() && body[i] == 0))
@@ -286,6 +298,7 @@ NodeRoles AssignRoles(
   roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());
   roles.SlipNames = selection.Slip;
+  const bool lines = dimension == 3 && !layers.Found();
   const auto kindOf = [&](std::size_t i)
   {
     switch (rank[i])
@@ -295,8 +308,10 @@ NodeRoles AssignRoles(
       case StaticRank:
         return dgmf::NodeKind::StaticBoundary;
       case SlipRank:
-        // On two slip planes, a node cannot slide in both: static.
-        return slipEntry[i] == -2 ? dgmf::NodeKind::StaticBoundary : dgmf::NodeKind::SlipBoundary;
+        // On two planes of a 3D mesh a node slides along their line; on three (a corner), or on
+        // two lines of a 2D mesh (or of a one-cell-thick one), it cannot move: static.
+        return slipEntry[i] == -2 || (slipSecond[i] >= 0 && !lines) ? dgmf::NodeKind::StaticBoundary
+                                                                    : dgmf::NodeKind::SlipBoundary;
       default:
         return dgmf::NodeKind::Interior;
     }
@@ -307,8 +322,14 @@ NodeRoles AssignRoles(
   {
     if (roles.Kinds[i] == dgmf::NodeKind::SlipBoundary)
     {
-      roles.SlipNodes[static_cast<std::size_t>(slipEntry[i])].push_back(
-        static_cast<std::int32_t>(i));
+      // A node of a line is in both planes' fits (the gathering gives it both planes).
+      for (const std::int32_t entry : { slipEntry[i], slipSecond[i] })
+      {
+        if (entry >= 0)
+        {
+          roles.SlipNodes[static_cast<std::size_t>(entry)].push_back(static_cast<std::int32_t>(i));
+        }
+      }
     }
   }
   if (selection.Moving.size() > 1)

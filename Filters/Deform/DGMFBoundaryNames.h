@@ -54,10 +54,11 @@ struct BoundarySelection
 /// The role of every merged node, from the selection.
 struct NodeRoles
 {
-  dgmf::UninitializedVector<dgmf::NodeKind> Kinds;  ///< written in blocks on the threads
-  std::vector<std::int32_t> BodyIds;                ///< with several moving bodies, else empty
-  std::vector<std::vector<std::int32_t>> SlipNodes; ///< per slip entry, its slip nodes
-  std::vector<std::string> SlipNames;               ///< the entries, for messages
+  dgmf::UninitializedVector<dgmf::NodeKind> Kinds; ///< written in blocks on the threads
+  std::vector<std::int32_t> BodyIds;               ///< with several moving bodies, else empty
+  /// per slip entry, its slip nodes (a node on two entries' planes is in both)
+  std::vector<std::vector<std::int32_t>> SlipNodes;
+  std::vector<std::string> SlipNames; ///< the entries, for messages
   /// The planes of a one-cell-thick mesh the roles were assigned with (the gathering reuses them)
   dgmf::ExtrudedLayers Layers;
 };

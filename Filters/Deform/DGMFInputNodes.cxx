@@ -29,6 +29,7 @@
 #include <cstring>
 #include <exception>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace dgmf_vtk
 {
@@ -334,6 +335,8 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
       }
     }
   }
+  // A node in two groups (the line where two planes meet) is one slip node with two planes.
+  std::unordered_map<std::int32_t, std::size_t> listed;
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     if (groups[g].empty())
@@ -342,11 +345,23 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
     }
     nodes.Slip.Planes.push_back(dgmf::FitSlipPlane(nodes.Points, groups[g].data(), groups[g].size(),
       names[g], dgmf::SlipPlaneTolerance, nodes.Dimension));
+    const auto plane = static_cast<std::int32_t>(nodes.Slip.Planes.size() - 1);
     for (std::int32_t node : groups[g])
     {
+      const auto [at, first] = listed.emplace(node, nodes.Slip.Nodes.size());
+      if (!first)
+      {
+        nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
+        nodes.Slip.SecondPlanes[at->second] = plane;
+        continue;
+      }
       nodes.Slip.Nodes.push_back(node);
-      nodes.Slip.NodePlanes.push_back(static_cast<std::int32_t>(nodes.Slip.Planes.size() - 1));
+      nodes.Slip.NodePlanes.push_back(plane);
     }
+  }
+  if (!nodes.Slip.SecondPlanes.empty())
+  {
+    nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
   }
 }
 

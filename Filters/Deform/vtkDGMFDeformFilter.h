@@ -478,7 +478,8 @@ public:
    * lower dimension than the mesh), and the nodes of the mesh's own boundary that no block holds
    * (a reader asked for the moving patch only), are static, but for the two planes of a
    * one-cell-thick mesh. A node in several blocks is moving if one of them moves (the first body
-   * listed wins), else static if one is static, else slip; a node on two slip planes is static.
+   * listed wins), else static if one is static, else slip; a node on two slip planes of a 3D mesh
+   * slides along their line, on three (or on two lines of a 2D mesh) it is static.
    * With names, the boundary-marker and body-id arrays are not read; an unknown name is an error
    * that lists the input's block names. Default: none (the marker or the mesh's boundary decide).
    */

@@ -224,6 +224,28 @@ TEST(SlipPlanes, SlipNodesStayInTheirPlaneAndSlideWithTheBody)
   tilted.NodePlanes = { 0 };
   tilted.Apply(points.data(), moved.data());
   EXPECT_NEAR((moved[0] + moved[1] + moved[2]) / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 1e-15);
+
+  // A node on two planes keeps the part of its displacement along their line: two axis planes
+  // keep both coordinates bit for bit; two tilted ones, the projection onto their line.
+  dgmf::SlipConstraint corner;
+  dgmf::SlipPlane yPlane, zPlane;
+  yPlane.Normal[1] = 1.0;
+  yPlane.Normal[2] = 0.0;
+  yPlane.Axis = 1;
+  zPlane.Axis = 2;
+  corner.Planes = { yPlane, zPlane, plane };
+  corner.Nodes = { 0 };
+  corner.NodePlanes = { 0 };
+  corner.SecondPlanes = { 1 };
+  std::vector<double> edge = { 1.3, 0.2, -0.1 };
+  corner.Apply(points.data(), edge.data());
+  EXPECT_EQ(edge, (std::vector<double>{ 1.3, 0.0, 0.0 }));
+  corner.SecondPlanes = { 2 }; // y = 0 and x + y + z = 1: the line along (1, 0, -1)
+  edge = { 1.3, 0.2, -0.1 };
+  corner.Apply(points.data(), edge.data());
+  EXPECT_NEAR(edge[0], 1.2, 1e-15);
+  EXPECT_NEAR(edge[1], 0.0, 1e-15);
+  EXPECT_NEAR(edge[2], -0.2, 1e-15);
 }
 
 namespace

@@ -573,3 +573,35 @@ TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
   EXPECT_NE(results[0][3 * inside], 2.0);
   EXPECT_EQ(results[0], results[1]);
 }
+
+TEST(BoundaryNames, ANodeOnTwoSlipPlanesSlidesAlongTheirLine)
+{
+  // A piston: the box's side xmin pushed by 0.5 along x, ymin and zmin slip planes (a quarter
+  // model), the other sides static. The nodes on the edge where ymin and zmin meet slide along x,
+  // their y and z kept bit for bit (they were held static until 2026-11-30, which inverted cells
+  // next to the body on such edges); the nodes on one plane keep its coordinate.
+  const int n = 6;
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+  filter->AddMovingBoundary("xmin");
+  filter->AddSlipBoundary("ymin");
+  filter->AddSlipBoundary("zmin");
+  filter->SetTranslation(0.5, 0.0, 0.0);
+  filter->Update();
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  vtkUnstructuredGrid* volume = VolumeOf(blocks);
+  ASSERT_NE(volume, nullptr);
+  EXPECT_EQ(blocks->GetFieldData()->GetArray("InvertedCellCount")->GetTuple1(0), 0.0);
+  const vtkIdType side = n + 1;
+  double slid = 1.0;
+  for (int x = 1; x < n; ++x)
+  {
+    const double* p = volume->GetPoint(x); // y = 0, z = 0
+    ASSERT_EQ(p[1], 0.0) << "edge node x = " << x;
+    ASSERT_EQ(p[2], 0.0) << "edge node x = " << x;
+    slid = std::min(slid, p[0] - x);
+    ASSERT_EQ(volume->GetPoint(x + side * side * 3)[1], 0.0); // on ymin only (z = 3)
+    ASSERT_EQ(volume->GetPoint(x + side * 3)[2], 0.0);        // on zmin only (y = 3)
+  }
+  EXPECT_GT(slid, 0.01) << "the edge's nodes follow the piston";
+}

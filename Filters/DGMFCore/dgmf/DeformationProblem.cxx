@@ -103,9 +103,17 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
     }
   }
   const SlipConstraint& slip = problem.Slip;
-  if (slip.NodePlanes.size() != slip.Nodes.size())
+  if (slip.NodePlanes.size() != slip.Nodes.size() ||
+    (!slip.SecondPlanes.empty() && slip.SecondPlanes.size() != slip.Nodes.size()))
   {
     throw std::invalid_argument("every slip node needs its plane");
+  }
+  for (std::int32_t second : slip.SecondPlanes)
+  {
+    if (second < -1 || (second >= 0 && static_cast<std::size_t>(second) >= slip.Planes.size()))
+    {
+      throw std::invalid_argument("a slip node's second plane is not one of the planes");
+    }
   }
   for (std::size_t k = 0; k < slip.Nodes.size(); ++k)
   {

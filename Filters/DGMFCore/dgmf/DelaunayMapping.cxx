@@ -290,9 +290,15 @@ void DelaunayMapping::LocateSlipNodesInside(
         {
           continue;
         }
+        // A node on two planes (their line) goes inside from both.
         const double* p = points + 3 * i;
         const std::array<double, 3>& shift = inward[static_cast<std::size_t>(slip.NodePlanes[k])];
-        const double inside[3] = { p[0] + shift[0], p[1] + shift[1], p[2] + shift[2] };
+        const std::int32_t second = slip.SecondPlaneOf(k);
+        double inside[3] = { p[0] + shift[0], p[1] + shift[1], p[2] + shift[2] };
+        for (int c = 0; c < 3 && second >= 0; ++c)
+        {
+          inside[c] += inward[static_cast<std::size_t>(second)][static_cast<std::size_t>(c)];
+        }
         const DelaunayGraph::Location location = graph.LocateExactly(inside, this->NodeElement[i]);
         if (location.Outside)
         {

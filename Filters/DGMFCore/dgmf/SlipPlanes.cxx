@@ -194,6 +194,7 @@ bool SlipConstraint::operator==(const SlipConstraint& other) const
       a.Deviation == b.Deviation;
   };
   return this->Nodes == other.Nodes && this->NodePlanes == other.NodePlanes &&
+    this->SecondPlanes == other.SecondPlanes &&
     std::equal(this->Planes.begin(), this->Planes.end(), other.Planes.begin(), other.Planes.end(),
       samePlane);
 }
@@ -206,6 +207,34 @@ void SlipConstraint::Apply(const double* points, double* deformed) const
     const SlipPlane& plane = this->Planes[static_cast<std::size_t>(this->NodePlanes[k])];
     const double* x = points + 3 * i;
     double* y = deformed + 3 * i;
+    const std::int32_t second = this->SecondPlaneOf(k);
+    if (second >= 0)
+    {
+      // Along the line of the two planes: both axes kept exactly, or the displacement projected
+      // onto the line's direction.
+      const SlipPlane& other = this->Planes[static_cast<std::size_t>(second)];
+      if (plane.Axis >= 0 && other.Axis >= 0 && plane.Axis != other.Axis)
+      {
+        y[plane.Axis] = x[plane.Axis];
+        y[other.Axis] = x[other.Axis];
+        continue;
+      }
+      const double* a = plane.Normal;
+      const double* b = other.Normal;
+      double d[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0] };
+      const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (length > 1e-12)
+      {
+        const double along =
+          ((y[0] - x[0]) * d[0] + (y[1] - x[1]) * d[1] + (y[2] - x[2]) * d[2]) / (length * length);
+        for (int c = 0; c < 3; ++c)
+        {
+          y[c] = x[c] + along * d[c];
+        }
+        continue;
+      }
+    }
     if (plane.Axis >= 0)
     {
       y[plane.Axis] = x[plane.Axis];

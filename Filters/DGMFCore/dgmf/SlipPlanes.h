@@ -56,6 +56,15 @@ struct SlipConstraint
   std::vector<SlipPlane> Planes;
   std::vector<std::int32_t> Nodes;      ///< SlipBoundary nodes
   std::vector<std::int32_t> NodePlanes; ///< the plane of each of Nodes (index into Planes)
+  /// Empty, or per node of Nodes a second plane (index into Planes) or -1: a node on two planes
+  /// (the edge where two symmetry planes of a 3D mesh meet) slides along their line.
+  std::vector<std::int32_t> SecondPlanes;
+
+  /// The second plane of the k-th node, or -1.
+  std::int32_t SecondPlaneOf(std::size_t k) const
+  {
+    return k < this->SecondPlanes.size() ? this->SecondPlanes[k] : -1;
+  }
 
   bool Empty() const { return this->Nodes.empty(); }
 
@@ -65,7 +74,8 @@ struct SlipConstraint
   /**
    * Moves every slip node of `deformed` back into its plane: the component of its displacement
    * (deformed - points) along the plane's normal is removed; with an axis-aligned plane the
-   * node's coordinate along the axis is its original one, bit for bit.
+   * node's coordinate along the axis is its original one, bit for bit. A node on two planes keeps
+   * the component along their line only (both coordinates bit for bit for two axis planes).
    */
   void Apply(const double* points, double* deformed) const;
 };
