@@ -3,7 +3,8 @@ the mesh around the wing of the wingMotion 2D tutorial, read with ParaView's Ope
 
     build/bin/dgmf-pvpython Examples/openfoam_wing_pictures.py CASE DEFORMED_CASE OUT_PREFIX
 
-writes OUT_PREFIX_before.png and OUT_PREFIX_after.png (the front plane, edges shown, cells
+writes OUT_PREFIX_before.png and OUT_PREFIX_after.png (OUT_PREFIX's folder made if new; exit 1
+if a picture cannot be written) (the front plane, edges shown, cells
 coloured by the deformed case's SizeSkew computed with the Size Skew Quality filter when the
 plugin is given in DGMF_PLUGIN; dgmf-pvpython sets it). Without an X display the script runs
 itself again under xvfb-run (dgmf_display.py).
@@ -18,6 +19,9 @@ from dgmf_display import ensure_display
 
 ensure_display("openfoam_wing_pictures.py")
 case, deformed, prefix = sys.argv[1:4]
+# The pictures' folder is made if new (SaveScreenshot does not, and only says it cannot write).
+if os.path.dirname(prefix):
+    os.makedirs(os.path.dirname(prefix), exist_ok=True)
 
 
 def read(directory):
@@ -67,6 +71,8 @@ for name, source in (("before", before), ("after", colour or after)):
     view.CameraParallelProjection = 1
     view.CameraParallelScale = 0.62
     Render(view)
-    SaveScreenshot("%s_%s.png" % (prefix, name), view, ImageResolution=[800, 600])
+    picture = "%s_%s.png" % (prefix, name)
+    if not SaveScreenshot(picture, view, ImageResolution=[800, 600]) or not os.path.exists(picture):
+        sys.exit("could not write %s" % picture)
     Hide(source, view)
 print("wrote %s_before.png and %s_after.png" % (prefix, prefix))

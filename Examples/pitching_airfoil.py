@@ -12,7 +12,8 @@ script
 1. plays every time step and records the quality of each frame (SizeSkewMinimum,
    InvertedCellCount and MotionTime from the filter's field data);
 2. saves the whole series with ParaView's Save Data (OUT_DIR/pitch.pvd and OUT_DIR/pitch/);
-3. renders four frames into one picture strip (OUT_DIR/pitch_strip.png) and plots the minimum
+3. renders four frames (OUT_DIR/frame_NNNN.png, kept) into one picture strip
+   (OUT_DIR/pitch_strip.png) and plots the minimum
    quality over the cycle (OUT_DIR/pitch_quality.png; OUT_DIR/pitch_quality.csv has the numbers).
 
 It prints one line per frame and exits with 1 if a frame has an inverted cell. Copy it and change

@@ -392,6 +392,15 @@ int main(int argc, char* argv[])
 {
   dgmf_cli::InstallMessageWindow();
   dgmf_cli::InstallSignalHandlers();
+  // --help (or -h) anywhere: the usage on stdout, exit 0 (asked for, not a bad option).
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+    {
+      std::cout << dgmf_cli::Usage();
+      return ExitSuccess;
+    }
+  }
   vtkNew<vtkDGMFDeformFilter> filter;
   dgmf_cli::CommandOptions options;
   const int parsed = dgmf_cli::ParseCommandLine(argc, argv, filter, options);
