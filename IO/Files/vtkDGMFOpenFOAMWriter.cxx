@@ -16,6 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -118,6 +119,7 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     {
       std::ofstream(target.string()).flush(); // the empty file ParaView opens a case with
     }
+    this->WarnAboutOtherMeshes(caseDirectory);
   }
   catch (const std::bad_alloc&)
   {
@@ -126,6 +128,45 @@ void vtkDGMFOpenFOAMWriter::WriteData()
   catch (const std::exception& e)
   {
     fail(e.what());
+  }
+}
+
+void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& caseDirectory)
+{
+  namespace fs = std::filesystem;
+  // Meshes a solver may read instead of the one written: a polyMesh in a time directory before
+  // the one written (a solver started at time 0 reads 0/polyMesh over constant's), and the
+  // processor directories of a decomposed case (a parallel run reads theirs).
+  const std::string written = this->TimeDirectory ? this->TimeDirectory : "constant";
+  std::error_code error;
+  std::vector<std::string> shadowing;
+  bool decomposed = false;
+  for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
+  {
+    const std::string name = entry.path().filename().string();
+    decomposed = decomposed || name.rfind("processor", 0) == 0;
+    char* end = nullptr;
+    const double time = std::strtod(name.c_str(), &end);
+    const bool isTime = !name.empty() && end && *end == '\0';
+    const bool earlier =
+      written == "constant" || (std::strtod(written.c_str(), nullptr) > time && name != written);
+    if (isTime && earlier && fs::exists(entry.path() / "polyMesh", error))
+    {
+      shadowing.push_back(name);
+    }
+  }
+  for (const std::string& name : shadowing)
+  {
+    vtkWarningMacro(<< (caseDirectory / name / "polyMesh").string()
+                    << " has a mesh of its own: a solver started at time " << name
+                    << " reads it, not the deformed points written to " << written
+                    << "/polyMesh (remove it, or write to that time).");
+  }
+  if (decomposed)
+  {
+    vtkWarningMacro(<< caseDirectory.string()
+                    << " is decomposed: its processor* directories keep the old mesh; run "
+                       "decomposePar again (-force) before a parallel run.");
   }
 }
 

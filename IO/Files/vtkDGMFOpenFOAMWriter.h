@@ -30,6 +30,7 @@
 #include "DGMFIOModule.h" // for export macro
 #include "vtkWriter.h"
 
+#include <filesystem>
 #include <string>
 
 class DGMFIO_EXPORT vtkDGMFOpenFOAMWriter : public vtkWriter
@@ -80,6 +81,9 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   void WriteData() override;
+  /// Warns about meshes a solver would read instead of the one written (an earlier time's
+  /// polyMesh, processor directories).
+  void WarnAboutOtherMeshes(const std::filesystem::path& caseDirectory);
 
   char* FileName = nullptr;
   char* SourceCase = nullptr;
