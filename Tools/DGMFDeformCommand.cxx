@@ -379,9 +379,9 @@ int RunSeries(
     frames.emplace_back(t, frame.Output);
     if (k + 1 < steps.size())
     {
-      writeCollection(false);
+      const bool kept = writeCollection(false);
       dgmf_cli::SetWrittenSoFar(std::to_string(frames.size()) + " frames before it were written" +
-        (collected ? " (and " + collection + " of them)" : ""));
+        (collected && kept ? " (and " + collection + " of them)" : ""));
     }
   }
   return writeCollection() ? ExitSuccess : ExitFailure;

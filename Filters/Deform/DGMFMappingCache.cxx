@@ -97,7 +97,9 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
 
 std::size_t MappingCache::GetMemorySize() const
 {
-  const std::size_t slip = this->Slip.Nodes.capacity() * 2 * sizeof(std::int32_t) +
+  const std::size_t slip = (this->Slip.Nodes.capacity() + this->Slip.NodePlanes.capacity() +
+                             this->Slip.SecondPlanes.capacity()) *
+      sizeof(std::int32_t) +
     this->Slip.Planes.capacity() * sizeof(dgmf::SlipPlane);
   return (this->Mapping ? this->Mapping->GetMemorySize() : 0) + slip;
 }

@@ -119,7 +119,14 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     {
       std::ofstream(target.string()).flush(); // the empty file ParaView opens a case with
     }
-    this->WarnAboutOtherMeshes(caseDirectory);
+    try
+    {
+      this->WarnAboutOtherMeshes(caseDirectory);
+    }
+    catch (const std::exception&)
+    {
+      // The points are written: a directory that cannot be listed only loses the warnings.
+    }
   }
   catch (const std::bad_alloc&)
   {
@@ -134,9 +141,11 @@ void vtkDGMFOpenFOAMWriter::WriteData()
 void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& caseDirectory)
 {
   namespace fs = std::filesystem;
-  // Meshes a solver may read instead of the one written: a polyMesh in a time directory before
-  // the one written (a solver started at time 0 reads 0/polyMesh over constant's), and the
-  // processor directories of a decomposed case (a parallel run reads theirs).
+  // Meshes a solver may read instead of the one written. A solver started at time S reads the
+  // newest polyMesh at or before S, else constant's: written to constant, any time directory's
+  // polyMesh hides it (0/polyMesh from a solver started at 0); written to time T, a later time's
+  // does (a restart from it; not the earlier frames of a series). And the processor directories
+  // of a decomposed case (a parallel run reads theirs).
   const std::string written = this->TimeDirectory ? this->TimeDirectory : "constant";
   std::error_code error;
   std::vector<std::string> shadowing;
@@ -148,9 +157,10 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
     char* end = nullptr;
     const double time = std::strtod(name.c_str(), &end);
     const bool isTime = !name.empty() && end && *end == '\0';
-    const bool earlier =
-      written == "constant" || (std::strtod(written.c_str(), nullptr) > time && name != written);
-    if (isTime && earlier && fs::exists(entry.path() / "polyMesh", error))
+    const bool hides =
+      written == "constant" || (std::strtod(written.c_str(), nullptr) < time && name != written);
+    std::error_code missing;
+    if (isTime && hides && fs::exists(entry.path() / "polyMesh", missing))
     {
       shadowing.push_back(name);
     }
@@ -159,7 +169,7 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
   {
     vtkWarningMacro(<< (caseDirectory / name / "polyMesh").string()
                     << " has a mesh of its own: a solver started at time " << name
-                    << " reads it, not the deformed points written to " << written
+                    << " or later reads it, not the deformed points written to " << written
                     << "/polyMesh (remove it, or write to that time).");
   }
   if (decomposed)

@@ -137,6 +137,48 @@ TEST(Trajectory, AnAngleAboutOneAxisGoesOnPast180Degrees)
       previous = degrees;
     }
   }
+  // A spin about an oblique axis in 1-degree rows written with 7 digits (as solvers write
+  // tables): the steps' axes differ by rounding, the angle still goes on past 180 degrees, and
+  // the body is where each row puts it.
+  const double spin[3] = { 0.6, 0.0, 0.8 };
+  std::vector<dgmf::TrajectoryRow> rounded;
+  for (int k = 0; k <= 400; ++k)
+  {
+    dgmf::TrajectoryRow row = Row(0.01 * k, 1, 0.0, 0.0, static_cast<std::size_t>(k + 1));
+    const double half = 0.5 * k * 3.14159265358979323846 / 180.0;
+    const double q[4] = { std::cos(half), std::sin(half) * spin[0], 0.0, std::sin(half) * spin[2] };
+    for (int c = 0; c < 4; ++c)
+    {
+      row.Quaternion[c] = std::round(q[c] * 1e7) / 1e7;
+    }
+    rounded.push_back(row);
+  }
+  const dgmf::Trajectory spinning(rounded);
+  double before = 0.0;
+  for (int k = 0; k <= 400; ++k)
+  {
+    const dgmf::RigidMotion motion = spinning.At(1, 0.01 * k, center);
+    const double turned = motion.AxisAngleDegrees *
+      (motion.Axis[0] * spin[0] + motion.Axis[2] * spin[2] < 0.0 ? -1.0 : 1.0);
+    EXPECT_NEAR(turned, k, 1e-3) << "row " << k;
+    EXPECT_LT(std::abs(turned - before), 1.5) << "row " << k;
+    before = turned;
+    // The point (1, 1, 0) where the row's own quaternion puts it.
+    const double p[3] = { 1.0, 1.0, 0.0 };
+    double moved[3];
+    motion.Apply(1.0, p, nullptr, moved);
+    const double* q = rounded[static_cast<std::size_t>(k)].Quaternion;
+    const double u[3] = { q[1], q[2], q[3] };
+    const double uxp[3] = { u[1] * p[2] - u[2] * p[1], u[2] * p[0] - u[0] * p[2],
+      u[0] * p[1] - u[1] * p[0] };
+    const double uxuxp[3] = { u[1] * uxp[2] - u[2] * uxp[1], u[2] * uxp[0] - u[0] * uxp[2],
+      u[0] * uxp[1] - u[1] * uxp[0] };
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(moved[c], p[c] + 2.0 * q[0] * uxp[c] + 2.0 * uxuxp[c], 1e-6) << "row " << k;
+    }
+  }
+
   // One row of RZ = 270: 270 degrees as given (as --angle 270), not -90.
   dgmf::TrajectoryRow once = angles[3];
   const dgmf::Trajectory single({ once });

@@ -330,6 +330,12 @@ DeformationProblem ReduceToLayer(
   {
     const auto k =
       static_cast<std::size_t>(layers.Layer[static_cast<std::size_t>(problem.Slip.Nodes[s])]);
+    if (problem.Slip.SecondPlaneOf(s) >= 0 && storage.Kinds[k] == NodeKind::SlipBoundary)
+    {
+      // On two planes normal to the layer: a point of the 2D problem, which cannot move.
+      storage.Kinds[k] = NodeKind::StaticBoundary;
+      continue;
+    }
     if (!listed[k] && storage.Kinds[k] == NodeKind::SlipBoundary)
     {
       listed[k] = 1;

@@ -224,7 +224,7 @@ void SlipConstraint::Apply(const double* points, double* deformed) const
       double d[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
         a[0] * b[1] - a[1] * b[0] };
       const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      if (length > 1e-12)
+      if (length > SlipPlaneTolerance) // else one plane (a plane split in two patches)
       {
         const double along =
           ((y[0] - x[0]) * d[0] + (y[1] - x[1]) * d[1] + (y[2] - x[2]) * d[2]) / (length * length);

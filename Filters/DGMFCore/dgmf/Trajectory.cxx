@@ -144,6 +144,7 @@ Trajectory::Trajectory(const std::vector<TrajectoryRow>& rows)
         path[k].Axis[axis >= 0 ? axis : 2] = 1.0;
         path[k].Degrees = rows[k].AngleAxis >= 0 ? rows[k].AngleDegrees : 0.0;
         path[k].AxisToNext = true;
+        path[k].AsGiven = true;
       }
       continue;
     }
@@ -162,7 +163,8 @@ Trajectory::Trajectory(const std::vector<TrajectoryRow>& rows)
       const double along =
         here.Axis[0] * stepAxis[0] + here.Axis[1] * stepAxis[1] + here.Axis[2] * stepAxis[2];
       const bool still = here.Axis[0] == 0.0 && here.Axis[1] == 0.0 && here.Axis[2] == 0.0;
-      if (stepDegrees == 0.0 || still || std::abs(std::abs(along) - 1.0) <= 1e-12)
+      // About one axis within 0.01 radian (rounded tables); At() keeps the exact orientation.
+      if (stepDegrees == 0.0 || still || std::abs(along) >= std::cos(0.01))
       {
         const double sign = still || stepDegrees == 0.0 ? 1.0 : (along < 0.0 ? -1.0 : 1.0);
         for (int c = 0; c < 3; ++c)
@@ -224,20 +226,35 @@ RigidMotion Trajectory::At(int body, double t, const double center[3]) const
   const std::vector<RowRotation>& path = this->Rotations.at(body);
   const RowRotation& from = path[static_cast<std::size_t>(&a - rows.data())];
   const RowRotation& to = path[static_cast<std::size_t>(&b - rows.data())];
-  if (&a == &b || from.AxisToNext)
+  const double estimate = from.Degrees + s * (to.Degrees - from.Degrees);
+  if ((&a == &b || from.AxisToNext) && from.AsGiven)
   {
-    // About one axis: the angle, continuous over the rows (beyond 180 degrees).
-    const double degrees = from.Degrees + s * (to.Degrees - from.Degrees);
-    if (degrees != 0.0)
+    // The rows' angles about one coordinate axis: exact, continuous beyond 180 degrees.
+    if (estimate != 0.0)
     {
-      motion.AxisAngleDegrees = degrees;
+      motion.AxisAngleDegrees = estimate;
       std::copy(from.Axis, from.Axis + 3, motion.Axis);
     }
     return motion;
   }
   double q[4], axis[3];
   Slerp(a.Quaternion, b.Quaternion, s, q);
-  const double degrees = AxisAngleOf(q, axis);
+  double degrees = AxisAngleOf(q, axis);
+  if (&a == &b || from.AxisToNext)
+  {
+    // About one axis: the orientation's angle, turned by the multiple of 360 degrees nearest to
+    // the sum of the steps (continuous beyond 180 degrees; the orientation stays the table's).
+    const double* along = from.Axis;
+    const double sign =
+      degrees == 0.0 || axis[0] * along[0] + axis[1] * along[1] + axis[2] * along[2] >= 0.0 ? 1.0
+                                                                                            : -1.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      axis[c] = degrees == 0.0 ? along[c] : sign * axis[c];
+    }
+    degrees *= sign;
+    degrees += 360.0 * std::round((estimate - degrees) / 360.0);
+  }
   if (degrees != 0.0)
   {
     motion.AxisAngleDegrees = degrees;

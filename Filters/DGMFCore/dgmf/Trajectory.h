@@ -48,10 +48,13 @@ void EulerAnglesToQuaternion(const double anglesDegrees[3], double q[4]);
  * The angle is continuous in time where the rotation keeps one axis, beyond 180 degrees: a body
  * whose rows all turn it about one coordinate axis by angles (RX, RY or RZ alone) turns by the
  * angle interpolated linearly between its rows, as given (0, 90, ..., 450 degrees: up to 450);
- * otherwise, over each run of rows whose steps turn about one axis, the steps' angles add up
- * (slerp about a fixed axis is linear in the angle). Elsewhere the angle is that of the
- * orientation, at most 180 degrees. DGMF damps the angle (a node turns by f times it), so an
- * angle that wrapped from 180 to -180 degrees would make the mesh jump between two times.
+ * otherwise, over each run of rows whose steps turn about one axis (within 0.01 radian: rows
+ * written with a few digits), the steps' angles add up, and the orientation slerp gives is
+ * turned by the multiple of 360 degrees nearest to that sum (so the body is exactly where the
+ * table puts it). Elsewhere the angle is that of the orientation, at most 180 degrees. Angles
+ * beyond +-720 degrees are refused by the filter (RigidMotion::CheckRotation). DGMF damps the angle
+ * (a node turns by f times it), so an angle that wrapped from 180 to -180 degrees would make the
+ * mesh jump between two times.
  */
 class Trajectory
 {
@@ -85,6 +88,7 @@ private:
     double Axis[3] = { 0.0, 0.0, 0.0 }; ///< zero while the body has not turned
     double Degrees = 0.0;
     bool AxisToNext = false; ///< the step to the next row turns about Axis: angles interpolate
+    bool AsGiven = false;    ///< the rows' own angles about one coordinate axis (exact)
   };
 
   std::map<int, std::vector<TrajectoryRow>> Bodies;
