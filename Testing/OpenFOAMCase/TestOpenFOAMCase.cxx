@@ -261,6 +261,14 @@ TEST(FoamFileText, HeaderEntriesAreReadAndSetWithoutTouchingTheRest)
   const of::ArchInfo none = of::ParseArch("");
   EXPECT_TRUE(none.LittleEndian);
   EXPECT_EQ(none.ScalarBytes, 8u);
+
+  // A brace inside a quoted entry or a comment does not close the header (OpenFOAM reads such
+  // files; until 2026-11-30 the points after it were "no point count after the header").
+  const std::string braces =
+    Header("ascii", "    note        \"a } brace\";\n    // a } comment\n    /* and } this */\n");
+  EXPECT_EQ(of::FoamHeaderEntry(braces, "note"), "a } brace");
+  EXPECT_EQ(of::FoamHeaderEntry(braces, "class"), "vectorField"); // after the comments
+  EXPECT_EQ(of::FoamHeaderEntry(braces, "object"), "points");
 }
 
 TEST(CaseDirectory, NamesTimesAndPatches)

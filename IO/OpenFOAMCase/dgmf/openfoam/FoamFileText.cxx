@@ -31,8 +31,34 @@ void FindHeader(const std::string& text, std::size_t& open, std::size_t& close)
     const std::size_t brace = text.find_first_not_of(" \t\r\n", at + 8);
     if (wordStart && brace != std::string::npos && text[brace] == '{')
     {
+      // Its closing brace: not one inside a quoted entry or a comment (OpenFOAM reads those).
       open = brace;
-      close = text.find('}', brace);
+      bool quoted = false;
+      for (std::size_t k = brace + 1; k < text.size(); ++k)
+      {
+        if (text[k] == '"')
+        {
+          quoted = !quoted;
+        }
+        else if (quoted)
+        {
+          continue;
+        }
+        else if (text.compare(k, 2, "//") == 0)
+        {
+          k = std::min(text.find('\n', k), text.size()); // to the line's end
+        }
+        else if (text.compare(k, 2, "/*") == 0)
+        {
+          const std::size_t end = text.find("*/", k + 2);
+          k = end == std::string::npos ? text.size() : end + 1;
+        }
+        else if (text[k] == '}')
+        {
+          close = k;
+          return;
+        }
+      }
       return;
     }
     at += 8;
@@ -71,8 +97,14 @@ std::map<std::string, std::string> ParseEntries(
       break;
     }
     std::string entry = text.substr(at, semicolon - at);
-    // Skip comment lines inside the entry.
+    // Skip the comments inside the entry: block comments, then comment lines.
     std::size_t comment;
+    while ((comment = entry.find("/*")) != std::string::npos)
+    {
+      const std::size_t blockEnd = entry.find("*/", comment + 2);
+      entry.erase(
+        comment, blockEnd == std::string::npos ? std::string::npos : blockEnd + 2 - comment);
+    }
     while ((comment = entry.find("//")) != std::string::npos)
     {
       const std::size_t lineEnd = entry.find('\n', comment);
