@@ -63,41 +63,24 @@ enum Rank : int
 bool InLayerPlanes(const CompositeMesh& mesh, const CompositeMesh::Leaf& leaf, const double* xyz,
   const dgmf::ExtrudedLayers& layers)
 {
-  const auto along = [&](vtkIdType node)
-  { return xyz[3 * static_cast<std::size_t>(node) + layers.Axis]; };
-  const auto onAPlane = [&](double x) { return x == layers.Low || x == layers.High; };
   if (leaf.Cells == 0)
   {
-    for (const double plane : { layers.Low, layers.High })
+    std::vector<vtkIdType> nodes(static_cast<std::size_t>(leaf.NumberOfPoints));
+    for (vtkIdType point = 0; point < leaf.NumberOfPoints; ++point)
     {
-      bool all = true;
-      for (vtkIdType point = 0; point < leaf.NumberOfPoints && all; ++point)
-      {
-        all = along(leaf.Node(point)) == plane;
-      }
-      if (all)
-      {
-        return true;
-      }
+      nodes[static_cast<std::size_t>(point)] = leaf.Node(point);
     }
-    return false;
+    return layers.PlaneOf(xyz, nodes.data(), nodes.size()) >= 0;
   }
   vtkUnstructuredGrid* grid = leaf.InPatches ? mesh.GetPatches() : mesh.GetMergedMesh();
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = leaf.FirstCell; c < leaf.FirstCell + leaf.Cells; ++c)
   {
     grid->GetCellPoints(c, ids);
-    const double first = ids->GetNumberOfIds() > 0 ? along(ids->GetId(0)) : layers.Low;
-    if (!onAPlane(first))
+    if (layers.PlaneOf(xyz, ids->GetPointer(0), static_cast<std::size_t>(ids->GetNumberOfIds())) <
+      0)
     {
       return false;
-    }
-    for (vtkIdType k = 1; k < ids->GetNumberOfIds(); ++k)
-    {
-      if (along(ids->GetId(k)) != first)
-      {
-        return false;
-      }
     }
   }
   return true;

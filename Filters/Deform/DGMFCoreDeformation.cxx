@@ -35,12 +35,8 @@ BoundaryFacets SelectFacets(const BoundaryFacets& facets, const double* points,
   {
     const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
     const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
-    const auto at = [&](double value)
-    {
-      return std::all_of(
-        begin, end, [&](vtkIdType id) { return points[3 * id + layers.Axis] == value; });
-    };
-    const bool planar = onPlane ? at(plane) : (at(layers.Low) || at(layers.High));
+    const int side = layers.PlaneOf(points, begin, static_cast<std::size_t>(end - begin));
+    const bool planar = side >= 0 && (!onPlane || (side == 0 ? layers.Low : layers.High) == plane);
     if (planar == onPlane)
     {
       selected.Ids.insert(selected.Ids.end(), begin, end);

@@ -381,12 +381,7 @@ std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(
     {
       const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
       const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
-      const auto onPlane = [&](double plane)
-      {
-        return std::all_of(
-          begin, end, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
-      };
-      if (!onPlane(layers.Low) && !onPlane(layers.High))
+      if (layers.PlaneOf(nodes.Points, begin, static_cast<std::size_t>(end - begin)) < 0)
       {
         std::for_each(begin, end, [&](vtkIdType id) { flags[static_cast<std::size_t>(id)] = 1; });
       }
@@ -462,12 +457,7 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
     {
       patches->GetCells()->GetCellAtId(c - meshCells, npts, pts, scratch);
     }
-    const auto onPlane = [&](double plane)
-    {
-      return std::all_of(
-        pts, pts + npts, [&](vtkIdType id) { return nodes.Points[3 * id + layers.Axis] == plane; });
-    };
-    if (layers.Found() && (onPlane(layers.Low) || onPlane(layers.High)))
+    if (layers.PlaneOf(nodes.Points, pts, static_cast<std::size_t>(npts)) >= 0)
     {
       continue;
     }

@@ -10,6 +10,7 @@
 #include "dgmf/NodeKind.h"
 #include "dgmf/ParallelFor.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -38,6 +39,26 @@ struct ExtrudedLayers
   bool Found() const { return this->Axis >= 0; }
   /// True when node coordinate `value` along Axis is one of the two planes.
   bool OnPlane(double value) const { return value == this->Low || value == this->High; }
+
+  /**
+   * The plane the nodes `ids[0..count)` of `points` (3 coordinates each) all lie on, a face or
+   * cell of one layer: 0 Low, 1 High; -1 for nodes across the layer, or when not Found(). No
+   * node: 0.
+   */
+  template <typename Id>
+  int PlaneOf(const double* points, const Id* ids, std::size_t count) const
+  {
+    for (int side = 0; side < 2 && this->Found(); ++side)
+    {
+      const double plane = side == 0 ? this->Low : this->High;
+      if (std::all_of(ids, ids + count,
+            [&](Id id) { return points[3 * static_cast<std::size_t>(id) + this->Axis] == plane; }))
+      {
+        return side;
+      }
+    }
+    return -1;
+  }
 };
 
 /**

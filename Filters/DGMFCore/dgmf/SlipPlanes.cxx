@@ -67,6 +67,19 @@ struct LeastSpreadFit
     return Eigen::SelfAdjointEigenSolver<Matrix>(covariance);
   }
 
+  /// `plane` through the centroid normal to `normal` (its first D coordinates), the nodes at
+  /// most `farthest` from it.
+  SlipPlane Through(SlipPlane plane, const Vector& normal, double farthest) const
+  {
+    for (int c = 0; c < D; ++c)
+    {
+      plane.Point[c] = this->Centroid[c];
+      plane.Normal[c] = normal[c];
+    }
+    plane.Deviation = farthest;
+    return plane;
+  }
+
   /// The largest distance of a node from the hyperplane through the centroid normal to `normal`.
   double Farthest(const Vector& normal) const
   {
@@ -122,13 +135,7 @@ SlipPlane FitSlipLine(const double* points, const std::int32_t* nodes, std::size
                "make it static.";
     throw std::invalid_argument(message.str());
   }
-  for (int c = 0; c < 2; ++c)
-  {
-    plane.Point[c] = fit.Centroid[c];
-    plane.Normal[c] = normal[c];
-  }
-  plane.Deviation = farthest;
-  return plane;
+  return fit.Through(plane, normal, farthest);
 }
 } // namespace
 
@@ -176,13 +183,7 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
             << "). A slip boundary must be a plane; split a curved one, or make it static.";
     throw std::invalid_argument(message.str());
   }
-  for (int c = 0; c < 3; ++c)
-  {
-    plane.Point[c] = fit.Centroid[c];
-    plane.Normal[c] = normal[c];
-  }
-  plane.Deviation = farthest;
-  return plane;
+  return fit.Through(plane, normal, farthest);
 }
 
 bool SlipConstraint::operator==(const SlipConstraint& other) const
