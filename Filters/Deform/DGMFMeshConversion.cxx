@@ -291,55 +291,51 @@ vtkIdType CountBadCellsOutsideTheGuard(
   {
     return 0;
   }
-  int largest = 0;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  // The types of the mesh's dimension that the guard does not see (no CellShapeOf).
+  const std::array<bool, 256> present = CellTypesPresent(mesh);
+  bool polygons = false;
+  const int largest = CellDimensionOf(present, polygons);
+  std::array<bool, 256> unguarded{};
+  bool any = false;
+  for (int type = 0; type < 256; ++type)
   {
-    const int type = mesh->GetCellType(c);
-    largest = std::max(largest,
-      type == VTK_EMPTY_CELL ? 0 : vtkCellTypes::GetDimension(static_cast<unsigned char>(type)));
-  }
-  vtkIdType count = 0;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    const int type = mesh->GetCellType(c);
     dgmf::CellShape shape;
     const int* order = nullptr;
-    if (type != VTK_EMPTY_CELL &&
+    unguarded[type] = present[type] && type != VTK_EMPTY_CELL &&
       vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest &&
-      !CellShapeOf(type, shape, order) && sizeSkew->GetTuple1(c) < threshold)
-    {
-      ++count;
-    }
+      !CellShapeOf(type, shape, order);
+    any = any || unguarded[type];
+  }
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; any && c < mesh->GetNumberOfCells(); ++c)
+  {
+    count += unguarded[mesh->GetCellType(c)] && sizeSkew->GetTuple1(c) < threshold ? 1 : 0;
   }
   return count;
 }
 
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)
 {
-  const vtkIdType cells = mesh->GetNumberOfCells();
-  const auto dimensionOf = [](int type)
+  const std::array<bool, 256> present = CellTypesPresent(mesh);
+  bool polygons = false;
+  const int largest = CellDimensionOf(present, polygons);
+  // Any type of another dimension, empty cells included: count the cells one by one.
+  std::array<bool, 256> counted{};
+  bool mixed = false;
+  for (int type = 0; type < 256; ++type)
   {
-    return type == VTK_EMPTY_CELL ? -1
-                                  : vtkCellTypes::GetDimension(static_cast<unsigned char>(type));
-  };
-  std::vector<int> dimensions; // of the distinct cell types (-1: empty cells)
-  vtkUnsignedCharArray* types = mesh->GetDistinctCellTypesArray();
-  for (vtkIdType k = 0; types && k < types->GetNumberOfTuples(); ++k)
-  {
-    dimensions.push_back(dimensionOf(types->GetValue(k)));
+    counted[type] = present[type] && type != VTK_EMPTY_CELL &&
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest;
+    mixed = mixed || (present[type] && !counted[type]);
   }
-  const int largest =
-    dimensions.empty() ? -1 : *std::max_element(dimensions.begin(), dimensions.end());
-  const bool mixed =
-    std::any_of(dimensions.begin(), dimensions.end(), [&](int d) { return d != largest; });
   if (!mixed)
   {
-    return cells;
+    return mesh->GetNumberOfCells();
   }
   vtkIdType count = 0;
-  for (vtkIdType c = 0; c < cells; ++c)
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
-    count += dimensionOf(mesh->GetCellType(c)) == largest ? 1 : 0;
+    count += counted[mesh->GetCellType(c)] ? 1 : 0;
   }
   return count;
 }
