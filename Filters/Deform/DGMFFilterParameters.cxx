@@ -31,6 +31,26 @@ dgmf::Method MethodOf(vtkDGMFDeformFilter* filter)
   return static_cast<dgmf::Method>(filter->GetMethod());
 }
 
+std::string SettingsError(vtkDGMFDeformFilter* filter)
+{
+  return filter->GetFailOnInvertedCells() && !filter->GetComputeQuality()
+    ? "Fail On Inverted Cells needs Compute Quality (the quality metric counts the inverted "
+      "cells): turn Compute Quality on."
+    : "";
+}
+
+std::string SettingsWarning(vtkDGMFDeformFilter* filter)
+{
+  if (filter->GetMethod() == vtkDGMFDeformFilter::DGMF ||
+    (filter->GetSubSteps() == 1 && filter->GetRepairThreshold() <= 0.0))
+  {
+    return "";
+  }
+  return std::string("Sub Steps and Repair Threshold are DGMF's (the quality guard and the "
+                     "sub-steps need its damping field): ignored by ") +
+    dgmf::GetMethodInfo(MethodOf(filter)).Name + ".";
+}
+
 dgmf::MethodParameters MethodParametersOf(vtkDGMFDeformFilter* filter)
 {
   dgmf::MethodParameters p;

@@ -27,6 +27,14 @@ dgmf::Method MethodOf(vtkDGMFDeformFilter* filter);
 /// The filter's properties as the parameters of every method.
 dgmf::MethodParameters MethodParametersOf(vtkDGMFDeformFilter* filter);
 
+/// The error of properties that cannot go together (Fail On Inverted Cells without Compute
+/// Quality), or "".
+std::string SettingsError(vtkDGMFDeformFilter* filter);
+
+/// The warning for properties the method ignores (Sub Steps, Repair Threshold with a method other
+/// than DGMF), or "".
+std::string SettingsWarning(vtkDGMFDeformFilter* filter);
+
 /// The rigid motions given per body (vtkDGMFDeformFilter::SetBodyMotion).
 class BodyMotionTable
 {

@@ -4,10 +4,13 @@
 #include "DGMFSMPTools.h"
 
 #include "dgmf/HintStride.h"
+#include "dgmf/ResultNames.h"
 
+#include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointSet.h"
@@ -312,6 +315,19 @@ vtkIdType CountBadCellsOutsideTheGuard(
     count += unguarded[mesh->GetCellType(c)] && sizeSkew->GetTuple1(c) < threshold ? 1 : 0;
   }
   return count;
+}
+
+vtkIdType CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold)
+{
+  vtkDataArray* unrepaired = output->GetFieldData()->GetArray(dgmf::names::UnrepairedCellCount);
+  if (!unrepaired || unrepaired->GetNumberOfTuples() < 1)
+  {
+    return 0;
+  }
+  const vtkIdType outside = CountBadCellsOutsideTheGuard(
+    output, output->GetCellData()->GetArray(dgmf::names::SizeSkew), threshold);
+  unrepaired->SetTuple1(0, unrepaired->GetTuple1(0) + static_cast<double>(outside));
+  return outside;
 }
 
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)

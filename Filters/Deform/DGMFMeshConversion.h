@@ -77,6 +77,13 @@ dgmf::CellMesh ToCellMesh(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* patche
 vtkIdType CountBadCellsOutsideTheGuard(
   vtkUnstructuredGrid* mesh, vtkDataArray* sizeSkew, double threshold);
 
+/**
+ * Adds CountBadCellsOutsideTheGuard of the deformed `output` (its SizeSkew) to its
+ * UnrepairedCellCount field, so that the summary does not say "left unrepaired 0" with bad
+ * polyhedra left; returns that count (0, and nothing changed, without the two arrays).
+ */
+vtkIdType CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold);
+
 /// The cells of `mesh` of its largest cell dimension (its volume cells, without the boundary
 /// faces or edges a merged composite input may hold).
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh);

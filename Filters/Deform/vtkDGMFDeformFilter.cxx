@@ -445,10 +445,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     options.Dimension = dgmf_vtk::AgreeOnDimension(this->Controller, input, z);
   }
   dgmf_vtk::InputNodes nodes;
-  const std::string settingsFailure = this->FailOnInvertedCells && !this->ComputeQuality
-    ? "Fail On Inverted Cells needs Compute Quality (the quality metric counts the inverted "
-      "cells): turn Compute Quality on."
-    : "";
+  const std::string settingsFailure = dgmf_vtk::SettingsError(this);
   const std::string error = !failure.empty() ? failure
     : !settingsFailure.empty()
     ? settingsFailure
@@ -480,11 +477,10 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   // 3. Deform through the core's method interface: the method says what it needs.
   const auto method =
     dgmf::CreateMethod(dgmf_vtk::MethodOf(this), dgmf_vtk::MethodParametersOf(this));
-  if (this->Method != DGMF && (this->SubSteps != 1 || this->RepairThreshold > 0.0))
+  const std::string settingsWarning = dgmf_vtk::SettingsWarning(this);
+  if (!settingsWarning.empty())
   {
-    vtkWarningMacro(<< "Sub Steps and Repair Threshold are DGMF's (the quality guard and the "
-                       "sub-steps need its damping field): ignored by "
-                    << dgmf::GetMethodInfo(dgmf_vtk::MethodOf(this)).Name << ".");
+    vtkWarningMacro(<< settingsWarning);
   }
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
@@ -554,13 +550,11 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   if (this->ComputeQuality && this->Method == DGMF && this->RepairThreshold > 0.0)
   {
     // The guard repairs the cells the metric's corner form covers; bad polyhedra are left, and
-    // counted with the cells it could not repair (the summary said "left unrepaired 0").
-    const vtkIdType outside = dgmf_vtk::CountBadCellsOutsideTheGuard(
-      output, output->GetCellData()->GetArray(dgmf::names::SizeSkew), this->RepairThreshold);
-    vtkDataArray* unrepaired = output->GetFieldData()->GetArray(dgmf::names::UnrepairedCellCount);
-    if (outside > 0 && unrepaired)
+    // counted with the cells it could not repair.
+    const vtkIdType outside =
+      dgmf_vtk::CountUnguardedCellsAsUnrepaired(output, this->RepairThreshold);
+    if (outside > 0)
     {
-      unrepaired->SetTuple1(0, unrepaired->GetTuple1(0) + static_cast<double>(outside));
       vtkWarningMacro(<< outside
                       << " polyhedra or polygons have a SizeSkew below the Repair "
                          "Threshold: the quality guard does not move their nodes "

@@ -5,17 +5,11 @@
  *
  * vtkDGMFDeformFilter takes a vtkUnstructuredGrid whose boundary nodes carry a prescribed motion
  * and moves every other node so that the mesh follows (Wang, Qin, Zhao, Chinese Journal of
- * Aeronautics 31(11), 2018). The paper's steps, as Documentation/architecture.md numbers them:
- *
- * 1. the Delaunay graph of all boundary nodes (static and moving) is built with CGAL;
- * 2. every node is located in a graph element (triangle or tetrahedron),
- * 3. with barycentric coordinates e_i;
- * 4. r = sum e_i r0_i, with r0 = 0 on moving and r0 = StaticBoundaryR0 on static boundary nodes;
- * 5. the damping factor f = u(r) (u chosen by DampingFunction; 0 for r > 1);
- * 6. x' = c + R(f angles)(x - c) + f t + f d: the rigid motion (Translation t, RotationAngles
- *    or RotationAngle about RotationAxis, through RotationCenter c) and the shape deformation d,
- *    all scaled by f;
- * 7. d at an interior node interpolated from the moving boundary (DGMF2).
+ * Aeronautics 31(11), 2018): every node is located in an element of the Delaunay graph of the
+ * boundary nodes (built with CGAL), its relative distance r and damping factor f = u(r) are
+ * interpolated from the boundary, and it moves by f times the rigid motion (Translation,
+ * RotationAngles about RotationCenter) plus the interpolated shape deformation d
+ * (Documentation/architecture.md numbers the paper's seven steps).
  *
  * The shape deformation d comes from the displacement point array (input array 0, 3 components):
  * in DGMF2 mode (default) it is given at the moving boundary nodes and interpolated inside each
@@ -53,11 +47,9 @@
  *   `MaximumNonOrthogonality` and `InputMaximumNonOrthogonality` (degrees, as checkMesh).
  * Output points are always double precision. The input is never modified.
  *
- * Motion in time: the rotation angle and the translation can follow a harmonic law or a ramp
- * (RotationLaw, TranslationLaw), or each body a trajectory table (input port 1); the filter then
- * reports time steps (TimeRange, NumberOfTimeSteps, or the table's times) and deforms the input
- * for the time requested, always from the input mesh (no drift), reusing the graph: every frame
- * costs one pass over the nodes. The output's field data has the time of its motion, MotionTime.
+ * Motion in time (RotationLaw, TranslationLaw, or a trajectory table on input port 1): the filter
+ * reports time steps and deforms the input mesh for the time requested (no drift), reusing the
+ * graph; the output's field data MotionTime has the time of its motion.
  *
  * The Delaunay graph and the node locations are kept between executions while the input's
  * points, cells and boundary classification are unchanged: changing only the motion, the
@@ -75,11 +67,7 @@
  * @warning Threaded with vtkSMPTools (see NumberOfThreads). Results are identical for any number
  * of threads.
  *
- * The filter holds the properties and reads as the steps of a run: gather the input (composite
- * blocks merged: DGMFCompositeMesh), gather and check the arrays (DGMFInputNodes), exchange the
- * boundary nodes (DGMFDistributed), deform through the VTK-free core's method interface
- * (dgmf::DeformationMethod, with the graph from DGMFMappingCache), and write the outputs
- * (DGMFOutputArrays). Documentation/architecture.md draws the whole path.
+ * Documentation/architecture.md draws the steps of a run, file by file.
  *
  * @sa vtkWarpVector vtkTransformFilter vtkSizeSkewQualityFilter
  */

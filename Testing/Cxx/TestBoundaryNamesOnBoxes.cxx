@@ -1,0 +1,97 @@
+// Boundaries chosen by name on a hexahedral box whose six sides are named blocks
+// (dgmf_test::HexBoxBlocks, as a CFD reader gives them): the patches against the mesh's own
+// boundary, and a node on two slip planes.
+#include "vtkDGMFDeformFilter.h"
+
+#include "HexBoxBlocks.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkUnstructuredGrid* VolumeOf(vtkDataObject* output)
+{
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output);
+  return blocks ? vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+}
+} // namespace
+
+TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
+{
+  // With every side read, the patches are the volume's boundary and it is not searched for (the
+  // faces' parity says so); with "xmax" not read, it is, and "xmax" stays as an unnamed
+  // boundary. Both must give the same mesh, bit for bit, and "xmax" must not move.
+  const int n = 6;
+  std::vector<std::vector<double>> results;
+  for (const std::string omit : { "", "xmax" })
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(dgmf_test::HexBoxBlocks(n, omit));
+    filter->AddMovingBoundary("xmin");
+    filter->SetTranslation(-0.3, 0.2, 0.1);
+    filter->SetRotationAngles(0, 5, 0);
+    filter->Update();
+    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+    ASSERT_NE(volume, nullptr) << "omitted: '" << omit << "'";
+    ASSERT_EQ(volume->GetNumberOfPoints(), (n + 1) * (n + 1) * (n + 1));
+    std::vector<double> xyz(static_cast<std::size_t>(3 * volume->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+    {
+      volume->GetPoint(i, xyz.data() + 3 * i);
+      const vtkIdType side = n + 1;
+      if (i % side == n) // on "xmax": where it was
+      {
+        const double at[3] = { double(n), double(i / side % side), double(i / side / side) };
+        ASSERT_EQ(std::memcmp(xyz.data() + 3 * i, at, sizeof at), 0)
+          << "node " << i << " omitted: '" << omit << "'";
+      }
+    }
+    results.push_back(xyz);
+  }
+  // An interior node moved (the test would not tell otherwise).
+  const vtkIdType inside = 2 + (n + 1) * (3 + (n + 1) * 3);
+  EXPECT_NE(results[0][3 * inside], 2.0);
+  EXPECT_EQ(results[0], results[1]);
+}
+
+TEST(BoundaryNames, ANodeOnTwoSlipPlanesSlidesAlongTheirLine)
+{
+  // A piston: the box's side xmin pushed by 0.5 along x, ymin and zmin slip planes (a quarter
+  // model), the other sides static. The nodes on the edge where ymin and zmin meet slide along x,
+  // their y and z kept bit for bit (they were held static until 2026-11-30, which inverted cells
+  // next to the body on such edges); the nodes on one plane keep its coordinate.
+  const int n = 6;
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+  filter->AddMovingBoundary("xmin");
+  filter->AddSlipBoundary("ymin");
+  filter->AddSlipBoundary("zmin");
+  filter->SetTranslation(0.5, 0.0, 0.0);
+  filter->Update();
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  vtkUnstructuredGrid* volume = VolumeOf(blocks);
+  ASSERT_NE(volume, nullptr);
+  EXPECT_EQ(blocks->GetFieldData()->GetArray("InvertedCellCount")->GetTuple1(0), 0.0);
+  const vtkIdType side = n + 1;
+  double slid = 1.0;
+  for (int x = 1; x < n; ++x)
+  {
+    const double* p = volume->GetPoint(x); // y = 0, z = 0
+    ASSERT_EQ(p[1], 0.0) << "edge node x = " << x;
+    ASSERT_EQ(p[2], 0.0) << "edge node x = " << x;
+    slid = std::min(slid, p[0] - x);
+    ASSERT_EQ(volume->GetPoint(x + side * side * 3)[1], 0.0); // on ymin only (z = 3)
+    ASSERT_EQ(volume->GetPoint(x + side * 3)[2], 0.0);        // on zmin only (y = 3)
+  }
+  EXPECT_GT(slid, 0.01) << "the edge's nodes follow the piston";
+}
