@@ -85,6 +85,29 @@ bool AllProcessesAgree(vtkMultiProcessController* controller, bool ok)
   return global == 1;
 }
 
+std::vector<double> AllGatherDoubles(vtkMultiProcessController* controller,
+  const std::vector<double>& send, std::vector<std::size_t>& offsets)
+{
+  const int processes = controller->GetNumberOfProcesses();
+  const auto length = static_cast<vtkIdType>(send.size());
+  std::vector<vtkIdType> lengths(static_cast<std::size_t>(processes), 0);
+  controller->AllGather(&length, lengths.data(), 1);
+  std::vector<vtkIdType> starts(static_cast<std::size_t>(processes), 0);
+  offsets.assign(static_cast<std::size_t>(processes) + 1, 0);
+  vtkIdType total = 0;
+  for (int p = 0; p < processes; ++p)
+  {
+    starts[static_cast<std::size_t>(p)] = total;
+    total += lengths[static_cast<std::size_t>(p)];
+    offsets[static_cast<std::size_t>(p) + 1] = static_cast<std::size_t>(total);
+  }
+  std::vector<double> received(static_cast<std::size_t>(std::max<vtkIdType>(total, 1)));
+  controller->AllGatherV(
+    send.empty() ? nullptr : send.data(), received.data(), length, lengths.data(), starts.data());
+  received.resize(static_cast<std::size_t>(total));
+  return received;
+}
+
 std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
   vtkMultiProcessController* controller, const std::vector<RemoteBoundaryNode>& local)
 {
@@ -100,28 +123,18 @@ std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
     send.push_back(static_cast<double>(node.Kind));
     send.push_back(static_cast<double>(node.BodyId));
   }
-  const vtkIdType length = static_cast<vtkIdType>(send.size());
-  std::vector<vtkIdType> lengths(static_cast<std::size_t>(processes), 0);
-  controller->AllGather(&length, lengths.data(), 1);
-  std::vector<vtkIdType> offsets(static_cast<std::size_t>(processes), 0);
-  vtkIdType total = 0;
-  for (int p = 0; p < processes; ++p)
-  {
-    offsets[static_cast<std::size_t>(p)] = total;
-    total += lengths[static_cast<std::size_t>(p)];
-  }
-  std::vector<double> received(static_cast<std::size_t>(std::max<vtkIdType>(total, 1)));
-  controller->AllGatherV(
-    send.empty() ? nullptr : send.data(), received.data(), length, lengths.data(), offsets.data());
+  std::vector<std::size_t> offsets;
+  const std::vector<double> received = AllGatherDoubles(controller, send, offsets);
   std::vector<RemoteBoundaryNode> remote;
   for (int p = 0; p < processes; ++p)
   {
+    const auto process = static_cast<std::size_t>(p);
     if (p == self)
     {
       continue;
     }
-    const double* values = received.data() + offsets[static_cast<std::size_t>(p)];
-    for (vtkIdType k = 0; k < lengths[static_cast<std::size_t>(p)]; k += 8)
+    const double* values = received.data() + offsets[process];
+    for (std::size_t k = 0; k < offsets[process + 1] - offsets[process]; k += 8)
     {
       RemoteBoundaryNode node;
       for (int c = 0; c < 3; ++c)
@@ -165,6 +178,7 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
 void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)
 {
   const std::size_t n = nodes.LocalNodes;
+  nodes.Distributed = true;
   std::vector<RemoteBoundaryNode> local;
   for (std::size_t i = 0; i < n; ++i)
   {

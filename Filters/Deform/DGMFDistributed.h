@@ -42,6 +42,13 @@ bool AllProcessesAgree(vtkMultiProcessController* controller, bool ok);
  */
 void RequestOneGhostLevel(vtkInformation* inputInformation);
 
+/**
+ * Every process's `send`, in process order (this process's included); `offsets` receives where
+ * each process's values start, and their end (processes + 1 entries). Collective.
+ */
+std::vector<double> AllGatherDoubles(vtkMultiProcessController* controller,
+  const std::vector<double>& send, std::vector<std::size_t>& offsets);
+
 /// One boundary node as it travels between processes.
 struct RemoteBoundaryNode
 {

@@ -182,6 +182,7 @@ dgmf::DeformationProblem InputNodes::ToProblem() const
   problem.BodyIds = this->BodyIds.empty() ? nullptr : this->BodyIds.data();
   problem.NumberOfBodies = this->NumberOfBodies;
   problem.Slip = this->Slip;
+  problem.FitDistinctPositions = this->Distributed;
   return problem;
 }
 
@@ -320,20 +321,29 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
     static_assert(sizeof(dgmf::NodeKind) == 1, "node kinds are bytes");
     unsigned char slipByte;
     std::memcpy(&slipByte, &slip, 1);
-    if (nodes.NumberOfNodes == 0 ||
-      std::memchr(nodes.Kinds.data(), slipByte, nodes.NumberOfNodes) == nullptr)
+    const bool any = nodes.NumberOfNodes > 0 &&
+      std::memchr(nodes.Kinds.data(), slipByte, nodes.NumberOfNodes) != nullptr;
+    if (!any && !options.Distributed) // (the other pieces of a distributed mesh may have some)
     {
       return;
     }
     groups.resize(1);
     names.push_back("boundary-marker value 3");
-    for (std::size_t i = 0; i < nodes.NumberOfNodes; ++i)
+    for (std::size_t i = 0; any && i < nodes.NumberOfNodes; ++i)
     {
       if (nodes.Kinds[i] == dgmf::NodeKind::SlipBoundary)
       {
         groups[0].push_back(static_cast<std::int32_t>(i));
       }
     }
+  }
+  if (options.Distributed)
+  {
+    // Fitted to the nodes of every piece once they have met (AgreeOnSlipPlanes): a piece may
+    // hold too few of a plane's nodes, or noisy ones, to fit it alone.
+    nodes.SlipGroups = std::move(groups);
+    nodes.SlipNames = std::move(names);
+    return;
   }
   // A node in two groups (the line where two planes meet) is one slip node with two planes.
   std::unordered_map<std::int32_t, std::size_t> listed;

@@ -64,6 +64,7 @@ struct InputNodes
 {
   std::size_t LocalNodes = 0;    ///< this piece's nodes, the first ones
   std::size_t NumberOfNodes = 0; ///< with the other processes' boundary nodes
+  bool Distributed = false;      ///< the other processes' boundary nodes were appended
   int Dimension = 3;
   const double* Points = nullptr;
   std::vector<double> PointCopy; ///< the points as doubles, when they are not already
@@ -73,6 +74,10 @@ struct InputNodes
   std::vector<std::int32_t> BodyIds; ///< per node, when a body-id array is selected
   std::int32_t NumberOfBodies = 0;   ///< the largest body id
   dgmf::SlipConstraint Slip;         ///< the slip boundaries' nodes and planes
+  /// A distributed run's slip nodes of this piece per slip entry, and the entries' names: their
+  /// planes are fitted to every piece's nodes once the pieces have met (AgreeOnSlipPlanes).
+  std::vector<std::vector<std::int32_t>> SlipGroups;
+  std::vector<std::string> SlipNames;
   dgmf::ExtrudedLayers Layers;       ///< the two layers of a one-cell-thick mesh, if it is one
   std::vector<std::string> Warnings; ///< for the user
   /// A composite input's boundary patches on the mesh's points (GatherOptions::Patches), or null.

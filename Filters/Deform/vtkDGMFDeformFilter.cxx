@@ -3,6 +3,7 @@
 #include "DGMFCompositeMesh.h"
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
+#include "DGMFDistributedSlip.h"
 #include "DGMFFilterParameters.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFMotionInTime.h"
@@ -452,15 +453,17 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     : dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
         this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
+  std::string slipError; // the same on every process
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {
     dgmf_vtk::AppendRemoteBoundaryNodes(this->Controller, nodes);
+    slipError = dgmf_vtk::AgreeOnSlipPlanes(this->Controller, nodes);
   }
-  if (!ok)
+  if (!ok || !slipError.empty())
   {
-    if (!error.empty())
+    if (!error.empty() || !slipError.empty())
     {
-      vtkErrorMacro(<< error);
+      vtkErrorMacro(<< error << slipError);
     }
     return 0;
   }

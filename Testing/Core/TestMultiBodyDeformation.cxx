@@ -546,3 +546,65 @@ TEST(MultiBodyDeformation, RejectsInconsistentBodyIds)
   // More motions than bodies: the extra ones do nothing.
   EXPECT_NO_THROW(deform(set.BodyIds, std::vector<dgmf::BodyMotion>(5)));
 }
+
+TEST(MultiBodyDeformation, DistinctPositionsFitTheSameBitsInAnyOrderAndWithCopies)
+{
+  // A distributed run's nodes: each process holds its piece's nodes first, the others' copies
+  // after them, some positions twice. With distinctPositions the fit is the one of the distinct
+  // positions in increasing order, bit for bit, whatever the order and the copies; without it,
+  // copies weigh twice and the fit moves (the displacement has a shape part).
+  const dgmf_test::BodyNodeSet set = dgmf_test::TwoCirclesInSquare();
+  std::vector<double> D(3 * set.Size(), 0.0);
+  std::vector<std::int32_t> moving;
+  for (std::size_t i = 0; i < set.Size(); ++i)
+  {
+    if (set.BodyIds[i] == 1)
+    {
+      const double* x = set.Points.data() + 3 * i;
+      D[3 * i] = -0.2 * x[1] + 0.05 * x[0] * x[0];
+      D[3 * i + 1] = 0.2 * x[0];
+      moving.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  ASSERT_GT(moving.size(), 10u);
+  // Body 1's nodes reversed, then the first third of them again (an arc of the circle): points,
+  // displacements, ids.
+  std::vector<std::size_t> order(moving.rbegin(), moving.rend());
+  for (std::size_t k = 0; k < moving.size() / 3; ++k)
+  {
+    order.push_back(static_cast<std::size_t>(moving[k]));
+  }
+  std::vector<double> points, displacement;
+  for (const std::size_t i : order)
+  {
+    points.insert(points.end(), set.Points.begin() + 3 * i, set.Points.begin() + 3 * i + 3);
+    displacement.insert(displacement.end(), D.begin() + 3 * i, D.begin() + 3 * i + 3);
+  }
+  const std::vector<std::int32_t> ones(order.size(), 1);
+  const std::vector<std::int32_t> body(set.BodyIds.begin(), set.BodyIds.end());
+  std::vector<std::int32_t> onlyBody1(body.size(), 0);
+  for (const std::int32_t i : moving)
+  {
+    onlyBody1[static_cast<std::size_t>(i)] = 1;
+  }
+  const auto fit = [](const std::vector<double>& p, const std::vector<double>& d,
+                     const std::vector<std::int32_t>& ids, bool distinct)
+  {
+    return dgmf::ExtractBodyMotions(
+      2, p.data(), d.data(), ids.size(), ids.data(), 1, nullptr, distinct)[0];
+  };
+  const dgmf::FittedMotion inOrder = fit(set.Points, D, onlyBody1, true);
+  const dgmf::FittedMotion copies = fit(points, displacement, ones, true);
+  EXPECT_EQ(copies.NumberOfPoints, moving.size());
+  EXPECT_EQ(std::memcmp(inOrder.Center, copies.Center, sizeof copies.Center), 0);
+  EXPECT_EQ(std::memcmp(inOrder.Translation, copies.Translation, sizeof copies.Translation), 0);
+  EXPECT_EQ(inOrder.AngleDegrees, copies.AngleDegrees);
+  // The same nodes in their order, without distinctPositions: the same fit up to rounding.
+  const dgmf::FittedMotion plain = fit(set.Points, D, onlyBody1, false);
+  EXPECT_NEAR(plain.AngleDegrees, inOrder.AngleDegrees, 1e-12);
+  // The copies weighed twice: another fit.
+  const dgmf::FittedMotion weighted = fit(points, displacement, ones, false);
+  EXPECT_GT(std::abs(weighted.Center[0] - inOrder.Center[0]) +
+      std::abs(weighted.Center[1] - inOrder.Center[1]),
+    1e-6);
+}

@@ -78,7 +78,7 @@ std::vector<BodyMotion> ExtractMotions(const DeformationProblem& problem,
   const std::size_t n = problem.NumberOfNodes;
   residual.resize(3 * n);
   std::vector<FittedMotion> fits = ExtractBodyMotions(problem.Dimension, problem.Points,
-    problem.Displacement, n, ids.data(), bodies, residual.data());
+    problem.Displacement, n, ids.data(), bodies, residual.data(), problem.FitDistinctPositions);
   // Each body turns about its rotation axis (not its centroid): a rotation given as displacements
   // about some centre is recovered about that centre. Near-translations (an axis farther than 100
   // body sizes) keep the centroid.

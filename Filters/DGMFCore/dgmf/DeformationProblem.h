@@ -39,6 +39,10 @@ struct DeformationProblem
   std::vector<RigidMotion> Motions = std::vector<RigidMotion>(1);
   /// The rigid motions are fitted to Displacement, then the total motion of the moving nodes.
   bool ExtractRigidMotion = false;
+  /// The extracted motions are fitted to each body's distinct positions in increasing order
+  /// (ExtractBodyMotions' distinctPositions): a distributed run's nodes, whose order and copies
+  /// differ from process to process. Default: false (the nodes in their order).
+  bool FitDistinctPositions = false;
   const CellMesh* Cells = nullptr;         ///< the cells (MethodNeeds::Cells), or null
   const double* BoundaryWeights = nullptr; ///< per node: boundary area or length (IDW), or null
   /// The slip (symmetry) boundaries: their SlipBoundary nodes stay in their planes.

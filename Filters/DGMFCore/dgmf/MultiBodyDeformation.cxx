@@ -4,9 +4,11 @@
 #include "dgmf/DampingField.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace dgmf
 {
@@ -264,9 +266,31 @@ void DeformMultiBody(const DelaunayMapping& mapping, const std::int32_t* bodyIds
     });
 }
 
+namespace
+{
+/// `nodes` sorted by position (x, then y, then z; equal positions by node), one per position.
+std::vector<std::int32_t> DistinctPositionsOf(
+  const double* points, const std::vector<std::int32_t>& nodes)
+{
+  const auto at = [points](std::int32_t i)
+  {
+    const double* p = points + 3 * static_cast<std::size_t>(i);
+    return std::array<double, 3>{ p[0], p[1], p[2] };
+  };
+  std::vector<std::int32_t> sorted = nodes;
+  std::sort(sorted.begin(), sorted.end(),
+    [&at](std::int32_t a, std::int32_t b)
+    { return std::make_pair(at(a), a) < std::make_pair(at(b), b); });
+  sorted.erase(std::unique(sorted.begin(), sorted.end(),
+                 [&at](std::int32_t a, std::int32_t b) { return at(a) == at(b); }),
+    sorted.end());
+  return sorted;
+}
+} // namespace
+
 std::vector<FittedMotion> ExtractBodyMotions(int dimension, const double* points,
   const double* displacement, std::size_t numberOfNodes, const std::int32_t* bodyIds,
-  std::int32_t numberOfBodies, double* residual)
+  std::int32_t numberOfBodies, double* residual, bool distinctPositions)
 {
   if (numberOfBodies < 0)
   {
@@ -298,7 +322,11 @@ std::vector<FittedMotion> ExtractBodyMotions(int dimension, const double* points
   fits.reserve(members.size());
   for (const std::vector<std::int32_t>& nodes : members)
   {
-    fits.push_back(FitRigidMotion(dimension, points, displacement, nodes.data(), nodes.size()));
+    const std::vector<std::int32_t> fitted =
+      distinctPositions ? DistinctPositionsOf(points, nodes) : std::vector<std::int32_t>();
+    const std::vector<std::int32_t>& fitNodes = distinctPositions ? fitted : nodes;
+    fits.push_back(
+      FitRigidMotion(dimension, points, displacement, fitNodes.data(), fitNodes.size()));
     if (residual)
     {
       ComputeFitResidual(fits.back(), points, displacement, nodes.data(), nodes.size(), residual);

@@ -94,11 +94,16 @@ void DeformMultiBody(const DelaunayMapping& mapping, const std::int32_t* bodyIds
  * @param residual if not null, 3 per node: each body node's residual (ComputeFitResidual), 0 at
  * nodes with id 0. May alias `displacement`.
  * @return the fit of body k at index k - 1 (an Undetermined identity fit for a body without nodes)
+ * @param distinctPositions fit each body to its distinct positions in increasing order (x, then
+ * y, then z; a position held by several nodes counts once, with its first node's displacement):
+ * the fit of a set of nodes that does not depend on their numbering or copies (a distributed run,
+ * where each process holds its piece's nodes first and the other pieces' copies after them).
+ * Default: every node in its order.
  * Throws std::invalid_argument for ids below 0 or above numberOfBodies, and as FitRigidMotion.
  */
 std::vector<FittedMotion> ExtractBodyMotions(int dimension, const double* points,
   const double* displacement, std::size_t numberOfNodes, const std::int32_t* bodyIds,
-  std::int32_t numberOfBodies, double* residual);
+  std::int32_t numberOfBodies, double* residual, bool distinctPositions = false);
 
 } // namespace dgmf
 
