@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -92,6 +93,16 @@ dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
     LawOf(filter->GetTranslationLaw(), filter->GetTranslationLawParameters());
   rotation.Check("the rotation law");
   translation.Check("the translation law");
+  if (rotation.LargestMagnitude() > dgmf::RigidMotion::MaximumAngleDegrees)
+  {
+    // Said before the first frame, not at the first time beyond (a series half written).
+    std::ostringstream message;
+    message << "The rotation law reaches " << rotation.LargestMagnitude()
+            << " degrees (mean + amplitude, or the ramp's ends): at most "
+            << dgmf::RigidMotion::MaximumAngleDegrees
+            << " (two turns) can be damped; deform a longer motion in parts.";
+    throw std::invalid_argument(message.str());
+  }
   if (motion.HasEulerAngles() && (motion.HasAxisRotation() || rotation.IsTimeDependent()))
   {
     throw std::invalid_argument(

@@ -250,7 +250,8 @@ public:
    * degrees about RotationAxis (RotationAngle unused; RotationAngles must be 0 0 0). Parameters:
    * HARMONIC mean, amplitude (degrees), frequency (periods per unit time), phase (degrees); RAMP
    * start and end angles, start and end times. Times a period apart give the same bits
-   * (dgmf::MotionLaw). Defaults: CONSTANT, (0, 10, 1, 0).
+   * (dgmf::MotionLaw). A law that can reach beyond +-720 degrees is an error at every time.
+   * Defaults: CONSTANT, (0, 10, 1, 0).
    */
   vtkSetClampMacro(RotationLaw, int, CONSTANT, RAMP);
   vtkGetMacro(RotationLaw, int);

@@ -73,6 +73,12 @@ TEST(MotionLaw, HarmonicIsPeriodicBitForBitAndRampIsLinear)
   EXPECT_THROW(ramp.Evaluate(1.0), std::invalid_argument);
   pitch.Parameters[2] = -1.0;
   EXPECT_THROW(pitch.Check("the rotation law"), std::invalid_argument);
+  // The largest |v| over all times, for refusing a rotation beyond two turns up front.
+  dgmf::MotionLaw swing{ dgmf::MotionLawKind::Harmonic, { -300.0, -500.0, 1.0, 0.0 } };
+  EXPECT_EQ(swing.LargestMagnitude(), 800.0);
+  dgmf::MotionLaw farRamp{ dgmf::MotionLawKind::Ramp, { 100.0, -730.0, 0.0, 1.0 } };
+  EXPECT_EQ(farRamp.LargestMagnitude(), 730.0);
+  EXPECT_EQ(dgmf::MotionLaw().LargestMagnitude(), 0.0);
   pitch.Parameters[2] = NAN;
   EXPECT_THROW(pitch.Check(), std::invalid_argument);
 }

@@ -368,6 +368,16 @@ TEST(BadInput, InvertingMotionIsFlaggedOrRefused)
   EXPECT_EQ(tooFar.Execute(mesh)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(FilterRun::Has(tooFar.Errors, "within [-720, 720]"));
 
+  // A rotation law that goes beyond two turns later is refused at its first frame, where its
+  // angle is still 0 (until 2026-11-30 at the first frame beyond, a series half written).
+  FilterRun later;
+  later.Filter->SetRotationLaw(vtkDGMFDeformFilter::RAMP);
+  later.Filter->SetRotationLawParameters(0.0, 1000.0, 1.0, 2.0);
+  later.Filter->SetInputData(mesh);
+  later.Filter->UpdateTimeStep(0.0);
+  EXPECT_EQ(later.Filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(FilterRun::Has(later.Errors, "reaches 1000 degrees")) << later.Errors.size();
+
   FilterRun refuse;
   refuse.Filter->SetMethodToDGM();
   refuse.Filter->SetRotationAngles(0, 0, 90);

@@ -1,5 +1,6 @@
 #include "dgmf/MotionLaw.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -31,6 +32,20 @@ void MotionLaw::Check(const char* what) const
     this->Kind != MotionLawKind::Ramp)
   {
     throw std::invalid_argument(std::string(what) + ": unknown kind");
+  }
+}
+
+double MotionLaw::LargestMagnitude() const
+{
+  const double* p = this->Parameters;
+  switch (this->Kind)
+  {
+    case MotionLawKind::Harmonic:
+      return std::abs(p[0]) + std::abs(p[1]);
+    case MotionLawKind::Ramp:
+      return std::max(std::abs(p[0]), std::abs(p[1]));
+    default:
+      return 0.0;
   }
 }
 

@@ -41,6 +41,10 @@ struct MotionLaw
   /// v(t). Calls Check.
   double Evaluate(double t) const;
 
+  /// The largest |v(t)| over all times: |mean| + |amplitude| (harmonic), the larger of |start|
+  /// and |end| (ramp); 0 for Constant.
+  double LargestMagnitude() const;
+
   /**
    * Throws std::invalid_argument, naming `what` (e.g. "the rotation law"), for parameters that are
    * not finite, a negative frequency, or a ramp whose end time is not after its start time.
