@@ -4,14 +4,18 @@
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 #include "dgmf/HugePages.h"
+#include "dgmf/ResultNames.h"
 
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataAssembly.h"
 #include "vtkDataAssemblyUtilities.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -85,6 +89,29 @@ bool InLayerPlanes(const CompositeMesh& mesh, const CompositeMesh::Leaf& leaf, c
   }
   return true;
 }
+/// The dimension of `name` among the input's named groups that are not boundaries
+/// (dgmf::names::NonBoundaryGroups, from a mesh file), or -1.
+int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& name)
+{
+  vtkFieldData* fields = input ? input->GetFieldData() : nullptr;
+  auto* groups = vtkStringArray::SafeDownCast(
+    fields ? fields->GetAbstractArray(dgmf::names::NonBoundaryGroups) : nullptr);
+  vtkDataArray* dimensions =
+    fields ? fields->GetArray(dgmf::names::NonBoundaryGroupDimensions) : nullptr;
+  if (!groups || !dimensions || dimensions->GetNumberOfTuples() != groups->GetNumberOfValues())
+  {
+    return -1;
+  }
+  for (vtkIdType g = 0; g < groups->GetNumberOfValues(); ++g)
+  {
+    if (groups->GetValue(g) == name)
+    {
+      return static_cast<int>(dimensions->GetTuple1(g));
+    }
+  }
+  return -1;
+}
+
 } // namespace
 
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
@@ -180,6 +207,16 @@ NodeRoles AssignRoles(
     }
     if (found.empty())
     {
+      const int groupDimension = NonBoundaryGroupDimension(mesh.GetInput(), entry);
+      if (groupDimension >= 0)
+      {
+        throw std::invalid_argument("'" + entry + "' is a physical group of dimension " +
+          std::to_string(groupDimension) +
+          " in the mesh file, not a boundary: the boundaries are the groups one dimension below "
+          "the mesh's cells (surfaces of a 3D mesh, curves of a 2D mesh). The input's blocks "
+          "are: " +
+          ListBlockNames(mesh) + ".");
+      }
       throw std::invalid_argument("No block of the input is named '" + entry +
         "'. The input's blocks are: " + ListBlockNames(mesh) + ".");
     }

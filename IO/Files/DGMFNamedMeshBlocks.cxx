@@ -3,16 +3,20 @@
 #include "DGMFWriterInputs.h"
 
 #include "DGMFTupleAllocation.h"
+#include "dgmf/ResultNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -102,6 +106,22 @@ vtkSmartPointer<vtkMultiBlockDataSet> ToBlocks(const mf::NamedMesh& mesh)
   blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), InternalMeshName);
   blocks->SetBlock(1, boundaries);
   blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "boundary");
+  if (!mesh.OtherGroups.empty())
+  {
+    // The file's named groups that are not boundaries (a physical curve of a 3D mesh), so that a
+    // program told such a name can say what it is.
+    vtkNew<vtkStringArray> names;
+    names->SetName(dgmf::names::NonBoundaryGroups);
+    vtkNew<vtkIntArray> dimensions;
+    dimensions->SetName(dgmf::names::NonBoundaryGroupDimensions);
+    for (const auto& group : mesh.OtherGroups)
+    {
+      names->InsertNextValue(group.first);
+      dimensions->InsertNextValue(group.second);
+    }
+    blocks->GetFieldData()->AddArray(names);
+    blocks->GetFieldData()->AddArray(dimensions);
+  }
   return blocks;
 }
 

@@ -17,7 +17,9 @@ namespace dgmf_vtk
 /**
  * The multiblock of `mesh`: `internalMesh` (every node, the volume cells, the point array
  * FileNodeId), then `boundary` with one block per named boundary (its faces on the nodes they
- * use). Throws std::bad_alloc when memory runs out.
+ * use); the named groups that are not boundaries in its field data
+ * (dgmf::names::NonBoundaryGroups).
+ * Throws std::bad_alloc when memory runs out.
  */
 vtkSmartPointer<vtkMultiBlockDataSet> ToBlocks(const dgmf::meshfile::NamedMesh& mesh);
 

@@ -9,7 +9,10 @@
  *   mesh's dimension; the point array `FileNodeId` holds the file's id of each node (gmsh tags,
  *   SU2 indices);
  * - block 1, `boundary`: one unstructured grid per named boundary (gmsh physical groups of the
- *   dimension below the mesh's, SU2 markers), named after it, with the nodes its faces use.
+ *   dimension below the mesh's, SU2 markers), named after it, with the nodes its faces use;
+ * - field data `NonBoundaryGroups` and `NonBoundaryGroupDimensions`, when the file has them: the
+ *   named groups of other dimensions (a gmsh physical curve of a 3D mesh, a volume group), which
+ *   are not boundaries, so that a program told such a name can say what it is.
  *
  * A file that cannot be read is an error naming the file and the line or section, and an empty
  * output. vtkDGMFMeshFileWriter writes the deformed points back into a copy of the file.

@@ -251,6 +251,19 @@ class Formats(unittest.TestCase):
         self.assertEqual(code, 2, err)
         self.assertIn("wing, farfield", err)
 
+    def test_a_group_that_is_not_a_boundary_is_said_to_be_one(self):
+        # "fluid" is the 3D mesh's volume group: named, it is said to be a group of dimension 3,
+        # with the file's boundaries (until 2026-11-30: "No block of the input is named 'fluid'").
+        # Both .msh readers: version 4.1 (gmsh's library) and 2.2 (read without it).
+        for label in ("3d_msh4.1", "3d_msh2.2", "3d_msh2.2_binary"):
+            with self.subTest(label=label):
+                code, out, err = run(self.files[label], os.path.join(ARGS.work, "x.vtu"),
+                                     "--moving", "fluid", "--rotate", 0, 0, 10)
+                self.assertEqual(code, 1, err)
+                self.assertIn("'fluid' is a physical group of dimension 3 in the mesh file, not a "
+                              "boundary", err)
+                self.assertIn("The input's blocks are: internalMesh, wing, farfield.", err)
+
     def test_other_formats_out(self):
         source = self.files["3d_msh4.1"]
         code, out, err = run(source, os.path.join(ARGS.work, "x.su2"), "--moving", "wing")

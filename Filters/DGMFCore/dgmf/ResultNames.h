@@ -58,6 +58,12 @@ constexpr const char* SubStepsUsed = "SubStepsUsed";
 constexpr const char* RejectedSubSteps = "RejectedSubSteps";
 constexpr const char* RepairedCellCount = "RepairedCellCount";
 constexpr const char* UnrepairedCellCount = "UnrepairedCellCount";
+
+// Field data of a mesh file's multiblock (vtkDGMFMeshFileReader), which the filter reads: the
+// file's named groups that are not boundaries (a gmsh physical curve of a 3D mesh, a volume
+// group) and their dimensions, so that such a name given as a boundary is said to be one.
+constexpr const char* NonBoundaryGroups = "NonBoundaryGroups";
+constexpr const char* NonBoundaryGroupDimensions = "NonBoundaryGroupDimensions";
 } // namespace names
 } // namespace dgmf
 

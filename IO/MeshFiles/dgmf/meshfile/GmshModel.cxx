@@ -235,6 +235,17 @@ NamedMesh ReadModel(GmshSession& session, const MshFormat& format)
     }
     mesh.Boundaries.push_back(std::move(boundary));
   }
+  gmsh::vectorpair everyGroup;
+  gmsh::model::getPhysicalGroups(everyGroup);
+  for (const auto& group : everyGroup)
+  {
+    std::string name;
+    gmsh::model::getPhysicalName(group.first, group.second, name);
+    if (group.first != mesh.Dimension - 1 && !name.empty())
+    {
+      mesh.OtherGroups.emplace_back(name, group.first);
+    }
+  }
   session.ThrowOnGmshError("gmsh cannot give its physical groups");
   return mesh;
 }

@@ -310,6 +310,13 @@ bool BuildMeshAsGmshDoes(const MshModel& model, const Version2Rules& rules, Name
     }
     mesh.Boundaries.push_back(std::move(boundary));
   }
+  for (const auto& named : model.Names)
+  {
+    if (named.first.first != dimension - 1 && !named.second.empty())
+    {
+      mesh.OtherGroups.emplace_back(named.second, named.first.first);
+    }
+  }
   return true;
 }
 

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dgmf
@@ -75,6 +76,9 @@ struct NamedMesh
   std::vector<std::int64_t> NodeIds;
   Cells Volume; ///< the cells of the mesh's dimension (all of them, named or not)
   std::vector<NamedBoundary> Boundaries; ///< in the file's order
+  /// The named groups of other dimensions (a gmsh physical curve or point of a 3D mesh, a volume
+  /// group), which are not boundaries: their names and dimensions, for messages.
+  std::vector<std::pair<std::string, int>> OtherGroups;
 
   std::size_t NumberOfNodes() const { return this->Points.size() / 3; }
 };
