@@ -81,6 +81,26 @@ TEST(BadInput, NonFiniteCoordinatesOrDisplacements)
   EXPECT_EQ(nanPoint.Execute(mesh)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(FilterRun::Has(nanPoint.Errors, "NaN or infinite point coordinates"));
 
+  // Finite but huge: a boundary node at 1e160 (its squared distances overflow) crashed CGAL's
+  // insertion or corrupted the heap until 2026-11-30; an interior node at -1e300 too.
+  for (const double huge : { 1e160, -1e300 })
+  {
+    auto far = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
+    vtkDataArray* marker = far->GetPointData()->GetArray("BoundaryMarker");
+    vtkIdType node = 0;
+    while (marker->GetTuple1(node) != (huge > 0.0 ? 2.0 : 0.0))
+    {
+      ++node;
+    }
+    far->GetPoint(node, p);
+    p[0] = huge;
+    far->GetPoints()->SetPoint(node, p);
+    FilterRun hugePoint;
+    hugePoint.Filter->SetRotationAngles(0, 0, 10);
+    EXPECT_EQ(hugePoint.Execute(far)->GetNumberOfPoints(), 0) << huge;
+    EXPECT_TRUE(FilterRun::Has(hugePoint.Errors, "of magnitude 8.7e99 or more")) << huge;
+  }
+
   auto clean = dgmf_test::ReadShippedMesh("rotating_circle.vtu", 822);
   vtkDataArray* d = clean->GetPointData()->GetArray("Displacement");
   d->SetComponent(5, 0, std::numeric_limits<double>::infinity());

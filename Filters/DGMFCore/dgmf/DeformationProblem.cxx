@@ -39,6 +39,12 @@ void ThrowBadMarkerValue(double value, std::size_t node)
     "boundary)");
 }
 
+std::string OutOfRangePointsMessage(std::size_t value)
+{
+  return "The input mesh has NaN or infinite point coordinates, or coordinates of magnitude " +
+    std::string(kLargestMagnitudeText) + " or more (point " + std::to_string(value / 3) + ").";
+}
+
 std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints)
 {
   const std::size_t n = problem.NumberOfNodes;
@@ -50,18 +56,18 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
   {
     throw std::invalid_argument("the mesh is empty (no nodes, or no points or node kinds given)");
   }
-  if (checkPoints && FirstNonFinite(problem.Points, 3 * n) < 3 * n)
+  if (checkPoints && FirstOutOfRange(problem.Points, 3 * n) < 3 * n)
   {
-    throw std::invalid_argument("The input mesh has NaN or infinite point coordinates (point " +
-      std::to_string(FirstNonFinite(problem.Points, 3 * n) / 3) + ").");
+    throw std::invalid_argument(OutOfRangePointsMessage(FirstOutOfRange(problem.Points, 3 * n)));
   }
   if (problem.Displacement)
   {
-    const std::size_t bad = FirstNonFinite(problem.Displacement, 3 * n);
+    const std::size_t bad = FirstOutOfRange(problem.Displacement, 3 * n);
     if (bad < 3 * n)
     {
-      throw std::invalid_argument(
-        "The displacement has NaN or infinite values (point " + std::to_string(bad / 3) + ").");
+      throw std::invalid_argument("The displacement has NaN or infinite values, or values of "
+                                  "magnitude " +
+        std::string(kLargestMagnitudeText) + " or more (point " + std::to_string(bad / 3) + ").");
     }
     for (std::size_t i = 0; problem.Dimension == 2 && i < n; ++i)
     {

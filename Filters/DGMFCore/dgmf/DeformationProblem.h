@@ -59,6 +59,10 @@ constexpr const char* NoBoundaryNodeMessage =
   "No node is a boundary node (the marker is 0 everywhere, or no displacement is non-zero): mark "
   "the boundary nodes 1 (static), 2 (moving) or 3 (slip). Nothing was deformed.";
 
+/// The error for point coordinates out of range (dgmf::FirstOutOfRange), `value` the index of
+/// the first bad coordinate (3 per point).
+std::string OutOfRangePointsMessage(std::size_t value);
+
 /**
  * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
  * std::invalid_argument, with a message for the user, for: a dimension other than 2 or 3, no node,

@@ -1,6 +1,7 @@
 #include "dgmf/DelaunayGraph.h"
 
 #include "dgmf/DelaunayGraphCgal.h"
+#include "dgmf/Finite.h"
 
 #include "dgmf/GraphPerturbation.h"
 
@@ -45,10 +46,11 @@ void CheckFinite(const double* xyz, std::size_t count, int dimension)
   {
     for (int c = 0; c < dimension; ++c)
     {
-      if (!std::isfinite(xyz[3 * i + c]))
+      if (!(std::abs(xyz[3 * i + c]) < kLargestMagnitude))
       {
-        throw std::invalid_argument(
-          "DelaunayGraph: boundary point " + std::to_string(i) + " has a non-finite coordinate");
+        throw std::invalid_argument("DelaunayGraph: boundary point " + std::to_string(i) +
+          " has a non-finite coordinate, or one of magnitude " + kLargestMagnitudeText +
+          " or more");
       }
     }
   }

@@ -85,11 +85,10 @@ DelaunayMapping::DelaunayMapping(int dimension, const double* points, std::size_
   jobs.emplace_back(
     [points, numberOfNodes]()
     {
-      const std::size_t bad = FirstNonFinite(points, 3 * numberOfNodes);
+      const std::size_t bad = FirstOutOfRange(points, 3 * numberOfNodes);
       if (bad < 3 * numberOfNodes)
       {
-        throw std::invalid_argument("The input mesh has NaN or infinite point coordinates (point " +
-          std::to_string(bad / 3) + ").");
+        throw std::invalid_argument(OutOfRangePointsMessage(bad));
       }
     });
   // The node arrays are allocated here without being written (so a failed allocation is thrown
