@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -20,15 +21,46 @@ namespace dgmf_cli
 namespace
 {
 const std::regex Conversion("%0?[0-9]*d");
+
+/// `text` as the value of an XML attribute in double quotes (a file named "wing&flap.vtu").
+std::string XMLAttribute(const std::string& text)
+{
+  std::string escaped;
+  for (const char c : text)
+  {
+    switch (c)
+    {
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '>':
+        escaped += "&gt;";
+        break;
+      case '"':
+        escaped += "&quot;";
+        break;
+      default:
+        escaped += c;
+    }
+  }
+  return escaped;
 }
+} // namespace
 
 std::string FramePath(const std::string& output, std::size_t index, std::size_t count)
 {
   std::smatch match;
   if (output.find('%') != std::string::npos)
   {
+    // One conversion, in the file's name (a folder per frame would need each folder made, and
+    // the collection would have no folder of its own), at most 20 digits wide.
     if (!std::regex_search(output, match, Conversion) ||
-      output.find('%', static_cast<std::size_t>(match.position(0)) + 1) != std::string::npos)
+      output.find('%', static_cast<std::size_t>(match.position(0)) + 1) != std::string::npos ||
+      output.find('/', static_cast<std::size_t>(match.position(0))) != std::string::npos ||
+      std::atoi(match.str(0).c_str() + 1) > 20)
     {
       return "";
     }
@@ -76,7 +108,7 @@ bool WriteCollection(
                                    .lexically_relative(folder.empty() ? "." : folder)
                                    .string();
     file << "    <DataSet timestep=\"" << std::setprecision(17) << frame.first
-         << "\" part=\"0\" file=\"" << relative << "\"/>\n";
+         << "\" part=\"0\" file=\"" << XMLAttribute(relative) << "\"/>\n";
   }
   file << "  </Collection>\n</VTKFile>\n";
   file.close();

@@ -22,7 +22,7 @@ namespace dgmf_cli
  * The file of frame `index` of a series of `count` for the OUTPUT given: OUTPUT's own printf
  * conversion if it has one (%d, %4d, %04d), else the frame number inserted before the extension
  * ("out.vtu" -> "out_0007.vtu", at least 4 digits). Empty when OUTPUT has a % that is not one
- * such conversion.
+ * such conversion in the file's name (not in a folder), at most 20 digits wide.
  */
 std::string FramePath(const std::string& output, std::size_t index, std::size_t count);
 

@@ -299,9 +299,22 @@ int RunSeries(
   const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";
   if (files && firstFrame.empty())
   {
-    std::cerr << "dgmf-deform: the output's % must be one integer conversion (%d, %04d): "
+    std::cerr << "dgmf-deform: the output's % must be one integer conversion (%d, %04d; at "
+                 "most 20 digits) in the file's name, not in a folder: "
               << options.Output << "\n";
     return ExitUsage;
+  }
+  for (std::size_t k = 0; files && k < steps.size(); ++k)
+  {
+    // A series started from a frame of an earlier one ("p_0000.vtu" into "p.vtu").
+    std::error_code error;
+    const std::string frame = dgmf_cli::FramePath(options.Output, k, steps.size());
+    if (std::filesystem::equivalent(frame, options.Input, error))
+    {
+      std::cerr << "dgmf-deform: error: frame " << k << " of the series would overwrite the "
+                << "input " << options.Input << ": give the series another name\n";
+      return ExitUsage;
+    }
   }
   if (files && !options.NoWrite)
   {

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import time
 import unittest
+from xml.etree import ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import failure_meshes as meshes  # noqa: E402
@@ -88,6 +89,34 @@ class CommandFailures(unittest.TestCase):
             deformed.GetPoint(i) != original.GetPoint(i) for i in range(CIRCLE_POINTS))
         self.assertGreater(moved, 100)
         self.assertEqual(leftovers(self.work), [])
+
+    def test_a_series_never_overwrites_its_input_and_names_its_frames_safely(self):
+        # Until 2026-11-30: a series started from a frame of an earlier one wrote its frame 0
+        # over its input; a %d in a folder wrote frame 0, failed at frame 1 and wrote no .pvd; a
+        # %064d wrote every frame into one file; a '&' in the name made a .pvd no reader parses.
+        folder = self.path("series_names")
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        pitch = ("--center", 0.25, 0, 0, "--pitch", 0, 5, 1, 0, "--times", "0:1:2")
+        source = os.path.join(folder, "p_0000.vtu")
+        shutil.copy(os.path.join(ARGS.data, "pitching_airfoil.vtu"), source)
+        before = digest(source)
+        code, out, err = run(source, os.path.join(folder, "p.vtu"), *pitch)
+        self.assertEqual(code, 2, err)
+        self.assertIn("frame 0 of the series would overwrite the input", err)
+        self.assertEqual(digest(source), before)
+        for pattern in ("fr_%d/p.vtu", "w_%064d.vtu"):
+            code, out, err = run(source, os.path.join(folder, pattern), *pitch)
+            self.assertEqual(code, 2, pattern + err)
+            self.assertIn("in the file's name, not in a folder", err)
+        self.assertEqual(sorted(os.listdir(folder)), ["p_0000.vtu"])
+        code, out, err = run(source, os.path.join(folder, "wing&flap.vtu"), *pitch)
+        self.assertEqual(code, 0, err)
+        listed = [element.get("file") for element in
+                  ElementTree.parse(os.path.join(folder, "wing&flap.pvd")).iter("DataSet")]
+        self.assertEqual(listed, ["wing&flap_0000.vtu", "wing&flap_0001.vtu"])
+        for name in listed:
+            self.assertGreater(meshes.read(os.path.join(folder, name)).GetNumberOfPoints(), 0)
 
     # 2. A write cut short (here by a file-size limit, as a full disk would) leaves the file that
     #    was at the output path untouched and no temporary file.
