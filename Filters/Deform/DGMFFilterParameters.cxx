@@ -125,22 +125,36 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
       std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
       " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
   }
-  // With BODY_CENTROID: the centroid of each body's moving nodes (this piece's).
+  // With BODY_CENTROID: the centroid of each body's moving nodes; in a distributed run those of
+  // every piece (this piece's, then the others' boundary nodes), each position once and in
+  // increasing order, so that every process turns about the same centre (each turned about its
+  // own piece's centroid until 2026-11-30, and the pieces tore apart).
   std::vector<std::array<double, 4>> sums(static_cast<std::size_t>(bodies), { 0, 0, 0, 0 });
   if (filter->GetRotationCenterMode() == vtkDGMFDeformFilter::BODY_CENTROID)
   {
-    for (std::size_t i = 0; i < nodes.LocalNodes; ++i)
+    std::vector<std::array<double, 4>> moving; // body, x, y, z
+    for (std::size_t i = 0; i < (nodes.Distributed ? nodes.NumberOfNodes : nodes.LocalNodes); ++i)
     {
       if (nodes.Kinds[i] == dgmf::NodeKind::MovingBoundary)
       {
         const std::int32_t body = nodes.BodyIds.empty() ? 1 : std::max(nodes.BodyIds[i], 1);
-        std::array<double, 4>& sum = sums[static_cast<std::size_t>(body - 1)];
-        for (int c = 0; c < 3; ++c)
-        {
-          sum[static_cast<std::size_t>(c)] += nodes.Points[3 * i + static_cast<std::size_t>(c)];
-        }
-        sum[3] += 1.0;
+        const double* p = nodes.Points + 3 * i;
+        moving.push_back({ static_cast<double>(body), p[0], p[1], p[2] });
       }
+    }
+    if (nodes.Distributed)
+    {
+      std::sort(moving.begin(), moving.end());
+      moving.erase(std::unique(moving.begin(), moving.end()), moving.end());
+    }
+    for (const std::array<double, 4>& node : moving)
+    {
+      std::array<double, 4>& sum = sums[static_cast<std::size_t>(node[0]) - 1];
+      for (std::size_t c = 0; c < 3; ++c)
+      {
+        sum[c] += node[c + 1];
+      }
+      sum[3] += 1.0;
     }
   }
   std::vector<dgmf::RigidMotion> motions;
