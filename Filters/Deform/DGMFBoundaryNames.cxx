@@ -115,7 +115,7 @@ int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& nam
 } // namespace
 
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
-  vtkUnstructuredGrid* merged, bool findLayers)
+  vtkUnstructuredGrid* merged, bool findLayers, bool piece, int meshDimension)
 {
   std::vector<double> copy;
   const double* xyz = PointsAsDouble(merged->GetPoints(), copy);
@@ -123,7 +123,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     ? dgmf::FindExtrudedLayers(
         xyz, static_cast<std::size_t>(merged->GetNumberOfPoints()), MakeSMPParallelFor())
     : dgmf::ExtrudedLayers();
-  NodeRoles roles = AssignRoles(mesh, selection, layers);
+  NodeRoles roles = AssignRoles(mesh, selection, layers, piece, meshDimension);
   roles.Layers = std::move(layers);
   return roles;
 }
@@ -139,8 +139,8 @@ std::string ListBlockNames(const CompositeMesh& mesh)
   return names;
 }
 
-NodeRoles AssignRoles(
-  const CompositeMesh& mesh, const BoundarySelection& selection, const dgmf::ExtrudedLayers& layers)
+NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
+  const dgmf::ExtrudedLayers& layers, bool piece, int meshDimension)
 {
   // The block hierarchy of a multiblock (selectors such as "/Root/boundary/wing"); a partitioned
   // data set collection (ParaView's IOSS reader) has none that VTK 9.2 can generate: its blocks
@@ -172,9 +172,15 @@ NodeRoles AssignRoles(
     leafOfFlatIndex[leaves[l].FlatIndex] = l;
     dimension = std::max(dimension, leaves[l].CellDimension);
   }
+  // A piece of a distributed mesh may hold only patches: the whole mesh's dimension.
+  dimension = piece && meshDimension > 0 ? meshDimension : dimension;
   // The leaves of an entry.
+  std::vector<std::uint8_t> foundEntries(
+    piece ? selection.Moving.size() + selection.Static.size() + selection.Slip.size() : 0, 0);
+  std::size_t entryIndex = 0;
   const auto leavesOf = [&](const std::string& entry)
   {
+    const std::size_t index = entryIndex++;
     std::vector<std::size_t> found;
     if (hasHierarchy)
     {
@@ -203,6 +209,14 @@ NodeRoles AssignRoles(
         {
           found.push_back(l);
         }
+      }
+    }
+    if (piece)
+    {
+      foundEntries[index] = found.empty() ? 0 : 1;
+      if (found.empty())
+      {
+        return found; // another piece may hold it (AgreeOnNamedBoundaries)
       }
     }
     if (found.empty())
@@ -355,6 +369,11 @@ NodeRoles AssignRoles(
   if (selection.Moving.size() > 1)
   {
     roles.BodyIds = std::move(body);
+  }
+  if (piece)
+  {
+    roles.Found = std::move(foundEntries);
+    roles.BlockNames = ListBlockNames(mesh);
   }
   return roles;
 }

@@ -61,6 +61,10 @@ struct NodeRoles
   std::vector<std::string> SlipNames; ///< the entries, for messages
   /// The planes of a one-cell-thick mesh the roles were assigned with (the gathering reuses them)
   dgmf::ExtrudedLayers Layers;
+  /// A piece of a distributed mesh: per entry (moving, then static, then slip, as selected),
+  /// whether a block of this piece has its name (the others' pieces may: AgreeOnNamedBoundaries).
+  std::vector<std::uint8_t> Found;
+  std::string BlockNames; ///< this piece's blocks, for the message of an entry found nowhere
 };
 
 /**
@@ -70,10 +74,12 @@ struct NodeRoles
  * cells are of a lower dimension than the mesh's: OpenFOAM patches, side sets) are static, except
  * the two planes of a one-cell-thick mesh (`layers`, if Found()), which are not boundaries.
  * Throws std::invalid_argument for an entry that matches no block; the message lists the names
- * of the input's blocks.
+ * of the input's blocks. With `piece` (one piece of a distributed mesh), an entry that matches no
+ * block of the piece is not an error here: `Found` says which did (AgreeOnNamedBoundaries), and
+ * `meshDimension` (> 0) is the whole mesh's dimension (a piece may hold only patches).
  */
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
-  const dgmf::ExtrudedLayers& layers);
+  const dgmf::ExtrudedLayers& layers, bool piece = false, int meshDimension = 0);
 
 /**
  * The roles of the merged nodes of `mesh` (whose merged grid is `merged`), with the planes of a
@@ -81,7 +87,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
  * Layers).
  */
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
-  vtkUnstructuredGrid* merged, bool findLayers);
+  vtkUnstructuredGrid* merged, bool findLayers, bool piece = false, int meshDimension = 0);
 
 /// The names of the blocks of `mesh` (the merged leaves), for messages.
 std::string ListBlockNames(const CompositeMesh& mesh);

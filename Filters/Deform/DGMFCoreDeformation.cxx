@@ -215,11 +215,11 @@ std::string GatherInputNodes(vtkUnstructuredGrid* input, const CompositeMesh* co
       auto& kept = caches.Roles;
       const std::uint64_t generation = caches.Composite.GetGeneration();
       if (!kept.Valid || kept.Generation != generation || !(kept.Selection == boundaries) ||
-        kept.FindLayers != findLayers)
+        kept.FindLayers != findLayers || kept.Roles.Found.empty() == options.Distributed)
       {
         kept.Valid = false;
-        kept.Roles =
-          AssignRoles(*composite, boundaries, input, findLayers); // throws for a bad name
+        kept.Roles = AssignRoles(*composite, boundaries, input, findLayers, options.Distributed,
+          options.Dimension); // throws for a bad name (of a serial mesh)
         kept.Generation = generation;
         kept.Selection = boundaries;
         kept.FindLayers = findLayers;

@@ -2,6 +2,8 @@
 
 #include "DGMFMeshConversion.h"
 
+#include "DGMFBoundaryNames.h"
+
 #include "DGMFInputNodes.h"
 #include "DGMFOutputArrays.h"
 
@@ -173,6 +175,35 @@ void ReduceSummary(vtkMultiProcessController* controller, bool& ok, dgmf::Qualit
   summary.Minimum = summary.Evaluated > 0 ? globalMinimum : none;
   outsideNodes = static_cast<std::size_t>(total[5]);
   summary.InputInvalid = static_cast<std::size_t>(total[6]);
+}
+
+std::string AgreeOnNamedBoundaries(
+  vtkMultiProcessController* controller, const BoundarySelection& selection, const NodeRoles* roles)
+{
+  std::vector<std::string> entries = selection.Moving;
+  entries.insert(entries.end(), selection.Static.begin(), selection.Static.end());
+  entries.insert(entries.end(), selection.Slip.begin(), selection.Slip.end());
+  std::vector<int> here(entries.size(), 0), anywhere(entries.size(), 0);
+  for (std::size_t e = 0; roles && e < entries.size() && e < roles->Found.size(); ++e)
+  {
+    here[e] = roles->Found[e];
+  }
+  if (entries.empty())
+  {
+    return "";
+  }
+  controller->AllReduce(
+    here.data(), anywhere.data(), static_cast<vtkIdType>(entries.size()), vtkCommunicator::MAX_OP);
+  for (std::size_t e = 0; e < entries.size(); ++e)
+  {
+    if (!anywhere[e])
+    {
+      return "No block of any piece of the input is named '" + entries[e] +
+        "'. This piece's blocks are: " +
+        (roles && !roles->BlockNames.empty() ? roles->BlockNames : std::string("(none)")) + ".";
+    }
+  }
+  return "";
 }
 
 void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)

@@ -12,6 +12,7 @@
 #include <cstddef>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 class vtkFieldData;
@@ -21,7 +22,9 @@ class vtkUnstructuredGrid;
 
 namespace dgmf_vtk
 {
+struct BoundarySelection;
 struct InputNodes;
+struct NodeRoles;
 
 /// True when `controller` runs more than one process.
 bool IsDistributed(vtkMultiProcessController* controller);
@@ -64,6 +67,15 @@ struct RemoteBoundaryNode
  */
 std::vector<RemoteBoundaryNode> ExchangeBoundaryNodes(
   vtkMultiProcessController* controller, const std::vector<RemoteBoundaryNode>& local);
+
+/**
+ * Boundaries chosen by name on a distributed mesh: "" when every entry of `selection` names a
+ * block of some piece (a reader gives the blocks to one process, a redistribution drops the
+ * blocks a piece has no cell of), else the error, the same on every process. `roles` is this
+ * piece's (AssignRoles with `piece`), null when it has none (an empty piece). Collective.
+ */
+std::string AgreeOnNamedBoundaries(vtkMultiProcessController* controller,
+  const BoundarySelection& selection, const NodeRoles* roles);
 
 /**
  * Appends the other processes' boundary nodes to `nodes` (this piece's nodes stay first: the

@@ -453,17 +453,22 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     : dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
         this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
-  std::string slipError; // the same on every process
+  std::string agreementError; // of the names or of the slip planes: the same on every process
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {
-    dgmf_vtk::AppendRemoteBoundaryNodes(this->Controller, nodes);
-    slipError = dgmf_vtk::AgreeOnSlipPlanes(this->Controller, nodes);
-  }
-  if (!ok || !slipError.empty())
-  {
-    if (!error.empty() || !slipError.empty())
+    agreementError = dgmf_vtk::AgreeOnNamedBoundaries(
+      this->Controller, this->Internal->Boundaries, composite ? options.Roles : nullptr);
+    if (agreementError.empty())
     {
-      vtkErrorMacro(<< error << slipError);
+      dgmf_vtk::AppendRemoteBoundaryNodes(this->Controller, nodes);
+      agreementError = dgmf_vtk::AgreeOnSlipPlanes(this->Controller, nodes);
+    }
+  }
+  if (!ok || !agreementError.empty())
+  {
+    if (!error.empty() || !agreementError.empty())
+    {
+      vtkErrorMacro(<< error << agreementError);
     }
     return 0;
   }
