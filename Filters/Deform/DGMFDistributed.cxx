@@ -6,7 +6,9 @@
 
 #include "DGMFInputNodes.h"
 #include "DGMFOutputArrays.h"
+#include "DGMFSMPTools.h"
 
+#include "dgmf/ExtrudedLayers.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkCellTypes.h"
@@ -204,6 +206,47 @@ std::string AgreeOnNamedBoundaries(
     }
   }
   return "";
+}
+
+std::string CheckOneCellThickPieces(
+  vtkMultiProcessController* controller, const InputNodes& nodes, bool named)
+{
+  const std::size_t n = nodes.LocalNodes;
+  const dgmf::ExtrudedLayers layers = n > 0 && nodes.Dimension == 3
+    ? dgmf::FindExtrudedLayers(nodes.Points, n, MakeSMPParallelFor())
+    : dgmf::ExtrudedLayers();
+  bool slip = false, interior = false;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    slip = slip || nodes.Kinds[i] == dgmf::NodeKind::SlipBoundary;
+    interior = interior || nodes.Kinds[i] == dgmf::NodeKind::Interior;
+  }
+  // Over the non-empty pieces: all one cell thick between the same planes; any slip node; any
+  // interior node.
+  const double inf = std::numeric_limits<double>::infinity();
+  const bool empty = n == 0;
+  double low[4] = { empty ? inf : static_cast<double>(layers.Axis), empty ? inf : layers.Low,
+    empty ? inf : layers.High, empty ? inf : -static_cast<double>(layers.Axis) };
+  double high[4] = { empty ? -inf : layers.Low, empty ? -inf : layers.High, slip ? 1.0 : 0.0,
+    interior ? 1.0 : 0.0 };
+  double lowest[4], highest[4];
+  controller->AllReduce(low, lowest, 4, vtkCommunicator::MIN_OP);
+  controller->AllReduce(high, highest, 4, vtkCommunicator::MAX_OP);
+  const bool sameAxis = lowest[0] >= 0.0 && lowest[0] == -lowest[3];
+  const bool samePlanes =
+    std::isfinite(lowest[1]) && lowest[1] == highest[0] && lowest[2] == highest[1];
+  // Frozen: no slip node, and every node a boundary node (a marker that marks the planes, or
+  // names, whose unnamed patches are static; a node no block of its piece holds is interior).
+  const bool frozen = highest[2] == 0.0 && (named || highest[3] == 0.0);
+  if (!sameAxis || !samePlanes || !frozen)
+  {
+    return "";
+  }
+  return "The mesh is one cell thick (a 2D case between two planes normal to " +
+    std::string(1, "xyz"[static_cast<int>(lowest[0])]) +
+    "): a distributed run deforms it as a 3D mesh, where its two planes are static boundaries "
+    "unless they are slip ones, and nothing would move. Name its two planes as Slip Boundaries "
+    "(OpenFOAM's front and back), or deform it in a serial run, which deforms it as 2D.";
 }
 
 void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)

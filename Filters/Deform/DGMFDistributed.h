@@ -78,6 +78,16 @@ std::string AgreeOnNamedBoundaries(vtkMultiProcessController* controller,
   const BoundarySelection& selection, const NodeRoles* roles);
 
 /**
+ * A one-cell-thick mesh (OpenFOAM's 2D cases) in a distributed run, which deforms it as 3D: the
+ * error when every non-empty piece lies on the same two planes (dgmf::FindExtrudedLayers), no
+ * node of any piece is a slip node, and (with boundaries chosen by name, `named`, whose unnamed
+ * patches are static) or every node is a boundary node: the two planes are then static and the
+ * mesh would come out frozen. Else "". The same on every process. Collective.
+ */
+std::string CheckOneCellThickPieces(
+  vtkMultiProcessController* controller, const InputNodes& nodes, bool named);
+
+/**
  * Appends the other processes' boundary nodes to `nodes` (this piece's nodes stay first: the
  * graph is then the same on every process), and gives this piece's nodes that look interior but
  * are another piece's boundary nodes (ghost nodes whose boundary face is on a ghost cell) the kind

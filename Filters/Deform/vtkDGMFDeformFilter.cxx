@@ -458,6 +458,11 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   {
     agreementError = dgmf_vtk::AgreeOnNamedBoundaries(
       this->Controller, this->Internal->Boundaries, composite ? options.Roles : nullptr);
+    if (agreementError.empty() && this->OneCellThickMode == DETECT)
+    {
+      agreementError = dgmf_vtk::CheckOneCellThickPieces(
+        this->Controller, nodes, !this->Internal->Boundaries.Empty());
+    }
     if (agreementError.empty())
     {
       dgmf_vtk::AppendRemoteBoundaryNodes(this->Controller, nodes);

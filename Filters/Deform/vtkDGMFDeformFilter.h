@@ -494,7 +494,8 @@ public:
    * 2D mesh of one layer, whose in-plane motion both layers take bit for bit; the coordinate
    * across the layers is kept. The two planes are not boundaries (without names or a marker, the
    * boundary is the faces across them). The motion must stay in the plane (a rotation about the
-   * axis across the layers). Not in distributed runs (there the mesh is 3D). Default: DETECT.
+   * axis across the layers). Distributed runs deform it as 3D: its two planes must be slip
+   * boundaries (DETECT says so). Default: DETECT.
    */
   vtkSetClampMacro(OneCellThickMode, int, DETECT, ON);
   vtkGetMacro(OneCellThickMode, int);

@@ -23,14 +23,16 @@ Checks, on every process:
   fit the distinct positions of all moving nodes), and so are the nodes;
 - a rotation about the moving nodes' centroid turns every piece about the serial centroid;
 - boundaries chosen by name on a multiblock whose blocks are on some processes only give the
-  serial result, and a name of no block is an error on every process.
+  serial result, and a name of no block is an error on every process;
+- a one-cell-thick mesh is an error without slip planes and, with its two planes as slip
+  boundaries, gives the serial run's 2D result.
 """
 import argparse
 import sys
 
 from paraview import simple
 from vtkmodules.numpy_interface import dataset_adapter as dsa
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIntArray
 import numpy as np
@@ -65,6 +67,14 @@ def distributed_mesh(path):
     pieces = simple.RedistributeDataSet(Input=reader)
     numbered = simple.GenerateGlobalIds(Input=pieces)
     return simple.GhostCellsGenerator(Input=numbered)
+
+
+def dsa_points_of(vtm):
+    """The volume block (block 0) of a .vtm file, read whole on this process."""
+    reader = vtkXMLMultiBlockDataReader()
+    reader.SetFileName(vtm)
+    reader.Update()
+    return reader.GetOutput().GetBlock(0)
 
 
 def check_against_reference(piece, original, reference, method):
@@ -109,6 +119,8 @@ def main():
     parser.add_argument("--extracted-data", required=True)
     parser.add_argument("--reference-centroid", required=True)
     parser.add_argument("--named-data", required=True)
+    parser.add_argument("--layer-data", required=True)
+    parser.add_argument("--reference-layer", required=True)
     parser.add_argument("--reference-extracted", required=True)
     parser.add_argument("--reference-half", required=True)
     parser.add_argument("--circle", required=True)
@@ -200,6 +212,34 @@ def main():
     wrong.DisplacementArray = ["POINTS", "None"]
     wrong.MovingBoundaries = ["wnig"]
     assert local_piece(wrong).GetNumberOfPoints() == 0, "a name of no piece was taken"
+
+    # A one-cell-thick mesh (deformed as 2D in a serial run, as 3D here): with its two planes as
+    # slip boundaries, the serial result; without, an error on every process (until 2026-11-30
+    # the planes were static walls and the mesh came out frozen, 10 cells inverted, no word).
+    if size > 1:
+        layer = simple.RedistributeDataSet(
+            Input=simple.XMLMultiBlockDataReader(FileName=[args.layer_data]))
+        for slip in ([], ["front", "back"]):
+            deform = DGMFDeform(Input=layer)  # noqa: F821
+            deform.BoundaryMarkerArray = ["POINTS", "None"]
+            deform.DisplacementArray = ["POINTS", "None"]
+            deform.MovingBoundaries = ["circle"]
+            deform.SlipBoundaries = slip
+            deform.RotationAngles = [0.0, 0.0, 30.0]
+            layer_in = local_piece(layer).GetBlock(0)
+            layer_out = local_piece(deform).GetBlock(0)
+            if not slip:
+                assert layer_out is None or layer_out.GetNumberOfPoints() == 0, \
+                    "a one-cell-thick mesh with static planes was deformed"
+                continue
+            if layer_in is not None and layer_in.GetNumberOfPoints() > 0:
+                flat = check_against_reference(
+                    layer_out, layer_in,
+                    {"input": dsa_points_of(args.layer_data), "x": read(args.reference_layer)},
+                    "x")
+                print("process %d: one-cell-thick mesh, slip planes, largest difference from "
+                      "the serial (2D) run %.3g" % (rank, flat))
+                assert flat <= 1e-10, flat
 
     # The rotation about the moving nodes' centroid: the centroid of all pieces' moving nodes
     # (each process turned about its own piece's until 2026-11-30: 0.215 off on two processes,
