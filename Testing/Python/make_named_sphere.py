@@ -7,11 +7,13 @@ usage: make_named_sphere.py SOURCE.vtu TARGET.vtm
 """
 import sys
 
-from vtkmodules.vtkCommonDataModel import (vtkCellArray, vtkCompositeDataSet, vtkMultiBlockDataSet,
-                                            vtkPolyData)
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData
+import os
+
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reader_blocks import write_reader_blocks  # noqa: E402
 
 reader = vtkXMLUnstructuredGridReader()
 reader.SetFileName(sys.argv[1])
@@ -28,31 +30,16 @@ for c in range(faces.GetNumberOfCells()):
     ids = faces.GetCell(c).GetPointIds()
     on_wing = all(marker.GetTuple1(ids.GetId(k)) == 2 for k in range(ids.GetNumberOfIds()))
     patches["wing" if on_wing else "box"].append(c)
-boundary = vtkMultiBlockDataSet()
-for index, name in enumerate(("wing", "box")):
-    polys = vtkCellArray()
-    for c in patches[name]:
-        polys.InsertNextCell(faces.GetCell(c).GetPointIds())
-    patch = vtkPolyData()
-    patch.SetPoints(faces.GetPoints())
-    patch.SetPolys(polys)
-    clean = vtkCleanPolyData()  # its own points only, as the OpenFOAM reader's patches
-    clean.SetInputData(patch)
-    clean.PointMergingOff()
-    clean.Update()
-    boundary.SetBlock(index, clean.GetOutput())
-    boundary.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), name)
 volume = mesh.NewInstance()
 volume.DeepCopy(mesh)
 volume.GetPointData().RemoveArray("BoundaryMarker")
-blocks = vtkMultiBlockDataSet()
-blocks.SetBlock(0, volume)
-blocks.GetMetaData(0).Set(vtkCompositeDataSet.NAME(), "internalMesh")
-blocks.SetBlock(1, boundary)
-blocks.GetMetaData(1).Set(vtkCompositeDataSet.NAME(), "boundary")
-writer = vtkXMLMultiBlockDataWriter()
-writer.SetInputData(blocks)
-writer.SetFileName(sys.argv[2])
-writer.SetDataModeToBinary()
-assert writer.Write() == 1
+
+def corners(cell):
+    ids = faces.GetCell(cell).GetPointIds()
+    return [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
+
+
+write_reader_blocks(volume, faces.GetPoints(),
+                    {name: [corners(c) for c in cells] for name, cells in patches.items()},
+                    sys.argv[2])
 print("named sphere: wing %d faces, box %d faces" % (len(patches["wing"]), len(patches["box"])))

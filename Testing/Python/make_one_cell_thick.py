@@ -7,16 +7,17 @@ the volume.
 
 usage: pvbatch make_one_cell_thick.py PLUGIN CIRCLE.vtu MESH.vtm REFERENCE.vtu
 """
+import os
 import sys
 
 from paraview import simple
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import (VTK_WEDGE, vtkCellArray, vtkCompositeDataSet,
-                                           vtkMultiBlockDataSet, vtkPolyData, vtkUnstructuredGrid)
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData
-from vtkmodules.vtkIOXML import (vtkXMLMultiBlockDataWriter, vtkXMLUnstructuredGridReader,
-                                 vtkXMLUnstructuredGridWriter)
+from vtkmodules.vtkCommonDataModel import VTK_WEDGE, vtkUnstructuredGrid
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reader_blocks import write_reader_blocks  # noqa: E402
 
 plugin, source, mesh_path, reference_path = sys.argv[1:5]
 assert vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses() == 1
@@ -48,30 +49,7 @@ for (a, b), count in edges.items():
     if count == 1:
         name = "circle" if sum(c * c for c in circle.GetPoint(a)) < 4.0 else "outer"
         patches[name].append([a, b, b + n, a + n])
-boundary = vtkMultiBlockDataSet()
-for index, name in enumerate(("circle", "outer", "front", "back")):
-    polys = vtkCellArray()
-    for face in patches[name]:
-        polys.InsertNextCell(len(face), face)
-    patch = vtkPolyData()
-    patch.SetPoints(points)
-    patch.SetPolys(polys)
-    clean = vtkCleanPolyData()  # its own points only, as the OpenFOAM reader's patches
-    clean.SetInputData(patch)
-    clean.PointMergingOff()
-    clean.Update()
-    boundary.SetBlock(index, clean.GetOutput())
-    boundary.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), name)
-blocks = vtkMultiBlockDataSet()
-blocks.SetBlock(0, volume)
-blocks.GetMetaData(0).Set(vtkCompositeDataSet.NAME(), "internalMesh")
-blocks.SetBlock(1, boundary)
-blocks.GetMetaData(1).Set(vtkCompositeDataSet.NAME(), "boundary")
-writer = vtkXMLMultiBlockDataWriter()
-writer.SetInputData(blocks)
-writer.SetFileName(mesh_path)
-writer.SetDataModeToBinary()
-assert writer.Write() == 1
+write_reader_blocks(volume, points, patches, mesh_path)
 
 simple.LoadPlugin(plugin, remote=False, ns=globals())
 deform = DGMFDeform(Input=simple.XMLMultiBlockDataReader(FileName=[mesh_path]))  # noqa: F821
