@@ -6,16 +6,19 @@
 #include "dgmf/HugePages.h"
 #include "dgmf/ResultNames.h"
 
+#include "vtkCellTypes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataAssembly.h"
 #include "vtkDataAssemblyUtilities.h"
+#include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -112,6 +115,28 @@ int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& nam
   return -1;
 }
 
+/// For a block of `leaf` whose own cells (not ghost) include cells of a lower dimension than
+/// `dimension` (a patch): its ghost cells (vtkGhostType) of dimension `dimension` or more; 0 for
+/// any other block.
+vtkIdType GhostVolumeCellsOfAPatch(
+  vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf, int dimension)
+{
+  auto* block = input && leaf.CellDimension >= dimension
+    ? vtkDataSet::SafeDownCast(input->GetDataSet(leaf.FlatIndex))
+    : nullptr;
+  vtkUnsignedCharArray* ghosts = block ? block->GetCellGhostArray() : nullptr;
+  vtkIdType volumeGhosts = 0;
+  bool faces = false;
+  for (vtkIdType c = 0; ghosts && c < block->GetNumberOfCells(); ++c)
+  {
+    const int cellDimension =
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(block->GetCellType(c)));
+    faces = faces || (ghosts->GetValue(c) == 0 && cellDimension < dimension);
+    volumeGhosts += ghosts->GetValue(c) != 0 && cellDimension >= dimension ? 1 : 0;
+  }
+  return faces ? volumeGhosts : 0;
+}
+
 } // namespace
 
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
@@ -174,6 +199,20 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   }
   // A piece of a distributed mesh may hold only patches: the whole mesh's dimension.
   dimension = piece && meshDimension > 0 ? meshDimension : dimension;
+  // ParaView's Ghost Cells Generator puts volume cells into the patch blocks of a multiblock:
+  // their nodes would be taken for the patch's (the whole mesh turned with a moving one).
+  for (const CompositeMesh::Leaf& leaf : leaves)
+  {
+    const vtkIdType ghosts = GhostVolumeCellsOfAPatch(mesh.GetInput(), leaf, dimension);
+    if (ghosts > 0)
+    {
+      throw std::invalid_argument("The boundary block '" + leaf.Name + "' holds " +
+        std::to_string(ghosts) +
+        " ghost cells of the volume's dimension (a Ghost Cells Generator adds them to the patch "
+        "blocks of a multiblock): boundaries chosen by name need no ghost cells; take the Ghost "
+        "Cells Generator out of the pipeline.");
+    }
+  }
   // The leaves of an entry.
   std::vector<std::uint8_t> foundEntries(
     piece ? selection.Moving.size() + selection.Static.size() + selection.Slip.size() : 0, 0);
