@@ -3,6 +3,7 @@
 #include "DGMFMeshConversion.h"
 
 #include "DGMFBoundaryNames.h"
+#include "DGMFDistributedSlip.h"
 
 #include "DGMFInputNodes.h"
 #include "DGMFOutputArrays.h"
@@ -247,6 +248,29 @@ std::string CheckOneCellThickPieces(
     "): a distributed run deforms it as a 3D mesh, where its two planes are static boundaries "
     "unless they are slip ones, and nothing would move. Name its two planes as Slip Boundaries "
     "(OpenFOAM's front and back), or deform it in a serial run, which deforms it as 2D.";
+}
+
+std::string JoinPieces(vtkMultiProcessController* controller, const JoinOptions& options,
+  vtkUnstructuredGrid* piece, InputNodes& nodes)
+{
+  std::string error = AgreeOnNamedBoundaries(controller, *options.Selection, options.Roles);
+  if (error.empty() && options.CheckLayers)
+  {
+    error = CheckOneCellThickPieces(controller, nodes, !options.Selection->Empty());
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  AppendRemoteBoundaryNodes(controller, nodes);
+  if (options.NonOrthogonality && piece->GetNumberOfCells() > 0 && !piece->GetCellGhostArray())
+  {
+    nodes.Warnings.emplace_back(
+      "This piece has no ghost cells: the faces between it and the other pieces are left out of "
+      "the non-orthogonality (MaximumNonOrthogonality may be below checkMesh's); a Ghost Cells "
+      "Generator before DGMF Deform adds them (not with boundaries chosen by name).");
+  }
+  return AgreeOnSlipPlanes(controller, nodes);
 }
 
 void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes& nodes)

@@ -87,6 +87,26 @@ std::string AgreeOnNamedBoundaries(vtkMultiProcessController* controller,
 std::string CheckOneCellThickPieces(
   vtkMultiProcessController* controller, const InputNodes& nodes, bool named);
 
+/// What JoinPieces checks and agrees on besides the nodes.
+struct JoinOptions
+{
+  const BoundarySelection* Selection = nullptr; ///< the boundaries chosen by name
+  const NodeRoles* Roles = nullptr;             ///< this piece's roles from them, or null
+  bool CheckLayers = false;      ///< CheckOneCellThickPieces (OneCellThickMode Detect)
+  bool NonOrthogonality = false; ///< warn when the piece has no ghost cells
+};
+
+/**
+ * The collective steps of a distributed run once every process has gathered its nodes: the
+ * names agreed (AgreeOnNamedBoundaries), a one-cell-thick mesh checked, the other pieces'
+ * boundary nodes appended (AppendRemoteBoundaryNodes) and the slip planes fitted to all pieces
+ * (AgreeOnSlipPlanes). Returns "" or the error, the same on every process; adds to
+ * `nodes.Warnings` the non-orthogonality's faces between pieces left out when `piece` has no
+ * ghost cells. Collective.
+ */
+std::string JoinPieces(vtkMultiProcessController* controller, const JoinOptions& options,
+  vtkUnstructuredGrid* piece, InputNodes& nodes);
+
 /**
  * Appends the other processes' boundary nodes to `nodes` (this piece's nodes stay first: the
  * graph is then the same on every process), and gives this piece's nodes that look interior but

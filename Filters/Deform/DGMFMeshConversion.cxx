@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <string>
 
 namespace dgmf_vtk
 {
@@ -317,17 +318,20 @@ vtkIdType CountBadCellsOutsideTheGuard(
   return count;
 }
 
-vtkIdType CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold)
+std::string CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold)
 {
   vtkDataArray* unrepaired = output->GetFieldData()->GetArray(dgmf::names::UnrepairedCellCount);
   if (!unrepaired || unrepaired->GetNumberOfTuples() < 1)
   {
-    return 0;
+    return "";
   }
   const vtkIdType outside = CountBadCellsOutsideTheGuard(
     output, output->GetCellData()->GetArray(dgmf::names::SizeSkew), threshold);
   unrepaired->SetTuple1(0, unrepaired->GetTuple1(0) + static_cast<double>(outside));
-  return outside;
+  return outside == 0 ? ""
+                      : std::to_string(outside) +
+      " polyhedra or polygons have a SizeSkew below the Repair Threshold: the quality guard "
+      "does not move their nodes (counted in UnrepairedCellCount).";
 }
 
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)

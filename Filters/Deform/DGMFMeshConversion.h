@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 class vtkPoints;
@@ -80,9 +81,10 @@ vtkIdType CountBadCellsOutsideTheGuard(
 /**
  * Adds CountBadCellsOutsideTheGuard of the deformed `output` (its SizeSkew) to its
  * UnrepairedCellCount field, so that the summary does not say "left unrepaired 0" with bad
- * polyhedra left; returns that count (0, and nothing changed, without the two arrays).
+ * polyhedra left; returns the warning that says how many, or "" for none (nothing changed
+ * without the two arrays).
  */
-vtkIdType CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold);
+std::string CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double threshold);
 
 /// The cells of `mesh` of its largest cell dimension (its volume cells, without the boundary
 /// faces or edges a merged composite input may hold).

@@ -3,7 +3,6 @@
 #include "DGMFCompositeMesh.h"
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
-#include "DGMFDistributedSlip.h"
 #include "DGMFFilterParameters.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFMotionInTime.h"
@@ -453,21 +452,15 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     : dgmf_vtk::GatherInputNodes(input, composite, this->Internal->Boundaries,
         this->OneCellThickMode != OFF && !distributed, options, cache, nodes);
   bool ok = error.empty();
-  std::string agreementError; // of the names or of the slip planes: the same on every process
+  std::string agreementError; // the same on every process
   if (distributed && (ok = dgmf_vtk::AllProcessesAgree(this->Controller, ok)))
   {
-    agreementError = dgmf_vtk::AgreeOnNamedBoundaries(
-      this->Controller, this->Internal->Boundaries, composite ? options.Roles : nullptr);
-    if (agreementError.empty() && this->OneCellThickMode == DETECT)
-    {
-      agreementError = dgmf_vtk::CheckOneCellThickPieces(
-        this->Controller, nodes, !this->Internal->Boundaries.Empty());
-    }
-    if (agreementError.empty())
-    {
-      dgmf_vtk::AppendRemoteBoundaryNodes(this->Controller, nodes);
-      agreementError = dgmf_vtk::AgreeOnSlipPlanes(this->Controller, nodes);
-    }
+    dgmf_vtk::JoinOptions join;
+    join.Selection = &this->Internal->Boundaries;
+    join.Roles = composite ? options.Roles : nullptr;
+    join.CheckLayers = this->OneCellThickMode == DETECT;
+    join.NonOrthogonality = this->ComputeNonOrthogonality;
+    agreementError = dgmf_vtk::JoinPieces(this->Controller, join, input, nodes);
   }
   if (!ok || !agreementError.empty())
   {
@@ -537,10 +530,7 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
   if (internal.TimeDependent)
   {
-    vtkNew<vtkDoubleArray> time;
-    time->SetName(dgmf::names::MotionTime);
-    time->InsertNextValue(internal.Time);
-    output->GetFieldData()->AddArray(time);
+    dgmf_vtk::AddFieldValue(output->GetFieldData(), dgmf::names::MotionTime, internal.Time);
   }
   const auto qualityStart = std::chrono::steady_clock::now();
   const dgmf_vtk::HexReferences hexReferences = this->ComputeQuality && input->GetPoints()
@@ -564,14 +554,11 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   {
     // The guard repairs the cells the metric's corner form covers; bad polyhedra are left, and
     // counted with the cells it could not repair.
-    const vtkIdType outside =
+    const std::string warning =
       dgmf_vtk::CountUnguardedCellsAsUnrepaired(output, this->RepairThreshold);
-    if (outside > 0)
+    if (!warning.empty())
     {
-      vtkWarningMacro(<< outside
-                      << " polyhedra or polygons have a SizeSkew below the Repair "
-                         "Threshold: the quality guard does not move their nodes "
-                         "(counted in UnrepairedCellCount).");
+      vtkWarningMacro(<< warning);
     }
   }
   if (this->ComputeQuality && this->FailOnInvertedCells && summary.Inverted > 0)
