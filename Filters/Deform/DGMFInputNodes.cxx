@@ -3,6 +3,7 @@
 #include "DGMFBoundaryNodes.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
+#include "dgmf/Finite.h"
 #include "dgmf/HugePages.h"
 
 #include "vtkAlgorithm.h"
@@ -207,6 +208,13 @@ void InputGatherer::Gather(
   this->Searched = false;
   this->DistinctPoints = options.DistinctPoints;
   nodes.Points = PointsAsDouble(mesh->GetPoints(), nodes.PointCopy);
+  if (options.Distributed && dgmf::FirstOutOfRange(nodes.Points, 3 * n) < 3 * n)
+  {
+    // Said by the piece that has it, with its own point number (once the pieces' boundary nodes
+    // are exchanged, another process would say it of a number its piece does not have).
+    throw std::invalid_argument(
+      dgmf::OutOfRangePointsMessage(dgmf::FirstOutOfRange(nodes.Points, 3 * n)));
+  }
   nodes.Dimension =
     options.Dimension != 0 ? options.Dimension : DetectDimension(mesh, nodes.Points, n);
   if (nodes.Dimension < 0)

@@ -464,10 +464,11 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   }
   if (!ok || !agreementError.empty())
   {
-    if (!error.empty() || !agreementError.empty())
-    {
-      vtkErrorMacro(<< error << agreementError);
-    }
+    vtkErrorMacro(<< (!error.empty() || !agreementError.empty()
+                      ? error + agreementError
+                      : std::string(
+                          "Another process of the distributed run failed (its message says why): "
+                          "every process stops.")));
     return 0;
   }
   if (nodes.LocalNodes == 0)
