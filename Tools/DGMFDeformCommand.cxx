@@ -191,6 +191,41 @@ void PrintBoundaries(
             << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
             << Listed(others) << ")" << std::endl;
 }
+/**
+ * For a mesh without a boundary-marker array: says that its boundary is found from its faces,
+ * moving where the displacement array is not zero; false (an error printed) when that array is
+ * missing or zero everywhere, so that no node would move whatever the motion asked for (such a
+ * run wrote the input's points, exit 0, until 2026-11-30).
+ */
+bool NodesCanMove(vtkUnstructuredGrid* mesh, const dgmf_cli::CommandOptions& options)
+{
+  if (mesh->GetPointData()->GetArray(options.Marker.c_str()) ||
+    (options.MarkerGiven && !options.Marker.empty()))
+  {
+    return true; // (a marker named but missing is the filter's error)
+  }
+  vtkDataArray* displacement = mesh->GetPointData()->GetArray(options.Displacement.c_str());
+  bool moving = false;
+  for (int c = 0; displacement && c < displacement->GetNumberOfComponents() && !moving; ++c)
+  {
+    double range[2];
+    displacement->GetRange(range, c);
+    moving = range[0] != 0.0 || range[1] != 0.0;
+  }
+  if (!moving)
+  {
+    std::cerr << "dgmf-deform: error: the input has no boundary-marker array '" << options.Marker
+              << "' and no non-zero displacement array '" << options.Displacement
+              << "': no node would move. Give the marker (--marker NAME: 0 interior, 1 static, "
+                 "2 moving, 3 slip) or the moving nodes' displacement (--displacement NAME).\n";
+    return false;
+  }
+  std::cout << "dgmf-deform: no boundary-marker array '" << options.Marker
+            << "': the boundary is the mesh's boundary faces, moving where '"
+            << options.Displacement << "' is not zero" << std::endl;
+  return true;
+}
+
 /// Writes the deformed mesh where the options say; false (the error printed) when it cannot.
 bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   const dgmf_cli::CommandOptions& options, std::string& written)
@@ -507,6 +542,10 @@ int main(int argc, char* argv[])
     (mesh && mesh->GetPointData()->GetArray(options.Displacement.c_str())))
   {
     filter->SetDisplacementArrayName(options.Displacement.c_str());
+  }
+  if (mesh && !NodesCanMove(mesh, options))
+  {
+    return ExitFailure;
   }
 
   if (!options.Trajectory.empty())

@@ -256,7 +256,10 @@ TEST(ProblemValidation, BadValuesGetTheMessagesTheFilterShows)
   EXPECT_TRUE(validate(problem).empty());
   problem.Displacement = displacement.data();
   displacement[3 * 5 + 1] = std::numeric_limits<double>::infinity();
-  ExpectRejected([&]() { validate(problem); }, "NaN or infinite values (point 5)");
+  ExpectRejected([&]() { validate(problem); }, "NaN or infinite values, or values of magnitude");
+  ExpectRejected([&]() { validate(problem); }, "(point 5)");
+  displacement[3 * 5 + 1] = 1e100; // finite, but its square overflows
+  ExpectRejected([&]() { validate(problem); }, "(point 5)");
   displacement[3 * 5 + 1] = 0.0;
   displacement[3 * 7 + 2] = 0.25; // off the plane of a 2D mesh
   ExpectRejected([&]() { validate(problem); }, "non-zero z component (point 7)");
@@ -270,7 +273,8 @@ TEST(ProblemValidation, BadValuesGetTheMessagesTheFilterShows)
   ExpectRejected([&]() { validate(problem); }, "2 bodies but 1 rigid motions");
   problem.NumberOfBodies = 0;
   set.Points[3 * 50] = std::numeric_limits<double>::quiet_NaN();
-  ExpectRejected([&]() { validate(problem); }, "NaN or infinite point coordinates (point 50)");
+  ExpectRejected([&]() { validate(problem); }, "NaN or infinite point coordinates");
+  ExpectRejected([&]() { validate(problem); }, "(point 50)");
   EXPECT_NO_THROW(dgmf::ValidateProblem(problem, false)); // the graph methods check it there
   set = dgmf_test::CircleInSquare(16, 6, 40);
   for (dgmf::NodeKind& kind : set.Kinds)

@@ -18,6 +18,8 @@ import time
 import unittest
 from xml.etree import ElementTree
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import failure_meshes as meshes  # noqa: E402
 
@@ -117,6 +119,30 @@ class CommandFailures(unittest.TestCase):
         self.assertEqual(listed, ["wing&flap_0000.vtu", "wing&flap_0001.vtu"])
         for name in listed:
             self.assertGreater(meshes.read(os.path.join(folder, name)).GetNumberOfPoints(), 0)
+
+    def test_a_mesh_without_a_marker_whose_nodes_cannot_move_is_an_error(self):
+        # Without a marker array and with a zero displacement no node moves: until 2026-11-30
+        # the input's points were written, exit 0, after a warning.
+        unmarked = self.path("unmarked.vtu")
+        mesh = meshes.read(self.circle)
+        mesh.GetPointData().RemoveArray("BoundaryMarker")
+        meshes.write(mesh, unmarked)
+        output = self.path("unmarked_out.vtu")
+        code, out, err = run(unmarked, output, "--rotate", 0, 0, 20)
+        self.assertEqual(code, 1, err)
+        self.assertIn("no boundary-marker array 'BoundaryMarker' and no non-zero displacement", err)
+        self.assertFalse(os.path.exists(output))
+        # With a displacement on the circle, its faces' nodes move and the command says how the
+        # boundary was found.
+        displaced = self.path("displaced.vtu")
+        meshes.with_displacement(self.circle, displaced,
+                                 lambda d, marker: np.outer(marker == 2, [0.1, 0.0, 0.0]))
+        mesh = meshes.read(displaced)
+        mesh.GetPointData().RemoveArray("BoundaryMarker")
+        meshes.write(mesh, displaced)
+        code, out, err = run(displaced, output)
+        self.assertEqual(code, 0, err)
+        self.assertIn("the boundary is the mesh's boundary faces, moving where 'Displacement'", out)
 
     # 2. A write cut short (here by a file-size limit, as a full disk would) leaves the file that
     #    was at the output path untouched and no temporary file.
