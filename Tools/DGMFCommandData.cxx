@@ -29,6 +29,9 @@
 #include "vtkUnstructuredGridWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -40,10 +43,16 @@ namespace fs = std::filesystem;
 
 namespace
 {
+/// True when `s` ends with `suffix` in any case (file extensions: "MESH.VTU").
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() &&
-    s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    std::equal(suffix.begin(), suffix.end(), s.end() - static_cast<std::ptrdiff_t>(suffix.size()),
+      [](char a, char b)
+      {
+        return std::tolower(static_cast<unsigned char>(a)) ==
+          std::tolower(static_cast<unsigned char>(b));
+      });
 }
 
 bool IsFoamFile(const std::string& path)
@@ -145,6 +154,11 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path)
     return nullptr;
   }
   return reader;
+}
+
+bool IsVTUFileName(const std::string& path)
+{
+  return EndsWith(path, ".vtu");
 }
 
 std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks)

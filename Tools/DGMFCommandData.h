@@ -34,6 +34,9 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path);
 /// the OpenFOAM reader's patches).
 std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks);
 
+/// True for a .vtu file name (in any case).
+bool IsVTUFileName(const std::string& path);
+
 /**
  * Writes the deformed output of `deformer` into a copy of the solver's mesh file `source` at
  * `target` (same format: vtkDGMFMeshFileWriter); false when it cannot (the error is printed).

@@ -365,8 +365,7 @@ int RunSeries(
   // The .pvd of the frames written so far (a .vtu series: ParaView's .pvd reader reads XML files
   // only; a .vtk series opens as a numbered file group): after each frame, so that a series
   // stopped by a frame or by a signal keeps one of the whole frames before, and at the end.
-  const bool collected =
-    files && !options.NoWrite && std::filesystem::path(options.Output).extension() == ".vtu";
+  const bool collected = files && !options.NoWrite && dgmf_cli::IsVTUFileName(options.Output);
   const std::string collection = collected ? dgmf_cli::CollectionPath(options.Output) : "";
   const auto writeCollection = [&](bool say = true)
   {

@@ -264,6 +264,19 @@ class Formats(unittest.TestCase):
                               "boundary", err)
                 self.assertIn("The input's blocks are: internalMesh, wing, farfield.", err)
 
+    def test_upper_case_extensions(self):
+        # BOX.MSH, BOX.SU2 and OUT.VTU are the files of their formats (until 2026-11-30 they were
+        # read as XML, and their outputs refused).
+        for label, name in (("3d_msh4.1", "BOX.MSH"), ("3d_su2", "BOX.SU2")):
+            with self.subTest(name=name):
+                upper = os.path.join(ARGS.work, name)
+                shutil.copy(self.files[label], upper)
+                for output in (os.path.join(ARGS.work, "OUT" + name[3:]),
+                               os.path.join(ARGS.work, "OUT.VTU")):
+                    code, out, err = run(upper, output, "--moving", "wing", *motion(3))
+                    self.assertEqual(code, 0, err)
+                    self.assertIn("wrote " + output, out)
+
     def test_other_formats_out(self):
         source = self.files["3d_msh4.1"]
         code, out, err = run(source, os.path.join(ARGS.work, "x.su2"), "--moving", "wing")

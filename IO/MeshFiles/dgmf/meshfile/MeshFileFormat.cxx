@@ -5,6 +5,8 @@
 #include "dgmf/meshfile/GmshFile.h"
 #include "dgmf/meshfile/SU2File.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 namespace dgmf
@@ -14,7 +16,10 @@ namespace meshfile
 
 MeshFileFormat FormatOfFileName(const std::string& path)
 {
-  const std::string extension = std::filesystem::path(path).extension().string();
+  // In any case ("BOX.MSH", as some tools and file systems write them).
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".msh")
     return MeshFileFormat::Gmsh;
   if (extension == ".su2")
