@@ -2,6 +2,7 @@
 
 #include "vtkDGMFDeformFilter.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +16,13 @@ namespace dgmf_cli
 {
 namespace
 {
+/// A number as a user writes one: no leading space, no hexadecimal ("0x10" is not 16 degrees).
+bool Plain(const std::string& text)
+{
+  return !text.empty() && !std::isspace(static_cast<unsigned char>(text[0])) &&
+    text.find_first_of("xX") == std::string::npos;
+}
+
 /// Reads `count` finite numbers after argv[i]; advances i.
 bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)
 {
@@ -26,7 +34,7 @@ bool ReadDoubles(int argc, char* argv[], int& i, int count, double* values)
   {
     char* end = nullptr;
     values[k] = std::strtod(argv[++i], &end);
-    if (!end || *end != '\0' || end == argv[i] || !std::isfinite(values[k]))
+    if (!end || *end != '\0' || end == argv[i] || !std::isfinite(values[k]) || !Plain(argv[i]))
     {
       return false;
     }
@@ -103,10 +111,12 @@ bool ReadTimes(const char* text, std::vector<double>& times)
 {
   std::stringstream stream(text);
   std::string start, end, count;
+  std::string rest;
   if (!std::getline(stream, start, ':') || !std::getline(stream, end, ':') ||
-    !std::getline(stream, count, ':'))
+    !std::getline(stream, count, ':') || std::getline(stream, rest) || !Plain(start) ||
+    !Plain(end) || !Plain(count))
   {
-    return false;
+    return false; // (also "0:1:2:junk")
   }
   try
   {

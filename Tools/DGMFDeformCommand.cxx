@@ -106,7 +106,7 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
   }
   if (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0)
   {
-    std::cout << "; sub-steps " << CountValue(deformed, "SubStepsUsed") << ", cells repaired "
+    std::cout << "; sub-steps " << CountValue(deformed, "SubStepsUsed") << ", bad cells found "
               << CountValue(deformed, "RepairedCellCount") << ", left unrepaired "
               << CountValue(deformed, "UnrepairedCellCount");
   }

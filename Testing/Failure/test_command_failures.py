@@ -252,6 +252,20 @@ class CommandFailures(unittest.TestCase):
                 self.assertEqual(code, 2, err)
                 self.assertIn("bad option or value: " + option, err)
 
+    def test_numbers_are_written_as_numbers(self):
+        # Until 2026-11-30 "0x10" was 16 degrees, " 10" was taken (not "10 ") and
+        # "0:1:2:junk" was 0:1:2.
+        for arguments in (("--rotate", 0, 0, "0x10"), ("--rotate", 0, 0, " 10"),
+                          ("--pitch", 0, 5, 1, 0, "--times", "0:1:2:junk")):
+            with self.subTest(arguments=arguments):
+                code, out, err = run(self.circle, self.path("o.vtu"), *arguments)
+                self.assertEqual(code, 2, err)
+                self.assertIn("bad option or value: " + arguments[-2 if len(arguments) > 4
+                                                                      else 0], err)
+        code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, "720.0000001")
+        self.assertEqual(code, 1, err)
+        self.assertIn("(got 720.0000001)", err)
+
     # --fail-on-inverted: exit 3 and nothing written; without it the tangled mesh is written.
     def test_fail_on_inverted(self):
         output = self.path("tangled.vtu")

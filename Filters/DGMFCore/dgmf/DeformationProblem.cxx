@@ -1,6 +1,7 @@
 #include "dgmf/DeformationProblem.h"
 
 #include "dgmf/Finite.h"
+#include "dgmf/NumberText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,21 +14,9 @@ namespace dgmf
 {
 namespace
 {
-/// `value` as short as it reads back exactly (2.0000001 is not shown as 2).
 std::string Number(double value)
 {
-  std::ostringstream text;
-  for (int digits = 6; digits <= 17; ++digits)
-  {
-    text.str("");
-    text.precision(digits);
-    text << value;
-    if (!std::isfinite(value) || std::strtod(text.str().c_str(), nullptr) == value)
-    {
-      break;
-    }
-  }
-  return text.str();
+  return NumberText(value);
 }
 } // namespace
 

@@ -1,5 +1,7 @@
 #include "dgmf/RigidMotion.h"
 
+#include "dgmf/NumberText.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -65,7 +67,7 @@ void RigidMotion::CheckRotation() const
     if (!(std::abs(angle) <= MaximumAngleDegrees))
     {
       throw std::invalid_argument(
-        "rotation angles must be within [-720, 720] degrees (got " + std::to_string(angle) + ")");
+        "rotation angles must be within [-720, 720] degrees (got " + NumberText(angle) + ")");
     }
   }
   if (!this->HasAxisRotation())
