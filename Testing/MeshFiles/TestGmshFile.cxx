@@ -344,4 +344,7 @@ TEST(GmshFile, A2DMeshOutsideZ0IsAnError)
   }
   mf::WriteGmshWithPoints(source, lifted, mesh.Points.data(), mesh.NumberOfNodes());
   EXPECT_NE(ReadError(lifted).find("plane z = 0"), std::string::npos) << ReadError(lifted);
+  // It is also what a 3D geometry saved with physical surfaces only gives: said.
+  EXPECT_NE(ReadError(lifted).find("the file has no 3D element"), std::string::npos);
+  EXPECT_NE(ReadError(lifted).find("add a physical volume"), std::string::npos);
 }

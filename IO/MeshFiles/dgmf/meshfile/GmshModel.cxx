@@ -196,9 +196,14 @@ NamedMesh ReadModel(GmshSession& session, const MshFormat& format)
     {
       if (nodes.Coordinates[3 * k + 2] != 0.0)
       {
-        session.Fail("a 2D mesh must lie in the plane z = 0, but node " +
+        // Also a 3D geometry saved with physical groups on its surfaces only (gmsh then keeps
+        // no volume element): said, as it is the likelier mistake.
+        session.Fail("the file has no 3D element, and a 2D mesh must lie in the plane z = 0, but "
+                     "node " +
           std::to_string(nodes.Tags[k]) +
-          " has z = " + std::to_string(nodes.Coordinates[3 * k + 2]));
+          " has z = " + std::to_string(nodes.Coordinates[3 * k + 2]) +
+          " (a 3D mesh saved with physical groups on surfaces only keeps no volume element: add "
+          "a physical volume, or save with Mesh.SaveAll)");
       }
     }
   }
