@@ -154,6 +154,7 @@ std::string Usage()
     "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
     "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
     "       dgmf-deform MESH_FILE OUTPUT --moving NAME[,NAME...] [options]\n"
+    "       (or the options first: dgmf-deform [options] INPUT OUTPUT)\n"
     "  INPUT                   .vtu or .vtk unstructured grid\n"
     "  MESH_FILE               a solver's mesh with boundary names: gmsh .msh, SU2 .su2,\n"
     "                          Exodus II .exo/.e/.ex2, CGNS .cgns; OUTPUT: .vtu, .vtk, or the\n"
@@ -224,9 +225,16 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     std::cerr << Usage();
     return ExitUsage;
   }
-  options.Input = argv[1];
-  options.Output = argv[2];
-  for (int i = 3; i < argc; ++i)
+  // INPUT OUTPUT [options], or [options] INPUT OUTPUT (options first, as many programs take
+  // them: the last two arguments are then the files).
+  const auto isOption = [](const char* text) { return std::strncmp(text, "--", 2) == 0; };
+  const bool optionsFirst =
+    isOption(argv[1]) && !isOption(argv[argc - 2]) && !isOption(argv[argc - 1]);
+  options.Input = optionsFirst ? argv[argc - 2] : argv[1];
+  options.Output = optionsFirst ? argv[argc - 1] : argv[2];
+  const int firstOption = optionsFirst ? 1 : 3;
+  argc = optionsFirst ? argc - 2 : argc;
+  for (int i = firstOption; i < argc; ++i)
   {
     const std::string option = argv[i];
     double v[3];
