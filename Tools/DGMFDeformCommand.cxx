@@ -154,6 +154,39 @@ std::string OutputProblem(InputKind kind, const std::string& input, const std::s
     ": " + output;
 }
 
+/**
+ * Options that would be ignored for this input or output: an error for --time outside an
+ * OpenFOAM case (false), a warning for the others (they were all ignored without a word until
+ * 2026-11-30).
+ */
+bool OptionsFitTheInput(
+  InputKind kind, const dgmf_cli::CommandOptions& options, vtkDGMFDeformFilter* filter)
+{
+  if (options.Time != "constant" && kind != InputKind::OpenFOAMCase)
+  {
+    std::cerr << "dgmf-deform: --time names the time directory of an OpenFOAM case; "
+              << options.Input << " is not one\n";
+    return false;
+  }
+  if (options.MarkerGiven && options.ByName)
+  {
+    std::cerr << "dgmf-deform: warning: --marker is not read: the boundaries are chosen by name\n";
+  }
+  if ((options.Compression != "lz4" || !options.VTUAppended) &&
+    !dgmf_cli::IsVTUFileName(options.Output))
+  {
+    std::cerr << "dgmf-deform: warning: --compression and --vtu-mode are for .vtu outputs; "
+              << options.Output << " is not one\n";
+  }
+  if (filter->GetRepairThreshold() <= 0.0 &&
+    (filter->GetRepairPasses() != 20 || filter->GetRepairLayers() != 2))
+  {
+    std::cerr << "dgmf-deform: warning: --repair-passes and --repair-layers are the quality "
+                 "guard's: without --repair they do nothing\n";
+  }
+  return true;
+}
+
 /// "a, b, c", or "(none)".
 std::string Listed(const std::vector<std::string>& names)
 {
@@ -473,6 +506,10 @@ int main(int argc, char* argv[])
   if (!outputProblem.empty())
   {
     std::cerr << "dgmf-deform: " << outputProblem << "\n";
+    return ExitUsage;
+  }
+  if (!OptionsFitTheInput(kind, options, filter))
+  {
     return ExitUsage;
   }
   // A single output file's folder must be there (a series makes its own): said before the work,

@@ -273,6 +273,17 @@ class CommandFailures(unittest.TestCase):
         self.assertEqual(code, 1, err)
         self.assertIn("(got 720.0000001)", err)
 
+    def test_options_that_would_be_ignored_are_said(self):
+        # Until 2026-11-30 all of these were ignored without a word.
+        code, out, err = run(self.circle, self.path("o.vtu"), "--time", 5)
+        self.assertEqual(code, 2, err)
+        self.assertIn("--time names the time directory of an OpenFOAM case", err)
+        code, out, err = run(self.circle, self.path("o.vtk"), "--rotate", 0, 0, 10,
+                             "--compression", "zlib", "--repair-passes", 5)
+        self.assertEqual(code, 0, err)
+        self.assertIn("--compression and --vtu-mode are for .vtu outputs", err)
+        self.assertIn("without --repair they do nothing", err)
+
     # --fail-on-inverted: exit 3 and nothing written; without it the tangled mesh is written.
     def test_fail_on_inverted(self):
         output = self.path("tangled.vtu")
