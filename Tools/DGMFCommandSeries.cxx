@@ -5,6 +5,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -174,6 +175,27 @@ vtkSmartPointer<vtkTable> ReadTrajectoryCSV(const std::string& path)
       if (line.back() == ',')
       {
         values.emplace_back();
+      }
+      if (fields == 0)
+      {
+        // The header: a column named twice would be one column in VTK's table (the last).
+        std::vector<std::string> names;
+        for (const std::string& value : values)
+        {
+          std::string name = value.substr(value.find_first_not_of(" \t") == std::string::npos
+              ? value.size()
+              : value.find_first_not_of(" \t"));
+          name = name.substr(0, name.find_last_not_of(" \t") + 1);
+          std::transform(name.begin(), name.end(), name.begin(),
+            [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+          if (std::find(names.begin(), names.end(), name) != names.end())
+          {
+            std::cerr << "dgmf-deform: error: the trajectory table " << path
+                      << " names the column '" << value << "' twice: name each column once\n";
+            return nullptr;
+          }
+          names.push_back(name);
+        }
       }
       fields = fields == 0 ? values.size() : fields;
       const bool blank = std::any_of(values.begin(), values.end(),

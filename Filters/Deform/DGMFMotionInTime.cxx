@@ -44,21 +44,32 @@ std::string Trimmed(const std::string& text)
 /// if not numeric.
 vtkDataArray* Column(vtkTable* table, const char* name)
 {
+  vtkAbstractArray* found = nullptr;
   for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
   {
     vtkAbstractArray* column = table->GetColumn(c);
     if (column && column->GetName() && Trimmed(Lower(column->GetName())) == Lower(name))
     {
-      auto* numbers = vtkDataArray::SafeDownCast(column);
-      if (!numbers || numbers->GetNumberOfComponents() != 1)
+      if (found)
       {
-        throw std::invalid_argument(std::string("The trajectory table's column '") +
-          column->GetName() + "' is not a column of numbers.");
+        // "Time,TX,TX": which one was meant? (the first was taken until 2026-11-30)
+        throw std::invalid_argument(std::string("The trajectory table has two columns '") + name +
+          "': name each column once.");
       }
-      return numbers;
+      found = column;
     }
   }
-  return nullptr;
+  if (!found)
+  {
+    return nullptr;
+  }
+  auto* numbers = vtkDataArray::SafeDownCast(found);
+  if (!numbers || numbers->GetNumberOfComponents() != 1)
+  {
+    throw std::invalid_argument(std::string("The trajectory table's column '") + found->GetName() +
+      "' is not a column of numbers.");
+  }
+  return numbers;
 }
 
 std::string ColumnNames(vtkTable* table)

@@ -289,4 +289,8 @@ TEST(MotionInTime, ATrajectoryTableMovesItsBodyBetweenRows)
   EXPECT_NE(whole.find("rows are not whole: its column 'RZ' has 2 values and the table 3 rows"),
     std::string::npos)
     << whole;
+  // A column named twice (in another case, or with spaces: a table keeps both): which one?
+  const std::string twice =
+    message(Table({ { "Time", { 0.0, 1.0 } }, { "TX", { 0.0, 1.0 } }, { " tx", { 0.0, 2.0 } } }));
+  EXPECT_NE(twice.find("has two columns 'TX'"), std::string::npos) << twice;
 }

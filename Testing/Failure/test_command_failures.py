@@ -284,6 +284,15 @@ class CommandFailures(unittest.TestCase):
         self.assertIn("--compression and --vtu-mode are for .vtu outputs", err)
         self.assertIn("without --repair they do nothing", err)
 
+    def test_a_trajectory_column_named_twice_is_refused(self):
+        # VTK's table keeps one of two same-named columns: until 2026-11-30 the other was dropped.
+        table = self.path("twice.csv")
+        with open(table, "w") as handle:
+            handle.write("Time,TX,TX\n0,0,0\n1,1,2\n")
+        code, out, err = run(self.circle, self.path("twice.vtu"), "--trajectory", table)
+        self.assertEqual(code, 1, err)
+        self.assertIn("names the column 'TX' twice", err)
+
     # --fail-on-inverted: exit 3 and nothing written; without it the tangled mesh is written.
     def test_fail_on_inverted(self):
         output = self.path("tangled.vtu")
