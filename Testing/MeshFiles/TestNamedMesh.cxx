@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace mf = dgmf::meshfile;
 
@@ -84,4 +85,33 @@ TEST(NamedMesh, EachViolationIsAnErrorNamingTheFile)
   mf::NamedMesh ids = Square();
   ids.NodeIds.pop_back();
   EXPECT_NE(ErrorOf(ids).find("node ids"), std::string::npos);
+}
+
+TEST(NamedMesh, BoundariesOfOneNameAreJoinedInOrder)
+{
+  // gmsh lets two physical groups share a name: one boundary, the first's faces then the
+  // second's (refused as a name given twice until 2026-11-30).
+  mf::NamedMesh mesh = Square();
+  mf::NamedBoundary inlet;
+  inlet.Name = "inlet";
+  const std::int64_t diagonal[2] = { 0, 2 };
+  inlet.Faces.Add(mf::Line, diagonal, 2);
+  mesh.Boundaries.push_back(inlet);
+  mf::NamedBoundary more = mesh.Boundaries[0]; // a second "wall": its first two edges
+  more.Faces = mf::Cells();
+  const std::int64_t first[2] = { 0, 1 }, second[2] = { 1, 2 };
+  more.Faces.Add(mf::Line, first, 2);
+  more.Faces.Add(mf::Line, second, 2);
+  mesh.Boundaries.push_back(more);
+  EXPECT_NE(ErrorOf(mesh).find("unique"), std::string::npos);
+  mf::MergeBoundariesOfOneName(mesh);
+  EXPECT_EQ(ErrorOf(mesh), "");
+  ASSERT_EQ(mesh.Boundaries.size(), 2u);
+  EXPECT_EQ(mesh.Boundaries[0].Name, "wall");
+  EXPECT_EQ(mesh.Boundaries[1].Name, "inlet");
+  const mf::Cells& wall = mesh.Boundaries[0].Faces;
+  ASSERT_EQ(wall.Size(), 6u);
+  EXPECT_EQ(wall.Offsets, (std::vector<std::int64_t>{ 0, 2, 4, 6, 8, 10, 12 }));
+  EXPECT_EQ(std::vector<std::int64_t>(wall.Connectivity.begin() + 8, wall.Connectivity.end()),
+    (std::vector<std::int64_t>{ 0, 1, 1, 2 }));
 }

@@ -53,6 +53,7 @@ NamedMesh ReadThroughGmsh(const std::string& path, const MshFormat& format)
   {
     throw FileError(path + ": " + e.what());
   }
+  MergeBoundariesOfOneName(mesh);
   ValidateNamedMesh(mesh, path);
   return mesh;
 }
@@ -72,6 +73,7 @@ NamedMesh ReadGmsh(const std::string& path)
     if (version41 ? ReadMsh41(file.Bytes(), format.Binary, mesh)
                   : ReadMsh22(file.Bytes(), format.Binary, mesh))
     {
+      MergeBoundariesOfOneName(mesh);
       ValidateNamedMesh(mesh, path);
       return mesh;
     }

@@ -1,5 +1,6 @@
 #include "dgmf/meshfile/NamedMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -83,6 +84,32 @@ void CheckCells(const Cells& cells, std::size_t nodes, int dimension, const std:
   }
 }
 } // namespace
+
+void MergeBoundariesOfOneName(NamedMesh& mesh)
+{
+  std::vector<NamedBoundary> merged;
+  for (NamedBoundary& boundary : mesh.Boundaries)
+  {
+    auto first = std::find_if(merged.begin(), merged.end(),
+      [&boundary](const NamedBoundary& kept) { return kept.Name == boundary.Name; });
+    if (first == merged.end())
+    {
+      merged.push_back(std::move(boundary));
+      continue;
+    }
+    Cells& faces = first->Faces;
+    const Cells& more = boundary.Faces;
+    const auto shift = static_cast<std::int64_t>(faces.Connectivity.size());
+    faces.Types.insert(faces.Types.end(), more.Types.begin(), more.Types.end());
+    for (std::size_t k = 1; k < more.Offsets.size(); ++k)
+    {
+      faces.Offsets.push_back(more.Offsets[k] + shift);
+    }
+    faces.Connectivity.insert(
+      faces.Connectivity.end(), more.Connectivity.begin(), more.Connectivity.end());
+  }
+  mesh.Boundaries = std::move(merged);
+}
 
 void ValidateNamedMesh(const NamedMesh& mesh, const std::string& file)
 {

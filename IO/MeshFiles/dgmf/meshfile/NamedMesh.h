@@ -94,6 +94,13 @@ public:
 };
 
 /**
+ * Joins the boundaries of one name into the first of them, their faces in order (gmsh lets
+ * several physical groups share a name, and reads such a file; they were refused as names given
+ * twice until 2026-11-30).
+ */
+void MergeBoundariesOfOneName(NamedMesh& mesh);
+
+/**
  * Checks what every reader promises: Points a multiple of 3 and finite, NodeIds one per node,
  * Offsets consistent with Connectivity, every node index in range, node counts matching the cell
  * types, Volume of the mesh's dimension, named faces one dimension lower (or all Vertex cells, a
