@@ -156,6 +156,36 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path)
   return reader;
 }
 
+std::vector<std::string> ExpandPatchGroups(
+  const std::string& path, const std::vector<std::string>& names)
+{
+  std::vector<dgmf::openfoam::PatchEntry> patches;
+  try
+  {
+    patches = dgmf::openfoam::ReadPatches(dgmf::openfoam::CaseDirectoryOf(path));
+  }
+  catch (const std::exception&)
+  {
+    return names; // the reader says what is wrong with the case
+  }
+  std::vector<std::string> expanded;
+  for (const std::string& name : names)
+  {
+    const bool patch = std::any_of(patches.begin(), patches.end(),
+      [&name](const dgmf::openfoam::PatchEntry& entry) { return entry.Name == name; });
+    std::string members;
+    for (const dgmf::openfoam::PatchEntry& entry : patches)
+    {
+      if (!patch && std::find(entry.Groups.begin(), entry.Groups.end(), name) != entry.Groups.end())
+      {
+        members += (members.empty() ? "" : "|") + entry.Name;
+      }
+    }
+    expanded.push_back(members.empty() ? name : members);
+  }
+  return expanded;
+}
+
 bool IsVTUFileName(const std::string& path)
 {
   return EndsWith(path, ".vtu");

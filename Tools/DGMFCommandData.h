@@ -34,6 +34,14 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path);
 /// the OpenFOAM reader's patches).
 std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks);
 
+/**
+ * `names` with each OpenFOAM patch group of the case at `path` (a name no patch has, in some
+ * patches' `inGroups`: "wall", "motorBikeGroup") made the alternatives of its patches
+ * ("wing|flap"): one boundary, one body, as the filter reads such an entry. Other names as given.
+ */
+std::vector<std::string> ExpandPatchGroups(
+  const std::string& path, const std::vector<std::string>& names);
+
 /// True for a .vtu file name (in any case).
 bool IsVTUFileName(const std::string& path);
 

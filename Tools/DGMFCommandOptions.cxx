@@ -163,6 +163,8 @@ std::string Usage()
     "                          deformed points (a copy of the case if new; may be CASE_DIR)\n"
     "  --moving NAMES          moving boundaries by name (patches), comma-separated: one body "
     "each\n"
+    "                          (an OpenFOAM patch group, 'wing_*' or 'flap|slat': its patches\n"
+    "                          as one body)\n"
     "  --static NAMES          static boundaries by name (unselected patches are static anyway)\n"
     "  --slip NAMES            planar boundaries whose nodes slide in their plane (symmetry)\n"
     "  --time T                OpenFOAM: write T/polyMesh/points (default constant)\n"

@@ -561,6 +561,22 @@ int main(int argc, char* argv[])
     filter->SetInputConnection(reader->GetOutputPort());
     if (kind == InputKind::OpenFOAMCase)
     {
+      // A patch group ("wall", "motorBikeGroup") is one boundary of its patches.
+      filter->RemoveAllMovingBoundaries();
+      filter->RemoveAllStaticBoundaries();
+      filter->RemoveAllSlipBoundaries();
+      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Moving))
+      {
+        filter->AddMovingBoundary(name.c_str());
+      }
+      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Static))
+      {
+        filter->AddStaticBoundary(name.c_str());
+      }
+      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip))
+      {
+        filter->AddSlipBoundary(name.c_str());
+      }
       filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
     }
     else if (options.ByName)

@@ -22,6 +22,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <fnmatch.h>
 #include <map>
 #include <stdexcept>
 
@@ -40,6 +41,25 @@ std::string NameOf(std::string entry)
     }
   }
   return entry;
+}
+
+/// The alternatives of an entry "flap|slat|wing_*" (spaces around each dropped; empty ones too).
+std::vector<std::string> Alternatives(const std::string& entry)
+{
+  std::vector<std::string> parts;
+  std::size_t begin = 0;
+  while (begin <= entry.size())
+  {
+    const std::size_t end = std::min(entry.find('|', begin), entry.size());
+    std::string part = entry.substr(begin, end - begin);
+    const std::size_t first = part.find_first_not_of(" \t");
+    if (first != std::string::npos)
+    {
+      parts.push_back(part.substr(first, part.find_last_not_of(" \t") - first + 1));
+    }
+    begin = end + 1;
+  }
+  return parts;
 }
 
 /// A selector of the hierarchy for an entry: a path as given, else any node of that name.
@@ -217,9 +237,9 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   std::vector<std::uint8_t> foundEntries(
     piece ? selection.Moving.size() + selection.Static.size() + selection.Slip.size() : 0, 0);
   std::size_t entryIndex = 0;
-  const auto leavesOf = [&](const std::string& entry)
+  // The leaves an entry names as it is: a block name or a selector.
+  const auto literalLeaves = [&](const std::string& entry)
   {
-    const std::size_t index = entryIndex++;
     std::vector<std::size_t> found;
     if (hasHierarchy)
     {
@@ -247,6 +267,47 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
           (selector && vtkDataAssembly::MakeValidNodeName(leaves[l].Name.c_str()) == name))
         {
           found.push_back(l);
+        }
+      }
+    }
+    return found;
+  };
+  // One entry, one role (one body): a block, or several ("wing_*", "flap|slat": a patch group,
+  // a body of several patches), each alternative naming at least one block.
+  const auto leavesOf = [&](const std::string& entry)
+  {
+    const std::size_t index = entryIndex++;
+    std::vector<std::size_t> found = literalLeaves(entry);
+    if (found.empty() && entry.find_first_of("|*?") != std::string::npos)
+    {
+      for (const std::string& alternative : Alternatives(entry))
+      {
+        const std::string pattern = NameOf(alternative);
+        std::vector<std::size_t> more;
+        for (std::size_t l = 0; l < leaves.size(); ++l)
+        {
+          if (pattern.find_first_of("*?") != std::string::npos
+              ? fnmatch(pattern.c_str(), leaves[l].Name.c_str(), 0) == 0
+              : leaves[l].Name == pattern)
+          {
+            more.push_back(l);
+          }
+        }
+        more = more.empty() && pattern.find_first_of("*?") == std::string::npos
+          ? literalLeaves(alternative)
+          : more;
+        if (more.empty() && !piece)
+        {
+          throw std::invalid_argument("No block of the input matches '" + alternative +
+            "' (of the boundary '" + entry + "'). The input's blocks are: " + ListBlockNames(mesh) +
+            ".");
+        }
+        for (std::size_t l : more)
+        {
+          if (std::find(found.begin(), found.end(), l) == found.end())
+          {
+            found.push_back(l);
+          }
         }
       }
     }

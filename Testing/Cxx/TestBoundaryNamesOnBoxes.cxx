@@ -3,6 +3,7 @@
 // boundary, and a node on two slip planes.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ErrorMessages.h"
 #include "HexBoxBlocks.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -94,4 +95,57 @@ TEST(BoundaryNames, ANodeOnTwoSlipPlanesSlidesAlongTheirLine)
     ASSERT_EQ(volume->GetPoint(x + side * 3)[2], 0.0);        // on zmin only (y = 3)
   }
   EXPECT_GT(slid, 0.01) << "the edge's nodes follow the piston";
+}
+
+TEST(BoundaryNames, AnEntryOfSeveralBlocksIsOneBody)
+{
+  // "y*" and "ymin|ymax" name both y sides as one body (a patch group, a wing of several
+  // patches): the same bits, every node of both sides moved by the translation, and another
+  // result than the two sides as two bodies (each its own damping field). An alternative that
+  // names no block is an error.
+  const int n = 6;
+  const auto run = [n](const std::vector<std::string>& moving, std::string* error = nullptr)
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+    for (const std::string& entry : moving)
+    {
+      filter->AddMovingBoundary(entry.c_str());
+    }
+    filter->SetTranslation(0.0, 0.0, 0.3);
+    dgmf_test::ErrorMessages errors(filter);
+    filter->Update();
+    if (error)
+    {
+      for (const std::string& message : errors.Messages)
+      {
+        *error += message;
+      }
+    }
+    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+    std::vector<double> xyz;
+    for (vtkIdType i = 0; volume && i < volume->GetNumberOfPoints(); ++i)
+    {
+      xyz.insert(xyz.end(), volume->GetPoint(i), volume->GetPoint(i) + 3);
+    }
+    return xyz;
+  };
+  const std::vector<double> glob = run({ "y*" });
+  const std::vector<double> alternatives = run({ "ymin | ymax" });
+  const std::vector<double> twoBodies = run({ "ymin", "ymax" });
+  const std::size_t side = n + 1;
+  ASSERT_EQ(glob.size(), 3 * side * side * side);
+  EXPECT_EQ(glob, alternatives);
+  EXPECT_NE(glob, twoBodies);
+  for (std::size_t i = 0; i < side * side * side; ++i)
+  {
+    const std::size_t y = i / side % side;
+    if (y == 0 || y == static_cast<std::size_t>(n))
+    {
+      ASSERT_EQ(glob[3 * i + 2], static_cast<double>(i / side / side) + 0.3) << "node " << i;
+    }
+  }
+  std::string error;
+  EXPECT_TRUE(run({ "ymin|ymxa" }, &error).empty());
+  EXPECT_NE(error.find("No block of the input matches 'ymxa'"), std::string::npos) << error;
 }

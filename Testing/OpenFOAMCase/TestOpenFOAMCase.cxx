@@ -115,8 +115,10 @@ fs::path MakeCase(const fs::path& directory, const std::string& points, bool gzi
   WriteText(directory / "constant" / "polyMesh" / (gzip ? "points.gz" : "points"), points, gzip);
   WriteText(directory / "constant" / "polyMesh" / "boundary",
     Header("ascii") +
-      "3\n(\n    wing\n    {\n        type wall;\n        nFaces 2;\n    }\n"
-      "    symFront { type symmetryPlane; }\n    front\n    {\n        type empty;\n    }\n)\n");
+      "3\n(\n    wing\n    {\n        type wall;\n        inGroups List<word> 2(wall body);\n"
+      "        nFaces 2;\n    }\n"
+      "    symFront { type symmetryPlane; inGroups 1(symmetryPlane); }\n    front\n    {\n"
+      "        type empty;\n    }\n)\n");
   WriteText(directory / "0" / "U", "fields to start from");
   WriteText(directory / "1" / "U", "a result");
   WriteText(directory / "processor0" / "x", "a decomposed piece");
@@ -288,6 +290,11 @@ TEST(CaseDirectory, NamesTimesAndPatches)
     EXPECT_FALSE(of::IsTimeName(bad)) << bad;
   }
   EXPECT_EQ(of::ReadPatchNames(dir), (std::vector<std::string>{ "wing", "symFront", "front" }));
+  const std::vector<of::PatchEntry> patches = of::ReadPatches(dir);
+  ASSERT_EQ(patches.size(), 3u);
+  EXPECT_EQ(patches[0].Groups, (std::vector<std::string>{ "wall", "body" }));
+  EXPECT_EQ(patches[1].Groups, (std::vector<std::string>{ "symmetryPlane" }));
+  EXPECT_TRUE(patches[2].Groups.empty());
 }
 
 TEST(CaseDirectory, UnmovedPointsKeepTheirBitsAndTheReadersRoundingDoesNotReachTheCase)

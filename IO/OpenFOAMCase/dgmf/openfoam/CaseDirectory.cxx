@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -73,7 +74,7 @@ fs::path PolyMeshDirectory(const fs::path& caseDirectory, const std::string& tim
   return caseDirectory / time / "polyMesh";
 }
 
-std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
+std::vector<PatchEntry> ReadPatches(const fs::path& caseDirectory)
 {
   const fs::path polyMesh = PolyMeshDirectory(caseDirectory, "constant");
   std::error_code error;
@@ -86,7 +87,7 @@ std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
   {
     ++at;
   }
-  std::vector<std::string> names;
+  std::vector<PatchEntry> patches;
   ++at;
   while ((at = SkipSpaceAndComments(text, at)) < text.size() && text[at] != ')')
   {
@@ -95,13 +96,37 @@ std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
     {
       break;
     }
-    names.push_back(text.substr(at, nameEnd - at));
+    PatchEntry patch;
+    patch.Name = text.substr(at, nameEnd - at);
     const std::size_t close = text.find('}', nameEnd);
     if (close == std::string::npos)
     {
       break;
     }
+    // inGroups List<word> 2(wall motorBikeGroup); (or "inGroups 1(wall);")
+    const std::size_t groups = text.find("inGroups", nameEnd);
+    const std::size_t open = groups < close ? text.find('(', groups) : std::string::npos;
+    const std::size_t shut = open < close ? text.find(')', open) : std::string::npos;
+    if (shut < close)
+    {
+      std::istringstream words(text.substr(open + 1, shut - open - 1));
+      for (std::string word; words >> word;)
+      {
+        patch.Groups.push_back(word);
+      }
+    }
+    patches.push_back(std::move(patch));
     at = close + 1;
+  }
+  return patches;
+}
+
+std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
+{
+  std::vector<std::string> names;
+  for (const PatchEntry& patch : ReadPatches(caseDirectory))
+  {
+    names.push_back(patch.Name);
   }
   return names;
 }

@@ -32,6 +32,16 @@ bool IsTimeName(const std::string& time);
 std::filesystem::path PolyMeshDirectory(
   const std::filesystem::path& caseDirectory, const std::string& time);
 
+/// A patch of a case's boundary file: its name and the groups it is in (`inGroups`).
+struct PatchEntry
+{
+  std::string Name;
+  std::vector<std::string> Groups;
+};
+
+/// The patches in `caseDirectory`/constant/polyMesh/boundary, in order.
+std::vector<PatchEntry> ReadPatches(const std::filesystem::path& caseDirectory);
+
 /// The names of the patches in `caseDirectory`/constant/polyMesh/boundary, in order.
 std::vector<std::string> ReadPatchNames(const std::filesystem::path& caseDirectory);
 
