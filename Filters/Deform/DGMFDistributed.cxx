@@ -209,8 +209,7 @@ std::string AgreeOnNamedBoundaries(
   return "";
 }
 
-std::string CheckOneCellThickPieces(
-  vtkMultiProcessController* controller, const InputNodes& nodes, bool named)
+std::string CheckOneCellThickPieces(vtkMultiProcessController* controller, const InputNodes& nodes)
 {
   const std::size_t n = nodes.LocalNodes;
   const dgmf::ExtrudedLayers layers = n > 0 && nodes.Dimension == 3
@@ -237,8 +236,8 @@ std::string CheckOneCellThickPieces(
   const bool samePlanes =
     std::isfinite(lowest[1]) && lowest[1] == highest[0] && lowest[2] == highest[1];
   // Frozen: no slip node, and every node a boundary node (a marker that marks the planes, or
-  // names, whose unnamed patches are static; a node no block of its piece holds is interior).
-  const bool frozen = highest[2] == 0.0 && (named || highest[3] == 0.0);
+  // names whose unnamed patches are static; the roles are those of all pieces by now).
+  const bool frozen = highest[2] == 0.0 && highest[3] == 0.0;
   if (!sameAxis || !samePlanes || !frozen)
   {
     return "";
@@ -254,15 +253,15 @@ std::string JoinPieces(vtkMultiProcessController* controller, const JoinOptions&
   vtkUnstructuredGrid* piece, InputNodes& nodes)
 {
   std::string error = AgreeOnNamedBoundaries(controller, *options.Selection, options.Roles);
-  if (error.empty() && options.CheckLayers)
-  {
-    error = CheckOneCellThickPieces(controller, nodes, !options.Selection->Empty());
-  }
   if (!error.empty())
   {
     return error;
   }
-  AppendRemoteBoundaryNodes(controller, nodes);
+  AppendRemoteBoundaryNodes(controller, nodes); // every copy of a node with the same role
+  if (options.CheckLayers && !(error = CheckOneCellThickPieces(controller, nodes)).empty())
+  {
+    return error;
+  }
   if (options.NonOrthogonality && piece->GetNumberOfCells() > 0 && !piece->GetCellGhostArray())
   {
     nodes.Warnings.emplace_back(
@@ -299,25 +298,60 @@ void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes
   {
     return;
   }
-  // A ghost node on the mesh's boundary may look interior here (its boundary face belongs to a
-  // ghost cell, whose faces are left out): it takes the kind its owner found for it.
-  std::map<std::array<double, 3>, dgmf::NodeKind> remoteKind;
+  // Every copy of a node takes the role the serial run gives it from all its copies: moving
+  // (the first body listed: the smallest id) over static over slip over interior. A piece knows
+  // only its own blocks (a node where a moving patch meets another patch held by another piece
+  // was moving on one and static on the other until 2026-11-30: the mesh tore apart), and a
+  // ghost node on the mesh's boundary may look interior (its boundary face is a ghost cell's).
+  struct Role
+  {
+    dgmf::NodeKind Kind = dgmf::NodeKind::Interior;
+    std::int32_t Body = 0;
+  };
+  const auto rank = [](dgmf::NodeKind kind)
+  {
+    return kind == dgmf::NodeKind::MovingBoundary ? 3
+      : kind == dgmf::NodeKind::StaticBoundary    ? 2
+      : kind == dgmf::NodeKind::SlipBoundary      ? 1
+                                                  : 0;
+  };
+  std::map<std::array<double, 3>, Role> roles;
+  const auto consider = [&](const double* p, dgmf::NodeKind kind, std::int32_t body)
+  {
+    Role& role = roles[{ p[0], p[1], p[2] }];
+    if (rank(kind) > rank(role.Kind) ||
+      (kind == role.Kind && body > 0 && (role.Body == 0 || body < role.Body)))
+    {
+      role = Role{ kind, body };
+    }
+  };
   for (const RemoteBoundaryNode& node : remote)
   {
-    auto& kind = remoteKind[{ node.Position[0], node.Position[1], node.Position[2] }];
-    kind = std::max(kind, static_cast<dgmf::NodeKind>(node.Kind));
+    consider(node.Position, static_cast<dgmf::NodeKind>(node.Kind), node.BodyId);
   }
+  for (const RemoteBoundaryNode& node : local)
+  {
+    consider(node.Position, static_cast<dgmf::NodeKind>(node.Kind), node.BodyId);
+  }
+  const auto roleAt = [&roles](const double* p) { return roles.find({ p[0], p[1], p[2] }); };
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (nodes.Kinds[i] == dgmf::NodeKind::Interior)
+    const auto found = roleAt(nodes.Points + 3 * i);
+    if (found != roles.end())
     {
-      const auto found =
-        remoteKind.find({ nodes.Points[3 * i], nodes.Points[3 * i + 1], nodes.Points[3 * i + 2] });
-      if (found != remoteKind.end())
+      nodes.Kinds[i] = found->second.Kind;
+      if (!nodes.BodyIds.empty())
       {
-        nodes.Kinds[i] = found->second;
+        nodes.BodyIds[i] = found->second.Body;
       }
     }
+  }
+  std::vector<RemoteBoundaryNode> agreed = remote;
+  for (RemoteBoundaryNode& node : agreed)
+  {
+    const Role& role = roleAt(node.Position)->second;
+    node.Kind = static_cast<std::int32_t>(role.Kind);
+    node.BodyId = role.Body;
   }
   // The other pieces' boundary nodes follow this piece's nodes (coincident copies of the same
   // node, on several pieces, share one graph vertex).
@@ -329,7 +363,7 @@ void AppendRemoteBoundaryNodes(vtkMultiProcessController* controller, InputNodes
   {
     nodes.DisplacementCopy.assign(nodes.Displacement, nodes.Displacement + 3 * n);
   }
-  for (const RemoteBoundaryNode& node : remote)
+  for (const RemoteBoundaryNode& node : agreed)
   {
     nodes.PointCopy.insert(nodes.PointCopy.end(), node.Position, node.Position + 3);
     if (nodes.Displacement)

@@ -79,13 +79,12 @@ std::string AgreeOnNamedBoundaries(vtkMultiProcessController* controller,
 
 /**
  * A one-cell-thick mesh (OpenFOAM's 2D cases) in a distributed run, which deforms it as 3D: the
- * error when every non-empty piece lies on the same two planes (dgmf::FindExtrudedLayers), no
- * node of any piece is a slip node, and (with boundaries chosen by name, `named`, whose unnamed
- * patches are static) or every node is a boundary node: the two planes are then static and the
- * mesh would come out frozen. Else "". The same on every process. Collective.
+ * error when every non-empty piece lies on the same two planes (dgmf::FindExtrudedLayers) and no
+ * node of any piece is a slip or an interior node (the roles agreed by
+ * AppendRemoteBoundaryNodes): the two planes are then static and the mesh would come out frozen.
+ * Else "". The same on every process. Collective.
  */
-std::string CheckOneCellThickPieces(
-  vtkMultiProcessController* controller, const InputNodes& nodes, bool named);
+std::string CheckOneCellThickPieces(vtkMultiProcessController* controller, const InputNodes& nodes);
 
 /// What JoinPieces checks and agrees on besides the nodes.
 struct JoinOptions

@@ -30,6 +30,10 @@ std::vector<double> GatherSlipNodes(vtkMultiProcessController* controller, const
   {
     for (const std::int32_t node : nodes.SlipGroups[g])
     {
+      if (nodes.Kinds[static_cast<std::size_t>(node)] != dgmf::NodeKind::SlipBoundary)
+      {
+        continue; // moving or static on another piece's block (AppendRemoteBoundaryNodes)
+      }
       const double* p = nodes.Points + 3 * static_cast<std::size_t>(node);
       send.insert(send.end(), { p[0], p[1], p[2], static_cast<double>(g) });
     }
@@ -89,6 +93,22 @@ std::string AgreeOnSlipPlanes(vtkMultiProcessController* controller, InputNodes&
   {
     nodes.Slip = dgmf::SlipConstraint();
     return error.empty() ? "A slip boundary is not a plane (said on another process)." : error;
+  }
+  // On three planes, or on two lines of a 2D mesh, a node cannot move (the serial rule; a piece
+  // may know only one of its planes): static, in this piece and in the other pieces' copies
+  // alike (a static node is a vertex of the graph every process builds).
+  for (std::size_t i = 0; i < nodes.NumberOfNodes; ++i)
+  {
+    if (nodes.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+    {
+      const double* p = nodes.Points + 3 * i;
+      const auto found = entriesAt.find({ p[0], p[1], p[2] });
+      if (found != entriesAt.end() &&
+        (found->second.size() >= 3 || (found->second.size() == 2 && nodes.Dimension == 2)))
+      {
+        nodes.Kinds[i] = dgmf::NodeKind::StaticBoundary;
+      }
+    }
   }
   // This piece's slip nodes, with the planes of the entries they are on (the first two, as the
   // serial gathering gives them).

@@ -1,22 +1,26 @@
-"""Writes the sphere-in-box mesh as a CFD reader gives it, for the distributed test of boundaries
-chosen by name: a multiblock (.vtm) of the volume (`internalMesh`, without the marker) and its
-two patches, `wing` (the faces on the sphere, marker 2) and `box` (the others), each a polydata
-on points of its own.
+"""Writes the sphere-in-box mesh as a CFD reader gives it, for the distributed tests of boundaries
+chosen by name, and the serial result of its front half moving (pvbatch, one process): a
+multiblock (.vtm) of the volume (`internalMesh`, without the marker) and its patches, the sphere
+in two halves `wingA` (faces with x < 0) and `wingB` (the others), which share the nodes of
+their seam, and `box`, each a polydata on points of its own.
 
-usage: make_named_sphere.py SOURCE.vtu TARGET.vtm
+usage: pvbatch make_named_sphere.py PLUGIN SOURCE.vtu TARGET.vtm HALF_REFERENCE.vtu
 """
+import os
 import sys
 
-import os
-
+from paraview import simple
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reader_blocks import write_reader_blocks  # noqa: E402
 
+plugin, source, target, half_reference = sys.argv[1:5]
+assert vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses() == 1
 reader = vtkXMLUnstructuredGridReader()
-reader.SetFileName(sys.argv[1])
+reader.SetFileName(source)
 reader.Update()
 mesh = reader.GetOutput()
 assert mesh.GetNumberOfPoints() == 3200, mesh.GetNumberOfPoints()
@@ -25,21 +29,40 @@ surface.SetInputData(mesh)
 surface.Update()
 faces = surface.GetOutput()
 marker = faces.GetPointData().GetArray("BoundaryMarker")
-patches = {"wing": [], "box": []}
-for c in range(faces.GetNumberOfCells()):
-    ids = faces.GetCell(c).GetPointIds()
-    on_wing = all(marker.GetTuple1(ids.GetId(k)) == 2 for k in range(ids.GetNumberOfIds()))
-    patches["wing" if on_wing else "box"].append(c)
-volume = mesh.NewInstance()
-volume.DeepCopy(mesh)
-volume.GetPointData().RemoveArray("BoundaryMarker")
+
 
 def corners(cell):
     ids = faces.GetCell(cell).GetPointIds()
     return [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
 
 
-write_reader_blocks(volume, faces.GetPoints(),
-                    {name: [corners(c) for c in cells] for name, cells in patches.items()},
-                    sys.argv[2])
-print("named sphere: wing %d faces, box %d faces" % (len(patches["wing"]), len(patches["box"])))
+patches = {"wingA": [], "wingB": [], "box": []}
+for c in range(faces.GetNumberOfCells()):
+    ids = corners(c)
+    if all(marker.GetTuple1(i) == 2 for i in ids):
+        centre = sum(faces.GetPoint(i)[0] for i in ids) / len(ids)
+        patches["wingA" if centre < 0.0 else "wingB"].append(ids)
+    else:
+        patches["box"].append(ids)
+volume = mesh.NewInstance()
+volume.DeepCopy(mesh)
+volume.GetPointData().RemoveArray("BoundaryMarker")
+write_reader_blocks(volume, faces.GetPoints(), patches, target)
+
+# The serial result of wingA moving alone (wingB static): its seam nodes move (moving over
+# static, wherever the two halves' blocks are).
+simple.LoadPlugin(plugin, remote=False, ns=globals())
+deform = DGMFDeform(Input=simple.XMLMultiBlockDataReader(FileName=[target]))  # noqa: F821
+deform.BoundaryMarkerArray = ["POINTS", "None"]
+deform.DisplacementArray = ["POINTS", "None"]
+deform.MovingBoundaries = ["wingA"]
+deform.RotationAngles = [10.0, 20.0, 30.0]
+deform.Translation = [0.2, -0.1, 0.05]
+deform.UpdatePipeline()
+writer = vtkXMLUnstructuredGridWriter()
+writer.SetInputData(deform.GetClientSideObject().GetOutputDataObject(0).GetBlock(0))
+writer.SetFileName(half_reference)
+writer.SetDataModeToBinary()
+assert writer.Write() == 1
+print("named sphere: wingA %d, wingB %d, box %d faces" % tuple(
+    len(patches[name]) for name in ("wingA", "wingB", "box")))

@@ -34,7 +34,9 @@ from paraview import simple
 from vtkmodules.numpy_interface import dataset_adapter as dsa
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIntArray
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkIntArray
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet
+from vtkmodules.vtkFiltersCore import vtkExtractCells
 import numpy as np
 
 
@@ -75,6 +77,53 @@ def dsa_points_of(vtm):
     reader.SetFileName(vtm)
     reader.Update()
     return reader.GetOutput().GetBlock(0)
+
+
+def owner_pieces(vtm, rank, size):
+    """This process's piece of the multiblock `vtm`, as OpenFOAM's processor directories hold
+    it: the volume cells whose centroid is in this process's slab along x, and the patch faces
+    of those cells (each patch a block, named as in `vtm`)."""
+    reader = vtkXMLMultiBlockDataReader()
+    reader.SetFileName(vtm)
+    reader.Update()
+    whole = reader.GetOutput()
+    volume = whole.GetBlock(0)
+    low, high = volume.GetBounds()[0:2]
+    owner_of_face = {}
+    owned = vtkIdList()
+    for c in range(volume.GetNumberOfCells()):
+        ids = [volume.GetCell(c).GetPointId(k) for k in range(4)]
+        x = sum(volume.GetPoint(i)[0] for i in ids) / 4.0
+        owner = min(size - 1, int((x - low) / (high - low) * size))
+        if owner == rank:
+            owned.InsertNextId(c)
+        for k in range(4):
+            owner_of_face[tuple(sorted(volume.GetPoint(i) for i in ids[:k] + ids[k + 1:]))] = owner
+    pieces = vtkMultiBlockDataSet()
+    extract = vtkExtractCells()
+    extract.SetInputData(volume)
+    extract.SetCellList(owned)
+    extract.Update()
+    pieces.SetBlock(0, extract.GetOutput())
+    pieces.GetMetaData(0).Set(vtkCompositeDataSet.NAME(), "internalMesh")
+    boundary, patches = vtkMultiBlockDataSet(), whole.GetBlock(1)
+    for b in range(patches.GetNumberOfBlocks()):
+        patch, mine = patches.GetBlock(b), vtkIdList()
+        for c in range(patch.GetNumberOfCells()):
+            ids = patch.GetCell(c).GetPointIds()
+            corners = tuple(sorted(patch.GetPoint(ids.GetId(k)) for k in range(ids.GetNumberOfIds())))
+            if owner_of_face[corners] == rank:
+                mine.InsertNextId(c)
+        faces = vtkExtractCells()
+        faces.SetInputData(patch)
+        faces.SetCellList(mine)
+        faces.Update()
+        boundary.SetBlock(b, faces.GetOutput())
+        boundary.GetMetaData(b).Set(vtkCompositeDataSet.NAME(),
+                                    patches.GetMetaData(b).Get(vtkCompositeDataSet.NAME()))
+    pieces.SetBlock(1, boundary)
+    pieces.GetMetaData(1).Set(vtkCompositeDataSet.NAME(), "boundary")
+    return pieces
 
 
 def check_against_reference(piece, original, reference, method):
@@ -119,6 +168,7 @@ def main():
     parser.add_argument("--extracted-data", required=True)
     parser.add_argument("--reference-centroid", required=True)
     parser.add_argument("--named-data", required=True)
+    parser.add_argument("--reference-wing-a", required=True)
     parser.add_argument("--layer-data", required=True)
     parser.add_argument("--reference-layer", required=True)
     parser.add_argument("--reference-extracted", required=True)
@@ -183,30 +233,54 @@ def main():
 
     # Boundaries chosen by name, on a multiblock whose blocks the reader gives to some processes
     # only: a piece without the named block is no error when another piece has it (until
-    # 2026-11-30 every process failed, "No block of the input is named 'wing'"); the volume is
-    # deformed as the serial run with the marker deforms it.
+    # 2026-11-30 every process failed, "No block of the input is named 'wing'"). The sphere is
+    # two patches sharing their seam's nodes: both halves as one entry deform the volume as the
+    # serial run with the marker does; the front half alone as the serial run of the same blocks
+    # (its seam nodes moving on every piece: a piece holding only the other half took them for
+    # static until 2026-11-30, and the mesh tore apart).
     named = simple.XMLMultiBlockDataReader(FileName=[args.named_data])
-    deform = DGMFDeform(Input=named)  # noqa: F821
+    wing_a = read(args.reference_wing_a)
+    for moving, expected in ((["wingA|wingB"], reference["DGMF"]), (["wingA"], wing_a)):
+        deform = DGMFDeform(Input=named)  # noqa: F821
+        deform.BoundaryMarkerArray = ["POINTS", "None"]
+        deform.DisplacementArray = ["POINTS", "None"]
+        deform.MovingBoundaries = moving
+        deform.RotationAngles = [10.0, 20.0, 30.0]
+        deform.Translation = [0.2, -0.1, 0.05]
+        named_in = local_piece(named).GetBlock(0)
+        named_out = local_piece(deform).GetBlock(0)
+        holders = 0
+        if named_in is not None and named_in.GetNumberOfPoints() > 0:
+            holders = 1
+            by_name = check_against_reference(
+                named_out, named_in, {"input": reference["input"], "x": expected}, "x")
+            print("process %d: boundaries by name %s, largest difference from the serial run "
+                  "%.3g" % (rank, moving, by_name))
+            assert by_name <= 1e-12, (moving, by_name)
+        counted = vtkIntArray()
+        counted.InsertNextValue(holders)
+        total_holders = vtkIntArray()
+        controller.AllReduce(counted, total_holders, 2)  # vtkCommunicator.SUM_OP
+        assert total_holders.GetValue(0) == 1, "the volume block is on %d processes" % (
+            total_holders.GetValue(0))
+    # The same blocks cut as a decomposed case is (each process its slab of cells and their patch
+    # faces): the front half alone moving gives every piece the serial result, the seam nodes
+    # included, which the piece holding the back half's faces took for static until 2026-11-30
+    # (the two copies of a seam node 0.79 apart).
+    owned = simple.PVTrivialProducer()
+    owned.GetClientSideObject().SetOutput(owner_pieces(args.named_data, rank, size))
+    deform = DGMFDeform(Input=owned)  # noqa: F821
     deform.BoundaryMarkerArray = ["POINTS", "None"]
     deform.DisplacementArray = ["POINTS", "None"]
-    deform.MovingBoundaries = ["wing"]
+    deform.MovingBoundaries = ["wingA"]
     deform.RotationAngles = [10.0, 20.0, 30.0]
     deform.Translation = [0.2, -0.1, 0.05]
-    named_in = local_piece(named).GetBlock(0)
-    named_out = local_piece(deform).GetBlock(0)
-    holders = 0
-    if named_in is not None and named_in.GetNumberOfPoints() > 0:
-        holders = 1
-        by_name = check_against_reference(named_out, named_in, reference, "DGMF")
-        print("process %d: boundaries by name, largest difference from the serial run %.3g" % (
-            rank, by_name))
-        assert by_name <= 1e-12, by_name
-    counted = vtkIntArray()
-    counted.InsertNextValue(holders)
-    total_holders = vtkIntArray()
-    controller.AllReduce(counted, total_holders, 2)  # vtkCommunicator.SUM_OP
-    assert total_holders.GetValue(0) == 1, "the volume block is on %d processes" % (
-        total_holders.GetValue(0))
+    owned_in = owned.GetClientSideObject().GetOutputDataObject(0).GetBlock(0)
+    seams = check_against_reference(local_piece(deform).GetBlock(0), owned_in,
+                                    {"input": reference["input"], "x": wing_a}, "x")
+    print("process %d: owned piece, the front half moving, largest difference from the serial "
+          "run %.3g" % (rank, seams))
+    assert seams <= 1e-12, seams
     wrong = DGMFDeform(Input=named)  # noqa: F821
     wrong.BoundaryMarkerArray = ["POINTS", "None"]
     wrong.DisplacementArray = ["POINTS", "None"]
@@ -219,7 +293,7 @@ def main():
             Input=simple.GenerateGlobalIds(Input=simple.RedistributeDataSet(Input=named))))
         ghosted.BoundaryMarkerArray = ["POINTS", "None"]
         ghosted.DisplacementArray = ["POINTS", "None"]
-        ghosted.MovingBoundaries = ["wing"]
+        ghosted.MovingBoundaries = ["wingA"]
         ghosted.RotationAngles = [10.0, 20.0, 30.0]
         assert local_piece(ghosted).GetNumberOfPoints() == 0, "patches with ghost cells were taken"
 
