@@ -2,6 +2,7 @@
 
 #include "vtkDGMFDeformFilter.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -113,8 +114,9 @@ bool ReadTimes(const char* text, std::vector<double>& times)
   std::string start, end, count;
   std::string rest;
   if (!std::getline(stream, start, ':') || !std::getline(stream, end, ':') ||
-    !std::getline(stream, count, ':') || std::getline(stream, rest) || !Plain(start) ||
-    !Plain(end) || !Plain(count))
+    !std::getline(stream, count, ':') || std::getline(stream, rest) || stream.peek() != EOF ||
+    std::count(text, text + std::strlen(text), ':') != 2 || !Plain(start) || !Plain(end) ||
+    !Plain(count))
   {
     return false; // (also "0:1:2:junk")
   }

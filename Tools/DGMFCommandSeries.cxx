@@ -61,12 +61,18 @@ std::string FramePath(const std::string& output, std::size_t index, std::size_t 
     if (!std::regex_search(output, match, Conversion) ||
       output.find('%', static_cast<std::size_t>(match.position(0)) + 1) != std::string::npos ||
       output.find('/', static_cast<std::size_t>(match.position(0))) != std::string::npos ||
-      std::atoi(match.str(0).c_str() + 1) > 20)
+      match.length(0) > 5) // "%020d" at most: a longer width would be cut, or wrap around
     {
       return "";
     }
     char number[64];
-    std::snprintf(number, sizeof number, match.str(0).c_str(), static_cast<int>(index));
+    const int written =
+      std::snprintf(number, sizeof number, match.str(0).c_str(), static_cast<int>(index));
+    if (written < 0 || written >= static_cast<int>(sizeof number) ||
+      std::atoi(match.str(0).c_str() + 1) > 20)
+    {
+      return "";
+    }
     return match.prefix().str() + number + match.suffix().str();
   }
   std::size_t digits = 4;

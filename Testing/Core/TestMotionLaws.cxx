@@ -79,6 +79,9 @@ TEST(MotionLaw, HarmonicIsPeriodicBitForBitAndRampIsLinear)
   dgmf::MotionLaw farRamp{ dgmf::MotionLawKind::Ramp, { 100.0, -730.0, 0.0, 1.0 } };
   EXPECT_EQ(farRamp.LargestMagnitude(), 730.0);
   EXPECT_EQ(dgmf::MotionLaw().LargestMagnitude(), 0.0);
+  // A frequency of 0 holds one value: mean + amplitude sin(phase), 800 sin(30 degrees) here.
+  dgmf::MotionLaw still{ dgmf::MotionLawKind::Harmonic, { 0.0, 800.0, 0.0, 30.0 } };
+  EXPECT_NEAR(still.LargestMagnitude(), 400.0, 1e-9);
   pitch.Parameters[2] = NAN;
   EXPECT_THROW(pitch.Check(), std::invalid_argument);
 }

@@ -107,7 +107,8 @@ class CommandFailures(unittest.TestCase):
         self.assertEqual(code, 2, err)
         self.assertIn("frame 0 of the series would overwrite the input", err)
         self.assertEqual(digest(source), before)
-        for pattern in ("fr_%d/p.vtu", "w_%064d.vtu"):
+        for pattern in ("fr_%d/p.vtu", "w_%064d.vtu", "w_%99999999999999999999d.vtu",
+                        "w_%4294967297d.vtu"):
             code, out, err = run(source, os.path.join(folder, pattern), *pitch)
             self.assertEqual(code, 2, pattern + err)
             self.assertIn("in the file's name, not in a folder", err)
@@ -256,7 +257,8 @@ class CommandFailures(unittest.TestCase):
         # Until 2026-11-30 "0x10" was 16 degrees, " 10" was taken (not "10 ") and
         # "0:1:2:junk" was 0:1:2.
         for arguments in (("--rotate", 0, 0, "0x10"), ("--rotate", 0, 0, " 10"),
-                          ("--pitch", 0, 5, 1, 0, "--times", "0:1:2:junk")):
+                          ("--pitch", 0, 5, 1, 0, "--times", "0:1:2:junk"),
+                          ("--pitch", 0, 5, 1, 0, "--times", "0:1:3:")):
             with self.subTest(arguments=arguments):
                 code, out, err = run(self.circle, self.path("o.vtu"), *arguments)
                 self.assertEqual(code, 2, err)

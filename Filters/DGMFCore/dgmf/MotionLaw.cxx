@@ -41,7 +41,8 @@ double MotionLaw::LargestMagnitude() const
   switch (this->Kind)
   {
     case MotionLawKind::Harmonic:
-      return std::abs(p[0]) + std::abs(p[1]);
+      // A frequency of 0 holds one value (it ran before the bound was checked up front).
+      return p[2] == 0.0 ? std::abs(this->Evaluate(0.0)) : std::abs(p[0]) + std::abs(p[1]);
     case MotionLawKind::Ramp:
       return std::max(std::abs(p[0]), std::abs(p[1]));
     default:
