@@ -15,6 +15,7 @@
  * is printed on one line. Exit codes: DGMFCommandOptions.h (ExitCode). Messages:
  * DGMFCommandMessages.h.
  */
+#include "DGMFCommandChecks.h"
 #include "DGMFCommandData.h"
 #include "DGMFCommandMessages.h"
 #include "DGMFCommandOptions.h"
@@ -53,6 +54,7 @@ using dgmf_cli::ExitFailure;
 using dgmf_cli::ExitInvertedCells;
 using dgmf_cli::ExitSuccess;
 using dgmf_cli::ExitUsage;
+using dgmf_cli::InputKind;
 
 double FieldValue(vtkDataObject* mesh, const char* name)
 {
@@ -115,78 +117,6 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
                                 : "; wrote " + written)
             << std::endl;
 }
-/// What the input is.
-enum class InputKind
-{
-  VTKFile,      ///< .vtu or .vtk, boundaries by marker array
-  SolverFile,   ///< .msh, .su2, .exo/.e/.ex2 or .cgns, boundaries by name
-  OpenFOAMCase, ///< a case directory, its controlDict or a .foam file, patches by name
-};
-
-InputKind KindOf(const std::string& input)
-{
-  return dgmf_cli::IsOpenFOAMCase(input) ? InputKind::OpenFOAMCase
-    : dgmf_cli::IsSolverMeshFile(input)  ? InputKind::SolverFile
-                                         : InputKind::VTKFile;
-}
-
-std::string ExtensionOf(const std::string& path)
-{
-  return std::filesystem::path(path).extension().string();
-}
-
-/// Why `output` cannot be written from `input` ("" when it can): .vtu and .vtk always; the
-/// solver's file back in its own format; an OpenFOAM case back into a case.
-std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output)
-{
-  if (dgmf_cli::IsMeshFileName(output) || kind == InputKind::OpenFOAMCase)
-  {
-    return "";
-  }
-  if (kind == InputKind::SolverFile &&
-    dgmf::meshfile::FormatOfFileName(output) == dgmf::meshfile::FormatOfFileName(input))
-  {
-    return "";
-  }
-  return "the output must end in .vtu (XML) or .vtk (legacy VTK)" +
-    std::string(
-      kind == InputKind::SolverFile ? ", or " + ExtensionOf(input) + " as the input" : "") +
-    ": " + output;
-}
-
-/**
- * Options that would be ignored for this input or output: an error for --time outside an
- * OpenFOAM case (false), a warning for the others (they were all ignored without a word until
- * 2026-11-30).
- */
-bool OptionsFitTheInput(
-  InputKind kind, const dgmf_cli::CommandOptions& options, vtkDGMFDeformFilter* filter)
-{
-  if (options.Time != "constant" && kind != InputKind::OpenFOAMCase)
-  {
-    std::cerr << "dgmf-deform: --time names the time directory of an OpenFOAM case; "
-              << options.Input << " is not one\n";
-    return false;
-  }
-  if (options.MarkerGiven && options.ByName)
-  {
-    std::cerr << "dgmf-deform: warning: --marker is not read: the boundaries are chosen by name\n";
-  }
-  if ((options.Compression != "lz4" || !options.VTUAppended) &&
-    !dgmf_cli::IsVTUFileName(options.Output))
-  {
-    std::cerr << "dgmf-deform: warning: --compression and --vtu-mode are for .vtu outputs; "
-              << options.Output << " is not one\n";
-  }
-  if (filter->GetRepairThreshold() <= 0.0 &&
-    (filter->GetRepairPasses() != 20 || filter->GetRepairLayers() != 2))
-  {
-    std::cerr << "dgmf-deform: warning: --repair-passes and --repair-layers are the quality "
-                 "guard's: without --repair they do nothing\n";
-  }
-  return true;
-}
-
 /// "a, b, c", or "(none)".
 std::string Listed(const std::vector<std::string>& names)
 {
@@ -224,41 +154,6 @@ void PrintBoundaries(
             << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
             << Listed(others) << ")" << std::endl;
 }
-/**
- * For a mesh without a boundary-marker array: says that its boundary is found from its faces,
- * moving where the displacement array is not zero; false (an error printed) when that array is
- * missing or zero everywhere, so that no node would move whatever the motion asked for (such a
- * run wrote the input's points, exit 0, until 2026-11-30).
- */
-bool NodesCanMove(vtkUnstructuredGrid* mesh, const dgmf_cli::CommandOptions& options)
-{
-  if (mesh->GetPointData()->GetArray(options.Marker.c_str()) ||
-    (options.MarkerGiven && !options.Marker.empty()))
-  {
-    return true; // (a marker named but missing is the filter's error)
-  }
-  vtkDataArray* displacement = mesh->GetPointData()->GetArray(options.Displacement.c_str());
-  bool moving = false;
-  for (int c = 0; displacement && c < displacement->GetNumberOfComponents() && !moving; ++c)
-  {
-    double range[2];
-    displacement->GetRange(range, c);
-    moving = range[0] != 0.0 || range[1] != 0.0;
-  }
-  if (!moving)
-  {
-    std::cerr << "dgmf-deform: error: the input has no boundary-marker array '" << options.Marker
-              << "' and no non-zero displacement array '" << options.Displacement
-              << "': no node would move. Give the marker (--marker NAME: 0 interior, 1 static, "
-                 "2 moving, 3 slip) or the moving nodes' displacement (--displacement NAME).\n";
-    return false;
-  }
-  std::cout << "dgmf-deform: no boundary-marker array '" << options.Marker
-            << "': the boundary is the mesh's boundary faces, moving where '"
-            << options.Displacement << "' is not zero" << std::endl;
-  return true;
-}
-
 /// Writes the deformed mesh where the options say; false (the error printed) when it cannot.
 bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   const dgmf_cli::CommandOptions& options, std::string& written)
@@ -501,14 +396,14 @@ int main(int argc, char* argv[])
   // The input: a VTK mesh file (boundaries by marker), or a solver's mesh file or an OpenFOAM
   // case (boundaries by name).
   const std::string& input = options.Input;
-  const InputKind kind = KindOf(input);
-  const std::string outputProblem = OutputProblem(kind, input, options.Output);
+  const InputKind kind = dgmf_cli::KindOf(input);
+  const std::string outputProblem = dgmf_cli::OutputProblem(kind, input, options.Output);
   if (!outputProblem.empty())
   {
     std::cerr << "dgmf-deform: " << outputProblem << "\n";
     return ExitUsage;
   }
-  if (!OptionsFitTheInput(kind, options, filter))
+  if (!dgmf_cli::OptionsFitTheInput(kind, options, filter))
   {
     return ExitUsage;
   }
@@ -595,7 +490,7 @@ int main(int argc, char* argv[])
   {
     filter->SetDisplacementArrayName(options.Displacement.c_str());
   }
-  if (mesh && !NodesCanMove(mesh, options))
+  if (mesh && !dgmf_cli::NodesCanMove(mesh, options))
   {
     return ExitFailure;
   }

@@ -1,0 +1,105 @@
+#include "DGMFCommandChecks.h"
+
+#include "DGMFCommandData.h"
+
+#include "dgmf/meshfile/MeshFileFormat.h"
+
+#include "vtkDGMFDeformFilter.h"
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace dgmf_cli
+{
+namespace
+{
+std::string ExtensionOf(const std::string& path)
+{
+  return std::filesystem::path(path).extension().string();
+}
+} // namespace
+
+InputKind KindOf(const std::string& input)
+{
+  return IsOpenFOAMCase(input) ? InputKind::OpenFOAMCase
+    : IsSolverMeshFile(input)  ? InputKind::SolverFile
+                               : InputKind::VTKFile;
+}
+
+std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output)
+{
+  if (IsMeshFileName(output) || kind == InputKind::OpenFOAMCase)
+  {
+    return "";
+  }
+  if (kind == InputKind::SolverFile &&
+    dgmf::meshfile::FormatOfFileName(output) == dgmf::meshfile::FormatOfFileName(input))
+  {
+    return "";
+  }
+  return "the output must end in .vtu (XML) or .vtk (legacy VTK)" +
+    std::string(
+      kind == InputKind::SolverFile ? ", or " + ExtensionOf(input) + " as the input" : "") +
+    ": " + output;
+}
+
+bool OptionsFitTheInput(InputKind kind, const CommandOptions& options, vtkDGMFDeformFilter* filter)
+{
+  if (options.Time != "constant" && kind != InputKind::OpenFOAMCase)
+  {
+    std::cerr << "dgmf-deform: --time names the time directory of an OpenFOAM case; "
+              << options.Input << " is not one\n";
+    return false;
+  }
+  if (options.MarkerGiven && options.ByName)
+  {
+    std::cerr << "dgmf-deform: warning: --marker is not read: the boundaries are chosen by name\n";
+  }
+  if ((options.Compression != "lz4" || !options.VTUAppended) && !IsVTUFileName(options.Output))
+  {
+    std::cerr << "dgmf-deform: warning: --compression and --vtu-mode are for .vtu outputs; "
+              << options.Output << " is not one\n";
+  }
+  if (filter->GetRepairThreshold() <= 0.0 &&
+    (filter->GetRepairPasses() != 20 || filter->GetRepairLayers() != 2))
+  {
+    std::cerr << "dgmf-deform: warning: --repair-passes and --repair-layers are the quality "
+                 "guard's: without --repair they do nothing\n";
+  }
+  return true;
+}
+
+bool NodesCanMove(vtkUnstructuredGrid* mesh, const CommandOptions& options)
+{
+  if (mesh->GetPointData()->GetArray(options.Marker.c_str()) ||
+    (options.MarkerGiven && !options.Marker.empty()))
+  {
+    return true; // (a marker named but missing is the filter's error)
+  }
+  vtkDataArray* displacement = mesh->GetPointData()->GetArray(options.Displacement.c_str());
+  bool moving = false;
+  for (int c = 0; displacement && c < displacement->GetNumberOfComponents() && !moving; ++c)
+  {
+    double range[2];
+    displacement->GetRange(range, c);
+    moving = range[0] != 0.0 || range[1] != 0.0;
+  }
+  if (!moving)
+  {
+    std::cerr << "dgmf-deform: error: the input has no boundary-marker array '" << options.Marker
+              << "' and no non-zero displacement array '" << options.Displacement
+              << "': no node would move. Give the marker (--marker NAME: 0 interior, 1 static, "
+                 "2 moving, 3 slip) or the moving nodes' displacement (--displacement NAME).\n";
+    return false;
+  }
+  std::cout << "dgmf-deform: no boundary-marker array '" << options.Marker
+            << "': the boundary is the mesh's boundary faces, moving where '"
+            << options.Displacement << "' is not zero" << std::endl;
+  return true;
+}
+
+} // namespace dgmf_cli
