@@ -288,6 +288,32 @@ int DetectDimension(vtkUnstructuredGrid* mesh, const double* xyz, std::size_t n)
   return 2;
 }
 
+namespace
+{
+/// The cell types present in a mesh that are of its largest cell dimension, and whether it has
+/// cells of other types (another dimension, or empty cells).
+struct LargestDimensionTypes
+{
+  std::array<bool, 256> Types{};
+  bool Others = false;
+};
+
+LargestDimensionTypes TypesOfLargestDimension(vtkUnstructuredGrid* mesh)
+{
+  const std::array<bool, 256> present = CellTypesPresent(mesh);
+  bool polygons = false;
+  const int largest = CellDimensionOf(present, polygons);
+  LargestDimensionTypes types;
+  for (int type = 0; type < 256; ++type)
+  {
+    types.Types[type] = present[type] && type != VTK_EMPTY_CELL &&
+      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest;
+    types.Others = types.Others || (present[type] && !types.Types[type]);
+  }
+  return types;
+}
+} // namespace
+
 vtkIdType CountBadCellsOutsideTheGuard(
   vtkUnstructuredGrid* mesh, vtkDataArray* sizeSkew, double threshold)
 {
@@ -296,18 +322,13 @@ vtkIdType CountBadCellsOutsideTheGuard(
     return 0;
   }
   // The types of the mesh's dimension that the guard does not see (no CellShapeOf).
-  const std::array<bool, 256> present = CellTypesPresent(mesh);
-  bool polygons = false;
-  const int largest = CellDimensionOf(present, polygons);
-  std::array<bool, 256> unguarded{};
+  std::array<bool, 256> unguarded = TypesOfLargestDimension(mesh).Types;
   bool any = false;
   for (int type = 0; type < 256; ++type)
   {
     dgmf::CellShape shape;
     const int* order = nullptr;
-    unguarded[type] = present[type] && type != VTK_EMPTY_CELL &&
-      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest &&
-      !CellShapeOf(type, shape, order);
+    unguarded[type] = unguarded[type] && !CellShapeOf(type, shape, order);
     any = any || unguarded[type];
   }
   vtkIdType count = 0;
@@ -336,19 +357,10 @@ std::string CountUnguardedCellsAsUnrepaired(vtkUnstructuredGrid* output, double 
 
 vtkIdType CountCellsOfLargestDimension(vtkUnstructuredGrid* mesh)
 {
-  const std::array<bool, 256> present = CellTypesPresent(mesh);
-  bool polygons = false;
-  const int largest = CellDimensionOf(present, polygons);
+  const LargestDimensionTypes largest = TypesOfLargestDimension(mesh);
+  const std::array<bool, 256>& counted = largest.Types;
   // Any type of another dimension, empty cells included: count the cells one by one.
-  std::array<bool, 256> counted{};
-  bool mixed = false;
-  for (int type = 0; type < 256; ++type)
-  {
-    counted[type] = present[type] && type != VTK_EMPTY_CELL &&
-      vtkCellTypes::GetDimension(static_cast<unsigned char>(type)) == largest;
-    mixed = mixed || (present[type] && !counted[type]);
-  }
-  if (!mixed)
+  if (!largest.Others)
   {
     return mesh->GetNumberOfCells();
   }
