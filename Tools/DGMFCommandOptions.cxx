@@ -156,7 +156,7 @@ std::string Usage()
     "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
     "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
     "       dgmf-deform MESH_FILE OUTPUT --moving NAME[,NAME...] [options]\n"
-    "       (or the options first: dgmf-deform [options] INPUT OUTPUT)\n"
+    "       (the options may also come before or between the files)\n"
     "  INPUT                   .vtu or .vtk unstructured grid\n"
     "  MESH_FILE               a solver's mesh with boundary names: gmsh .msh, SU2 .su2,\n"
     "                          Exodus II .exo/.e/.ex2, CGNS .cgns; OUTPUT: .vtu, .vtk, or the\n"
@@ -229,17 +229,17 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     std::cerr << Usage();
     return ExitUsage;
   }
-  // INPUT OUTPUT [options], or [options] INPUT OUTPUT (options first, as many programs take
-  // them: the last two arguments are then the files).
-  const auto isOption = [](const char* text) { return std::strncmp(text, "--", 2) == 0; };
-  const bool optionsFirst =
-    isOption(argv[1]) && !isOption(argv[argc - 2]) && !isOption(argv[argc - 1]);
-  options.Input = optionsFirst ? argv[argc - 2] : argv[1];
-  options.Output = optionsFirst ? argv[argc - 1] : argv[2];
-  const int firstOption = optionsFirst ? 1 : 3;
-  argc = optionsFirst ? argc - 2 : argc;
-  for (int i = firstOption; i < argc; ++i)
+  // The two files may come anywhere among the options (INPUT OUTPUT [options], [options] INPUT
+  // OUTPUT, INPUT [options] OUTPUT): an argument that is neither an option nor an option's value
+  // is a file, the first the input, the second the output.
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i)
   {
+    if (argv[i][0] != '-')
+    {
+      files.emplace_back(argv[i]);
+      continue;
+    }
     const std::string option = argv[i];
     double v[3];
     double law[4];
@@ -403,6 +403,19 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
       return ExitUsage;
     }
   }
+  if (files.size() != 2)
+  {
+    std::cerr << "dgmf-deform: " << (files.size() < 2 ? "missing" : "too many") << " files: "
+              << "expected INPUT and OUTPUT, got " << files.size();
+    for (const std::string& file : files)
+    {
+      std::cerr << " '" << file << "'";
+    }
+    std::cerr << "\n" << Usage();
+    return ExitUsage;
+  }
+  options.Input = files[0];
+  options.Output = files[1];
 
   if (!options.Times.empty() && !options.Series)
   {
