@@ -23,10 +23,11 @@ struct CommandTimes
 };
 
 /**
- * Writes `mesh` to `directory`/mesh.vtu (appended raw, LZ4: the command's own default; not
- * timed), then runs `command` (dgmf-deform) on it `repeats` times with the benchmark's motion and
- * `threads` threads, writing `directory`/deformed.vtu, and returns the times of the run whose wall
- * time is the median. Throws std::runtime_error when the command fails or prints no timings.
+ * Writes `mesh` to `directory`/mesh.vtu (appended raw, LZ4: a compressed input, read on both
+ * threads; not timed), then runs `command` (dgmf-deform) on it `repeats` times with the benchmark's
+ * motion and `threads` threads, writing `directory`/deformed.vtu, and returns the times of the run
+ * whose wall time is the median. Throws std::runtime_error when the command fails or prints no
+ * timings.
  *
  * One run alone is not representative on a virtual machine: the first command after the
  * benchmark has freed gigabytes took twice as long on this project's VM (its page faults, 5.4

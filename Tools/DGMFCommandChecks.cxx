@@ -59,7 +59,7 @@ bool OptionsFitTheInput(InputKind kind, const CommandOptions& options, vtkDGMFDe
   {
     std::cerr << "dgmf-deform: warning: --marker is not read: the boundaries are chosen by name\n";
   }
-  if ((options.Compression != "lz4" || !options.VTUAppended) && !IsVTUFileName(options.Output))
+  if ((!options.Compression.empty() || !options.VTUAppended) && !IsVTUFileName(options.Output))
   {
     std::cerr << "dgmf-deform: warning: --compression and --vtu-mode are for .vtu outputs; "
               << options.Output << " is not one\n";

@@ -35,14 +35,14 @@ struct CommandOptions
   bool DecomposePolyhedra = false;
   bool ByName = false; ///< boundaries chosen by name (--moving, --static, --slip)
   std::vector<std::string> Moving, Static, Slip; ///< the names given
-  bool FailOnInverted = false;     ///< exit 3, writing nothing, when cells are inverted
-  double ProgressDelay = 2.0;      ///< seconds before the progress is shown (--progress: 0)
-  bool NoWrite = false;            ///< --no-write: read and deform only (the timings show)
-  bool VTUAppended = true;         ///< --vtu-mode appended (default) or binary
-  std::string Compression = "lz4"; ///< --compression
-  std::string Trajectory;          ///< --trajectory: a CSV table of body motions in time
-  std::vector<double> Times;       ///< --times START:END:COUNT (empty: the filter's own)
-  bool Series = false;             ///< the motion depends on time: one output per time (a series)
+  bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
+  double ProgressDelay = 2.0;  ///< seconds before the progress is shown (--progress: 0)
+  bool NoWrite = false;        ///< --no-write: read and deform only (the timings show)
+  bool VTUAppended = true;     ///< --vtu-mode appended (default) or binary
+  std::string Compression;     ///< --compression (empty: VTUEncoding's default)
+  std::string Trajectory;      ///< --trajectory: a CSV table of body motions in time
+  std::vector<double> Times;   ///< --times START:END:COUNT (empty: the filter's own)
+  bool Series = false;         ///< the motion depends on time: one output per time (a series)
 };
 
 /// The usage text.

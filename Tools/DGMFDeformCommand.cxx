@@ -6,7 +6,7 @@
  *   dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [--static ...] [--slip ...] [options]
  *
  * INPUT is a .vtu (XML) or .vtk (legacy) unstructured grid; the output is written as an XML
- * unstructured grid (.vtu, appended raw with LZ4 by default: --vtu-mode, --compression) or a
+ * unstructured grid (.vtu, appended raw by default: --vtu-mode, --compression) or a
  * binary legacy file (.vtk), under a temporary name renamed into place. A motion in time
  * (--rotation-law, --pitch, --translation-law, --trajectory) writes a series: one output per time
  * and a .pvd collection (RunSeries). CASE_DIR is an OpenFOAM case (its directory or a .foam
