@@ -376,6 +376,16 @@ TEST(CaseDirectory, WrongInputsWriteNothingAndSayWhy)
   EXPECT_NE(message(out, "constant", good.data(), good.data(), 3).find("not an OpenFOAM case"),
     std::string::npos);
   EXPECT_FALSE(fs::exists(out / "constant"));
+  // A new directory inside the case: until 2026-11-30 the case was copied into itself until the
+  // names got too long, leaving the nested copies.
+  for (const fs::path& inside : { source / "deformed", source / "constant" / "x" / "y" })
+  {
+    EXPECT_NE(message(inside, "constant", good.data(), good.data(), 3).find("is inside the case"),
+      std::string::npos)
+      << inside;
+  }
+  EXPECT_FALSE(fs::exists(source / "deformed"));
+  EXPECT_FALSE(fs::exists(source / "constant" / "x"));
   EXPECT_EQ(ReadText(source / "constant" / "polyMesh" / "points"), before);
 }
 

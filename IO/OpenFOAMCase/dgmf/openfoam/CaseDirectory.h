@@ -48,7 +48,8 @@ std::vector<std::string> ReadPatchNames(const std::filesystem::path& caseDirecto
 /**
  * Copies the case `source` into `target` (created; it must not hold anything yet): every file and
  * directory of the case except the time directories after the first one (the fields to start
- * from are kept), `processor*` directories and `postProcessing`. Throws std::runtime_error.
+ * from are kept), `processor*` directories and `postProcessing`. Throws std::runtime_error, before
+ * anything is copied, when `target` is inside `source`.
  */
 void CopyCase(const std::filesystem::path& source, const std::filesystem::path& target);
 
