@@ -456,7 +456,8 @@ int main(int argc, char* argv[])
     filter->SetInputConnection(reader->GetOutputPort());
     if (kind == InputKind::OpenFOAMCase)
     {
-      // A patch group ("wall", "motorBikeGroup") is one boundary of its patches.
+      // A patch group ("wall", "motorBikeGroup") is one boundary of its patches; but for slip,
+      // each patch of a group ("wedge": front and back) is a plane of its own.
       filter->RemoveAllMovingBoundaries();
       filter->RemoveAllStaticBoundaries();
       filter->RemoveAllSlipBoundaries();
@@ -468,7 +469,7 @@ int main(int argc, char* argv[])
       {
         filter->AddStaticBoundary(name.c_str());
       }
-      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip))
+      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip, true))
       {
         filter->AddSlipBoundary(name.c_str());
       }

@@ -180,7 +180,8 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
     std::ostringstream message;
     message << "The slip boundary '" << name << "' is not planar: a node is " << farthest
             << " from the best plane through its nodes (size " << fit.Extent
-            << "). A slip boundary must be a plane; split a curved one, or make it static.";
+            << "). A slip boundary must be a plane: split a curved one, name planes that differ as "
+               "separate slip boundaries, or make it static.";
     throw std::invalid_argument(message.str());
   }
   return fit.Through(plane, normal, farthest);
