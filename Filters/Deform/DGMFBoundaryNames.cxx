@@ -387,12 +387,24 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       }
     }
   };
-  std::vector<std::uint8_t> chosen(leaves.size(), 0);
+  // The entry that chose each block: a block chosen by two entries (a wildcard, alternatives or
+  // a patch group besides another entry) is a mistake, as a name given twice is.
+  std::vector<std::string> chosenBy(leaves.size());
+  const auto choose = [&](std::size_t l, const std::string& entry, const char* role)
+  {
+    const std::string by = "'" + entry + "' as " + role;
+    if (!chosenBy[l].empty())
+    {
+      throw std::invalid_argument("The block '" + leaves[l].Name + "' is named by two entries (" +
+        chosenBy[l] + " and " + by + "): name each boundary once.");
+    }
+    chosenBy[l] = by;
+  };
   for (std::size_t k = 0; k < selection.Moving.size(); ++k)
   {
     for (std::size_t l : leavesOf(selection.Moving[k]))
     {
-      chosen[l] = 1;
+      choose(l, selection.Moving[k], "moving");
       mark(l, MovingRank, static_cast<std::int32_t>(k + 1), -1);
     }
   }
@@ -400,7 +412,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   {
     for (std::size_t l : leavesOf(entry))
     {
-      chosen[l] = 1;
+      choose(l, entry, "static");
       mark(l, StaticRank, 0, -1);
     }
   }
@@ -408,7 +420,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   {
     for (std::size_t l : leavesOf(selection.Slip[k]))
     {
-      chosen[l] = 1;
+      choose(l, selection.Slip[k], "slip");
       mark(l, SlipRank, 0, static_cast<std::int32_t>(k));
     }
   }
@@ -417,7 +429,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     static_cast<const double*>(mesh.GetMergedMesh()->GetPoints()->GetData()->GetVoidPointer(0));
   for (std::size_t l = 0; l < leaves.size(); ++l)
   {
-    if (chosen[l] || leaves[l].CellDimension >= dimension)
+    if (!chosenBy[l].empty() || leaves[l].CellDimension >= dimension)
     {
       continue;
     }

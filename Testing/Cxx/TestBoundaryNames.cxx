@@ -295,7 +295,15 @@ TEST(BoundaryNames, AnUnknownNameListsTheBlocksAndANameNeedsBlocks)
     { std::tuple{ "internalMesh", "", "'internalMesh' is the whole mesh (its volume block)" },
       std::tuple{ "circle", "internalMesh", "'internalMesh' is the whole mesh" },
       std::tuple{
-        "circle", "circle", "The boundary 'circle' is named twice (as moving and as static)" } })
+        "circle", "circle", "The boundary 'circle' is named twice (as moving and as static)" },
+      // ... so is a block named by two entries through a wildcard or alternatives (until
+      // 2026-11-30 the moving one won without a word: "wing_*" moving and "wing_tip" static
+      // moved the tip).
+      std::tuple{ "circle", "c*e",
+        "The block 'circle' is named by two entries ('circle' as moving and 'c*e' as static)" },
+      std::tuple{ "left|circle", "circle|right",
+        "The block 'circle' is named by two entries ('left|circle' as moving and 'circle|right' "
+        "as static)" } })
   {
     vtkNew<vtkDGMFDeformFilter> named;
     Errors namedErrors(named);
