@@ -157,6 +157,42 @@ vtkIdType GhostVolumeCellsOfAPatch(
   return faces ? volumeGhosts : 0;
 }
 
+/**
+ * A warning when nodes of the moving boundaries also lie on static blocks (`staticLeaves`; named
+ * says whether each was chosen as static or is static for not being named): such nodes move with
+ * the body (moving wins), so the static boundary's faces around them stretch or shear (a wedge
+ * or cyclic patch, a ground plane under a wheel: checkMesh then fails). Empty when there are none.
+ */
+std::string MovingNodesOnStaticBlocks(const std::vector<CompositeMesh::Leaf>& leaves,
+  const std::vector<std::size_t>& staticLeaves, const std::vector<bool>& named,
+  const std::vector<std::uint8_t>& rank)
+{
+  std::string listed;
+  std::size_t blocks = 0;
+  for (std::size_t k = 0; k < staticLeaves.size(); ++k)
+  {
+    const CompositeMesh::Leaf& leaf = leaves[staticLeaves[k]];
+    std::size_t shared = 0;
+    for (vtkIdType point = 0; point < leaf.NumberOfPoints; ++point)
+    {
+      shared += rank[static_cast<std::size_t>(leaf.Node(point))] == MovingRank ? 1 : 0;
+    }
+    if (shared > 0 && ++blocks <= 5)
+    {
+      listed += std::string(listed.empty() ? "" : ", ") + "'" + leaf.Name + "' (" +
+        std::to_string(shared) + (named[k] ? "" : ", static for not being named") + ")";
+    }
+  }
+  if (blocks == 0)
+  {
+    return std::string();
+  }
+  return "Nodes of the moving boundaries also lie on static boundaries: " + listed +
+    (blocks > 5 ? " and " + std::to_string(blocks - 5) + " more" : std::string()) +
+    ". They move with the body, so the static boundary's faces around them stretch or shear "
+    "(a wedge, symmetry or cyclic patch, a ground plane: the solver's mesh check may fail). Name "
+    "a plane the body slides along as a slip boundary; check the result otherwise.";
+}
 } // namespace
 
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
@@ -408,12 +444,16 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       mark(l, MovingRank, static_cast<std::int32_t>(k + 1), -1);
     }
   }
+  std::vector<std::size_t> staticLeaves; // for the warning of moving nodes on them
+  std::vector<bool> staticNamed;
   for (const std::string& entry : selection.Static)
   {
     for (std::size_t l : leavesOf(entry))
     {
       choose(l, entry, "static");
       mark(l, StaticRank, 0, -1);
+      staticLeaves.push_back(l);
+      staticNamed.push_back(true);
     }
   }
   for (std::size_t k = 0; k < selection.Slip.size(); ++k)
@@ -437,10 +477,17 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     if (!inPlane)
     {
       mark(l, StaticRank, 0, -1);
+      staticLeaves.push_back(l);
+      staticNamed.push_back(false);
     }
   }
 
   NodeRoles roles;
+  const std::string shared = MovingNodesOnStaticBlocks(leaves, staticLeaves, staticNamed, rank);
+  if (!shared.empty())
+  {
+    roles.Warnings.push_back(shared);
+  }
   roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());
   roles.SlipNames = selection.Slip;

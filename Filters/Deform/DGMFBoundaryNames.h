@@ -65,6 +65,7 @@ struct NodeRoles
   /// whether a block of this piece has its name (the others' pieces may: AgreeOnNamedBoundaries).
   std::vector<std::uint8_t> Found;
   std::string BlockNames; ///< this piece's blocks, for the message of an entry found nowhere
+  std::vector<std::string> Warnings; ///< for the user (moving nodes on static boundaries)
 };
 
 /**

@@ -287,6 +287,8 @@ void InputGatherer::Gather(
   this->GatherKinds(mesh, options, marker, nodes);
   if (options.Roles)
   {
+    nodes.Warnings.insert(
+      nodes.Warnings.end(), options.Roles->Warnings.begin(), options.Roles->Warnings.end());
     nodes.BodyIds = options.Roles->BodyIds;
     nodes.NumberOfBodies =
       nodes.BodyIds.empty() ? 0 : *std::max_element(nodes.BodyIds.begin(), nodes.BodyIds.end());

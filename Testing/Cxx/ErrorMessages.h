@@ -16,20 +16,21 @@
 namespace dgmf_test
 {
 
-/// Collects the error messages of `object` (its ErrorEvents) from construction on.
+/// Collects the error messages of `object` (its ErrorEvents, or the `event` given:
+/// vtkCommand::WarningEvent for its warnings) from construction on.
 struct ErrorMessages
 {
   std::vector<std::string> Messages;
   vtkNew<vtkCallbackCommand> Callback;
 
-  explicit ErrorMessages(vtkObject* object)
+  explicit ErrorMessages(vtkObject* object, unsigned long event = vtkCommand::ErrorEvent)
   {
     this->Callback->SetClientData(&this->Messages);
     this->Callback->SetCallback(
       [](vtkObject*, unsigned long, void* data, void* text) {
         static_cast<std::vector<std::string>*>(data)->emplace_back(static_cast<const char*>(text));
       });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    object->AddObserver(event, this->Callback);
   }
 
   /// True when a message contains `text`.

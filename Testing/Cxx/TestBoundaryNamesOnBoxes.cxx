@@ -149,3 +149,42 @@ TEST(BoundaryNames, AnEntryOfSeveralBlocksIsOneBody)
   EXPECT_TRUE(run({ "ymin|ymxa" }, &error).empty());
   EXPECT_NE(error.find("No block of the input matches 'ymxa'"), std::string::npos) << error;
 }
+
+TEST(BoundaryNames, MovingNodesOnStaticBoundariesAreSaid)
+{
+  // The box's side xmin moving: its edges lie on the four sides around it, static (named so, or
+  // for not being named); their faces there shear (a wedge or cyclic patch, a ground plane under
+  // a wheel: the solver's check fails). Said since 2026-11-30, with the nodes each shares; not
+  // when they slip.
+  const int n = 6;
+  const std::string edge = std::to_string(n + 1);
+  for (const std::vector<std::string>& slip :
+    { std::vector<std::string>{}, { "ymin" }, { "ymin", "ymax", "zmin", "zmax" } })
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    dgmf_test::ErrorMessages warnings(filter, vtkCommand::WarningEvent);
+    filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+    filter->AddMovingBoundary("xmin");
+    if (slip.empty())
+    {
+      filter->AddStaticBoundary("zmax");
+    }
+    for (const std::string& name : slip)
+    {
+      filter->AddSlipBoundary(name.c_str());
+    }
+    filter->SetTranslation(0.0, 0.0, 0.0);
+    filter->SetRotationAngles(2.0, 0.0, 0.0);
+    filter->Update();
+    ASSERT_NE(VolumeOf(filter->GetOutputDataObject(0)), nullptr) << slip.size();
+    EXPECT_EQ(warnings.Contains("Nodes of the moving boundaries also lie on static boundaries"),
+      slip.size() < 4)
+      << slip.size();
+    EXPECT_EQ(warnings.Contains("'ymin' (" + edge + ", static for not being named)"), slip.empty())
+      << slip.size();
+    EXPECT_EQ(warnings.Contains("'zmax' (" + edge + ")"), slip.empty()) << slip.size();
+    EXPECT_EQ(
+      warnings.Contains("'zmax' (" + edge + ", static for not being named)"), slip.size() == 1)
+      << slip.size();
+  }
+}
