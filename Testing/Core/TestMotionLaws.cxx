@@ -71,6 +71,21 @@ TEST(MotionLaw, HarmonicIsPeriodicBitForBitAndRampIsLinear)
 
   ramp.Parameters[3] = 0.5; // ends when it starts
   EXPECT_THROW(ramp.Evaluate(1.0), std::invalid_argument);
+  // The harmonic law's defaults (0 10 1 0) taken as a ramp, as the GUI gives them when Ramp is
+  // chosen: the message says what the four parameters are (until 2026-11-30 only "the ramp's
+  // end time (0.000000) must be after its start time (1.000000)").
+  dgmf::MotionLaw defaults{ dgmf::MotionLawKind::Ramp, { 0.0, 10.0, 1.0, 0.0 } };
+  try
+  {
+    defaults.Check("the rotation law");
+    ADD_FAILURE() << "a ramp ending before it starts was taken";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+      "the rotation law: a ramp's four parameters are its start value, end value, start time and "
+      "end time, and its end time (0) must be after its start time (1)");
+  }
   pitch.Parameters[2] = -1.0;
   EXPECT_THROW(pitch.Check("the rotation law"), std::invalid_argument);
   // The largest |v| over all times, for refusing a rotation beyond two turns up front.

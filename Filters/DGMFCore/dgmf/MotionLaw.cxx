@@ -1,5 +1,7 @@
 #include "dgmf/MotionLaw.h"
 
+#include "dgmf/NumberText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -24,9 +26,13 @@ void MotionLaw::Check(const char* what) const
   }
   if (this->Kind == MotionLawKind::Ramp && !(this->Parameters[3] > this->Parameters[2]))
   {
-    throw std::invalid_argument(std::string(what) + ": the ramp's end time (" +
-      std::to_string(this->Parameters[3]) + ") must be after its start time (" +
-      std::to_string(this->Parameters[2]) + ")");
+    // The parameters are shared with the harmonic law, whose defaults (0 10 1 0) are not a ramp:
+    // say what each one is.
+    throw std::invalid_argument(std::string(what) +
+      ": a ramp's four parameters are its start value, end value, start time and end time, and "
+      "its end time (" +
+      NumberText(this->Parameters[3]) + ") must be after its start time (" +
+      NumberText(this->Parameters[2]) + ")");
   }
   if (this->Kind != MotionLawKind::Constant && this->Kind != MotionLawKind::Harmonic &&
     this->Kind != MotionLawKind::Ramp)
