@@ -2,6 +2,7 @@
 // nodes, through gmsh's own library. Called by GmshFile.cxx in a child process
 // (LibraryIsolation.h); the gmsh calls run in a GmshSession (GmshSession.h): serialized, silent,
 // errors collected from gmsh's logger.
+#include "dgmf/NumberText.h"
 #include "dgmf/meshfile/GmshModule.h"
 #include "dgmf/meshfile/GmshSession.h"
 #include "dgmf/meshfile/MeshBytes.h"
@@ -190,18 +191,21 @@ NamedMesh ReadModel(GmshSession& session, const MshFormat& format)
   {
     session.Fail("no 2D or 3D element");
   }
-  if (mesh.Dimension == 2)
+  if (mesh.Dimension == 2 && !nodes.Tags.empty())
   {
+    // A 2D mesh lies in one plane z = constant (the filter keeps that z; until 2026-11-30 only
+    // z = 0 was read).
+    const double z = nodes.Coordinates[2];
     for (std::size_t k = 0; k < nodes.Tags.size(); ++k)
     {
-      if (nodes.Coordinates[3 * k + 2] != 0.0)
+      if (nodes.Coordinates[3 * k + 2] != z)
       {
         // Also a 3D geometry saved with physical groups on its surfaces only (gmsh then keeps
         // no volume element): said, as it is the likelier mistake.
-        session.Fail("the file has no 3D element, and a 2D mesh must lie in the plane z = 0, but "
-                     "node " +
-          std::to_string(nodes.Tags[k]) +
-          " has z = " + std::to_string(nodes.Coordinates[3 * k + 2]) +
+        session.Fail("the file has no 3D element, and a 2D mesh must lie in one plane z = "
+                     "constant, but node " +
+          std::to_string(nodes.Tags[0]) + " has z = " + NumberText(z) + " and node " +
+          std::to_string(nodes.Tags[k]) + " z = " + NumberText(nodes.Coordinates[3 * k + 2]) +
           " (a 3D mesh saved with physical groups on surfaces only keeps no volume element: add "
           "a physical volume, or save with Mesh.SaveAll)");
       }
