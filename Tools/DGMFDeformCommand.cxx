@@ -108,9 +108,12 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
   }
   if (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0)
   {
-    std::cout << "; sub-steps " << CountValue(deformed, "SubStepsUsed") << ", bad cells found "
-              << CountValue(deformed, "RepairedCellCount") << ", left unrepaired "
-              << CountValue(deformed, "UnrepairedCellCount");
+    std::cout << "; sub-steps " << CountValue(deformed, "SubStepsUsed");
+  }
+  if (filter->GetRepairThreshold() > 0)
+  {
+    std::cout << ", bad cells found " << CountValue(deformed, "RepairedCellCount")
+              << ", left unrepaired " << CountValue(deformed, "UnrepairedCellCount");
   }
   std::cout << "; read " << times.Read << " s, written " << times.Write << " s";
   std::cout << (written.empty() ? std::string("; nothing written (--no-write)")

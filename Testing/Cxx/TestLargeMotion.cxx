@@ -88,6 +88,15 @@ TEST(LargeMotion, OneStepInvertsCellsAtNinetyDegrees)
   EXPECT_LT(Field(out60, "SizeSkewMinimum"), 0.2);
   // Off by default: no large-motion report in the field data.
   EXPECT_EQ(out90->GetFieldData()->GetArray("SubStepsUsed"), nullptr);
+  // Sub-steps without the guard: the steps, no guard's count (until 2026-11-30 fixed steps said
+  // 0 bad cells left with cells inverted, automatic ones the last step's inverted cells).
+  for (const int steps : { 0, 4 })
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> stepped = Rotate(slab, 120.0, steps, 0.0);
+    EXPECT_GE(Field(stepped, "SubStepsUsed"), 1.0) << steps;
+    EXPECT_EQ(stepped->GetFieldData()->GetArray("RepairedCellCount"), nullptr) << steps;
+    EXPECT_EQ(stepped->GetFieldData()->GetArray("UnrepairedCellCount"), nullptr) << steps;
+  }
 }
 
 TEST(LargeMotion, GuardGivesNoInvertedCellAndMinimumAboveThresholdAtNinetyDegrees)
