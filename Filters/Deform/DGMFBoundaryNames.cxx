@@ -456,12 +456,14 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       staticNamed.push_back(true);
     }
   }
+  std::vector<std::vector<std::size_t>> slipLeaves(selection.Slip.size());
   for (std::size_t k = 0; k < selection.Slip.size(); ++k)
   {
     for (std::size_t l : leavesOf(selection.Slip[k]))
     {
       choose(l, selection.Slip[k], "slip");
       mark(l, SlipRank, 0, static_cast<std::int32_t>(k));
+      slipLeaves[k].push_back(l);
     }
   }
   // Boundary blocks not chosen are static, but for the two planes of a one-cell-thick mesh.
@@ -487,6 +489,24 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   if (!shared.empty())
   {
     roles.Warnings.push_back(shared);
+  }
+  roles.MovingOnSlip.resize(selection.Slip.size());
+  for (std::size_t k = 0; k < slipLeaves.size(); ++k)
+  {
+    std::vector<std::int32_t>& moving = roles.MovingOnSlip[k];
+    for (std::size_t l : slipLeaves[k])
+    {
+      for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
+      {
+        const vtkIdType i = leaves[l].Node(point);
+        if (rank[static_cast<std::size_t>(i)] == MovingRank)
+        {
+          moving.push_back(static_cast<std::int32_t>(i));
+        }
+      }
+    }
+    std::sort(moving.begin(), moving.end());
+    moving.erase(std::unique(moving.begin(), moving.end()), moving.end());
   }
   roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());

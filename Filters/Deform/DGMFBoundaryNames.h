@@ -66,6 +66,9 @@ struct NodeRoles
   std::vector<std::uint8_t> Found;
   std::string BlockNames; ///< this piece's blocks, for the message of an entry found nowhere
   std::vector<std::string> Warnings; ///< for the user (moving nodes on static boundaries)
+  /// Per slip entry, the nodes of its blocks that are moving (the body's rim on a symmetry
+  /// plane): a motion out of the plane takes them off it (MovingNodesOffSlipPlanes).
+  std::vector<std::vector<std::int32_t>> MovingOnSlip;
 };
 
 /**

@@ -10,6 +10,7 @@
 #include "DGMFMeshConversion.h"
 
 #include "dgmf/ExtrudedLayers.h"
+#include "dgmf/NumberText.h"
 #include "dgmf/ResultNames.h"
 
 #include "vtkDoubleArray.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <new>
 #include <stdexcept>
 
@@ -78,6 +80,45 @@ vtkSmartPointer<vtkDoubleArray> Expanded(
   AllocateTuples(values, static_cast<vtkIdType>(layers.Layer.size()));
   dgmf::ExpandValuesFromLayer(layers, layerValues->GetPointer(0), values->GetPointer(0));
   return values;
+}
+
+/**
+ * A warning when the motion takes moving nodes that lie on a slip plane (the body's rim on a
+ * symmetry or wedge plane) off it: moving wins over slip, so the plane is no longer flat and the
+ * solver's check of it fails (a half model pitched about an axis across its symmetry plane). A
+ * node is off when its displacement across the plane is more than 1e-6 of the largest such
+ * node's displacement (in-plane motions leave only round-off). Empty when none is.
+ */
+std::string MovingNodesOffSlipPlanes(const InputNodes& nodes, const double* deformed)
+{
+  std::string said;
+  for (const InputNodes::MovingOnPlane& entry : nodes.MovingOnSlip)
+  {
+    const double* normal = nodes.Slip.Planes[static_cast<std::size_t>(entry.Plane)].Normal;
+    double largestMove = 0.0, largestAcross = 0.0;
+    std::vector<double> across;
+    for (const std::int32_t node : entry.Nodes)
+    {
+      const double* x = nodes.Points + 3 * static_cast<std::size_t>(node);
+      const double* y = deformed + 3 * static_cast<std::size_t>(node);
+      const double d[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+      largestMove = std::max(largestMove, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      across.push_back(std::abs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]));
+      largestAcross = std::max(largestAcross, across.back());
+    }
+    const auto off = std::count_if(
+      across.begin(), across.end(), [&](double distance) { return distance > 1e-6 * largestMove; });
+    if (off > 0)
+    {
+      said += (said.empty() ? "" : " ") + std::string("The motion takes ") + std::to_string(off) +
+        " nodes of the moving boundaries that lie on the slip boundary '" + entry.Name +
+        "' off its plane, by up to " + dgmf::NumberText(largestAcross) +
+        " (moving wins over slip): the plane is no longer flat, and a solver's check of a "
+        "symmetry or wedge plane fails. Move the body along the plane there, or make the boundary "
+        "static.";
+    }
+  }
+  return said;
 }
 } // namespace
 
@@ -194,6 +235,11 @@ CoreDeformation DeformThroughCore(const dgmf::DeformationMethod& method,
   if (extruded)
   {
     dgmf::ExpandFromLayer(layers, nodes.Points, layerDeformed.data(), deformed->GetPointer(0));
+  }
+  const std::string off = MovingNodesOffSlipPlanes(nodes, deformed->GetPointer(0));
+  if (!off.empty())
+  {
+    result.Report.Warnings.push_back(off);
   }
   return result;
 }

@@ -366,6 +366,11 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
     nodes.Slip.Planes.push_back(dgmf::FitSlipPlane(nodes.Points, groups[g].data(), groups[g].size(),
       names[g], dgmf::SlipPlaneTolerance, nodes.Dimension));
     const auto plane = static_cast<std::int32_t>(nodes.Slip.Planes.size() - 1);
+    if (options.Roles && g < options.Roles->MovingOnSlip.size() &&
+      !options.Roles->MovingOnSlip[g].empty())
+    {
+      nodes.MovingOnSlip.push_back({ plane, options.Roles->MovingOnSlip[g], names[g] });
+    }
     for (std::int32_t node : groups[g])
     {
       const auto [at, first] = listed.emplace(node, nodes.Slip.Nodes.size());

@@ -78,6 +78,15 @@ struct InputNodes
   /// planes are fitted to every piece's nodes once the pieces have met (AgreeOnSlipPlanes).
   std::vector<std::vector<std::int32_t>> SlipGroups;
   std::vector<std::string> SlipNames;
+  /// Per slip plane (an index into Slip.Planes) the moving nodes on its blocks, and its name
+  /// (serial runs with boundaries by name): MovingNodesOffSlipPlanes checks them after the motion.
+  struct MovingOnPlane
+  {
+    std::int32_t Plane;
+    std::vector<std::int32_t> Nodes;
+    std::string Name;
+  };
+  std::vector<MovingOnPlane> MovingOnSlip;
   dgmf::ExtrudedLayers Layers;       ///< the two layers of a one-cell-thick mesh, if it is one
   std::vector<std::string> Warnings; ///< for the user
   /// A composite input's boundary patches on the mesh's points (GatherOptions::Patches), or null.
