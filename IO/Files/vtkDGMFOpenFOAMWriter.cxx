@@ -111,10 +111,23 @@ void vtkDGMFOpenFOAMWriter::WriteData()
   {
     const std::vector<double> before = PointsOf(reference), after = PointsOf(deformed);
     const fs::path caseDirectory = of::CaseDirectoryOf(target);
-    this->LastWrittenFile = of::WriteDeformedPoints(of::CaseDirectoryOf(fs::path(source)),
-      caseDirectory, this->TimeDirectory ? this->TimeDirectory : "constant", before.data(),
-      after.data(), static_cast<std::size_t>(deformed->GetNumberOfPoints()))
-                              .string();
+    const std::string time = this->TimeDirectory ? this->TimeDirectory : "constant";
+    // A time's points already there (a mesh a solver moved, as a dynamic-mesh run writes) are
+    // replaced by the deformation of constant's mesh: said (silent until 2026-11-30).
+    std::error_code missing;
+    const fs::path timeMesh = caseDirectory / time / "polyMesh";
+    const bool replacing = time != "constant" &&
+      (fs::exists(timeMesh / "points", missing) || fs::exists(timeMesh / "points.gz", missing));
+    this->LastWrittenFile =
+      of::WriteDeformedPoints(of::CaseDirectoryOf(fs::path(source)), caseDirectory, time,
+        before.data(), after.data(), static_cast<std::size_t>(deformed->GetNumberOfPoints()))
+        .string();
+    if (replacing)
+    {
+      vtkWarningMacro(<< this->LastWrittenFile
+                      << " held points already (a mesh a solver moved?): they are replaced by the "
+                         "deformation of the mesh in constant, not of that time's.");
+    }
     if (target != caseDirectory && !fs::exists(target))
     {
       std::ofstream(target.string()).flush(); // the empty file ParaView opens a case with
