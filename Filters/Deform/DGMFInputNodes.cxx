@@ -222,7 +222,8 @@ void InputGatherer::Gather(
     throw std::invalid_argument(
       "The mesh has no 3D cell but its points do not all have the same z: 2D meshes must lie in a "
       "plane z = constant (up to 1e-6 of their extent in x and y). Turn a mesh in another plane "
-      "into one (ParaView's Transform filter).");
+      "into one (ParaView's Transform filter); a surface mesh (polygons on a curved or closed "
+      "surface) is no volume to deform.");
   }
   if (nodes.Dimension == 3 && options.OneCellThick != OneCellThickOff && !options.Distributed)
   {

@@ -211,7 +211,9 @@ int vtkDGMFDeformFilter::FillInputPortInformation(int port, vtkInformation* info
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  // Any data set reaches RequestData, which says what it takes (VTK's own check printed "is of
+  // type vtkPolyData, but a vtkUnstructuredGrid is required" once per pipeline pass instead).
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
@@ -283,7 +285,10 @@ int vtkDGMFDeformFilter::RequestData(
   const bool merged = compositeInput && compositeOutput;
   if (!merged && (!input || !output))
   {
-    vtkErrorMacro("The input must be a vtkUnstructuredGrid or a composite dataset of meshes.");
+    vtkErrorMacro("The input is a " << (inputObject ? inputObject->GetClassName() : "nothing")
+                                    << ": the filter deforms meshes given as a vtkUnstructuredGrid "
+                                       "or a composite dataset of them (ParaView's Append Datasets "
+                                       "makes a vtkUnstructuredGrid of any data set).");
     return 0;
   }
   if (!merged && !this->Internal->Boundaries.Empty())

@@ -15,6 +15,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -255,6 +256,28 @@ TEST(BadInput, PlanarMeshOffZeroAndTiltedMesh)
   FilterRun tilted;
   EXPECT_EQ(tilted.Execute(mesh)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(FilterRun::Has(tilted.Errors, "plane z = constant"));
+  EXPECT_TRUE(FilterRun::Has(tilted.Errors, "a surface mesh"));
+}
+
+TEST(BadInput, AnotherKindOfDataSetIsSaidByName)
+{
+  // A vtkPolyData (a surface from pvpython's Sphere()): one error naming it and what is taken
+  // (until 2026-11-30 VTK's "is of type vtkPolyData, but a vtkUnstructuredGrid is required", seven
+  // times per update, and nothing from the filter).
+  vtkNew<vtkPolyData> surface;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 1);
+  surface->SetPoints(points);
+  FilterRun run;
+  run.Filter->SetInputData(surface);
+  run.Filter->Update();
+  ASSERT_EQ(run.Errors.size(), 1u);
+  EXPECT_TRUE(FilterRun::Has(run.Errors,
+    "The input is a vtkPolyData: the filter deforms meshes "
+    "given as a vtkUnstructuredGrid"));
+  EXPECT_EQ(vtkPolyData::SafeDownCast(run.Filter->GetOutputDataObject(0))->GetNumberOfPoints(), 0);
 }
 
 TEST(BadInput, CoincidentBoundaryNodes)
