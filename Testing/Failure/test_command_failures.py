@@ -371,7 +371,7 @@ class CommandFailures(unittest.TestCase):
         code, out, err = run(self.circle, self.path("steps.vtu"), "--rotate", 0, 0, 30,
                              "--sub-steps", 300)
         self.assertEqual(code, 0, err)
-        self.assertIn("sub-steps 300,", out)
+        self.assertIn("sub-steps 300;", out)  # the guard's counts only with the guard
 
     # Cells the metric does not cover: "no cell evaluated", not "minimum 0"; NaN in the file.
     def test_no_cell_evaluated(self):
