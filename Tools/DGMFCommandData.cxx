@@ -157,7 +157,7 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path)
 }
 
 std::vector<std::string> ExpandPatchGroups(
-  const std::string& path, const std::vector<std::string>& names, bool separate)
+  const std::string& path, const std::vector<std::string>& names)
 {
   std::vector<dgmf::openfoam::PatchEntry> patches;
   try
@@ -178,17 +178,10 @@ std::vector<std::string> ExpandPatchGroups(
     {
       if (!patch && std::find(entry.Groups.begin(), entry.Groups.end(), name) != entry.Groups.end())
       {
-        if (separate)
-        {
-          expanded.push_back(entry.Name);
-        }
         members += (members.empty() ? "" : "|") + entry.Name;
       }
     }
-    if (!separate || members.empty())
-    {
-      expanded.push_back(members.empty() ? name : members);
-    }
+    expanded.push_back(members.empty() ? name : members);
   }
   return expanded;
 }

@@ -37,12 +37,10 @@ std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks);
 /**
  * `names` with each OpenFOAM patch group of the case at `path` (a name no patch has, in some
  * patches' `inGroups`: "wall", "motorBikeGroup") made the alternatives of its patches
- * ("wing|flap"): one boundary, one body, as the filter reads such an entry. With `separate`
- * (slip planes: a group such as "wedge" or "symmetryPlane" holds several planes) each patch of a
- * group is an entry of its own instead. Other names as given.
+ * ("wing|flap"): one boundary, one body, as the filter reads such an entry. Other names as given.
  */
 std::vector<std::string> ExpandPatchGroups(
-  const std::string& path, const std::vector<std::string>& names, bool separate = false);
+  const std::string& path, const std::vector<std::string>& names);
 
 /// True for a .vtu file name (in any case).
 bool IsVTUFileName(const std::string& path);

@@ -156,7 +156,8 @@ std::string Usage()
     "usage: dgmf-deform INPUT OUTPUT.vtu [options]\n"
     "       dgmf-deform CASE_DIR OUT_CASE_DIR --moving NAME[,NAME...] [options]\n"
     "       dgmf-deform MESH_FILE OUTPUT --moving NAME[,NAME...] [options]\n"
-    "       (the options may also come before or between the files)\n"
+    "       (the options may also come before or between the files; after --, every argument\n"
+    "       is a file, even one whose name starts with -)\n"
     "  INPUT                   .vtu or .vtk unstructured grid\n"
     "  MESH_FILE               a solver's mesh with boundary names: gmsh .msh, SU2 .su2,\n"
     "                          Exodus II .exo/.e/.ex2, CGNS .cgns; OUTPUT: .vtu, .vtk, or the\n"
@@ -240,6 +241,11 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       files.emplace_back(argv[i]);
       continue;
+    }
+    if (std::strcmp(argv[i], "--") == 0) // the end of the options: files named "-..." follow
+    {
+      files.insert(files.end(), argv + i + 1, argv + argc);
+      break;
     }
     const std::string option = argv[i];
     double v[3];

@@ -459,8 +459,8 @@ int main(int argc, char* argv[])
     filter->SetInputConnection(reader->GetOutputPort());
     if (kind == InputKind::OpenFOAMCase)
     {
-      // A patch group ("wall", "motorBikeGroup") is one boundary of its patches; but for slip,
-      // each patch of a group ("wedge": front and back) is a plane of its own.
+      // A patch group ("wall", "motorBikeGroup") is one boundary of its patches (a slip group
+      // whose patches are not one plane, as "wedge", is a plane per patch: FitSlipPlanes).
       filter->RemoveAllMovingBoundaries();
       filter->RemoveAllStaticBoundaries();
       filter->RemoveAllSlipBoundaries();
@@ -472,7 +472,7 @@ int main(int argc, char* argv[])
       {
         filter->AddStaticBoundary(name.c_str());
       }
-      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip, true))
+      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip))
       {
         filter->AddSlipBoundary(name.c_str());
       }

@@ -157,6 +157,12 @@ vtkIdType GhostVolumeCellsOfAPatch(
   return faces ? volumeGhosts : 0;
 }
 
+/// A block's name, or "(block N)" (its flat index) when it has none.
+std::string LabelOf(const CompositeMesh::Leaf& leaf)
+{
+  return leaf.Name.empty() ? "(block " + std::to_string(leaf.FlatIndex) + ")" : leaf.Name;
+}
+
 /**
  * A warning when nodes of the moving boundaries also lie on static blocks (`staticLeaves`; named
  * says whether each was chosen as static or is static for not being named): such nodes move with
@@ -179,7 +185,7 @@ std::string MovingNodesOnStaticBlocks(const std::vector<CompositeMesh::Leaf>& le
     }
     if (shared > 0 && ++blocks <= 5)
     {
-      listed += std::string(listed.empty() ? "" : ", ") + "'" + leaf.Name + "' (" +
+      listed += std::string(listed.empty() ? "" : ", ") + "'" + LabelOf(leaf) + "' (" +
         std::to_string(shared) + (named[k] ? "" : ", static for not being named") + ")";
     }
   }
@@ -192,6 +198,49 @@ std::string MovingNodesOnStaticBlocks(const std::vector<CompositeMesh::Leaf>& le
     ". They move with the body, so the static boundary's faces around them stretch or shear "
     "(a wedge, symmetry or cyclic patch, a ground plane: the solver's mesh check may fail). Name "
     "a plane the body slides along as a slip boundary; check the result otherwise.";
+}
+
+/**
+ * Fills roles.MovingOnSlip (per slip entry, the moving nodes of its blocks) and roles.SlipBlocks
+ * (per entry of several blocks, each block's slip and moving nodes), from the entries' blocks
+ * `slipLeaves`, the nodes' ranks and roles.Kinds.
+ */
+void AddSlipBlocks(const std::vector<CompositeMesh::Leaf>& leaves,
+  const std::vector<std::vector<std::size_t>>& slipLeaves, const std::vector<std::uint8_t>& rank,
+  NodeRoles& roles)
+{
+  const auto nodesOf = [&](std::size_t l, bool moving)
+  {
+    std::vector<std::int32_t> found;
+    for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
+    {
+      const auto i = static_cast<std::size_t>(leaves[l].Node(point));
+      if (moving ? rank[i] == MovingRank : roles.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+      {
+        found.push_back(static_cast<std::int32_t>(i));
+      }
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  };
+  roles.MovingOnSlip.resize(slipLeaves.size());
+  roles.SlipBlocks.resize(slipLeaves.size());
+  for (std::size_t k = 0; k < slipLeaves.size(); ++k)
+  {
+    std::vector<std::int32_t>& moving = roles.MovingOnSlip[k];
+    for (std::size_t l : slipLeaves[k])
+    {
+      const std::vector<std::int32_t> more = nodesOf(l, true);
+      moving.insert(moving.end(), more.begin(), more.end());
+      if (slipLeaves[k].size() > 1)
+      {
+        roles.SlipBlocks[k].push_back({ LabelOf(leaves[l]), nodesOf(l, false), more });
+      }
+    }
+    std::sort(moving.begin(), moving.end());
+    moving.erase(std::unique(moving.begin(), moving.end()), moving.end());
+  }
 }
 } // namespace
 
@@ -214,8 +263,7 @@ std::string ListBlockNames(const CompositeMesh& mesh)
   std::string names;
   for (const CompositeMesh::Leaf& leaf : mesh.GetLeaves())
   {
-    names += (names.empty() ? "" : ", ") +
-      (leaf.Name.empty() ? "(block " + std::to_string(leaf.FlatIndex) + ")" : leaf.Name);
+    names += (names.empty() ? "" : ", ") + LabelOf(leaf);
   }
   return names;
 }
@@ -431,8 +479,8 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     const std::string by = "'" + entry + "' as " + role;
     if (!chosenBy[l].empty())
     {
-      throw std::invalid_argument("The block '" + leaves[l].Name + "' is named by two entries (" +
-        chosenBy[l] + " and " + by + "): name each boundary once.");
+      throw std::invalid_argument("The block '" + LabelOf(leaves[l]) +
+        "' is named by two entries (" + chosenBy[l] + " and " + by + "): name each boundary once.");
     }
     chosenBy[l] = by;
   };
@@ -479,8 +527,11 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     if (!inPlane)
     {
       mark(l, StaticRank, 0, -1);
-      staticLeaves.push_back(l);
-      staticNamed.push_back(false);
+      if (leaves[l].CellDimension > 0) // (a node set on the body shears nothing)
+      {
+        staticLeaves.push_back(l);
+        staticNamed.push_back(false);
+      }
     }
   }
 
@@ -489,24 +540,6 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   if (!shared.empty())
   {
     roles.Warnings.push_back(shared);
-  }
-  roles.MovingOnSlip.resize(selection.Slip.size());
-  for (std::size_t k = 0; k < slipLeaves.size(); ++k)
-  {
-    std::vector<std::int32_t>& moving = roles.MovingOnSlip[k];
-    for (std::size_t l : slipLeaves[k])
-    {
-      for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
-      {
-        const vtkIdType i = leaves[l].Node(point);
-        if (rank[static_cast<std::size_t>(i)] == MovingRank)
-        {
-          moving.push_back(static_cast<std::int32_t>(i));
-        }
-      }
-    }
-    std::sort(moving.begin(), moving.end());
-    moving.erase(std::unique(moving.begin(), moving.end()), moving.end());
   }
   roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());
@@ -545,6 +578,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       }
     }
   }
+  AddSlipBlocks(leaves, slipLeaves, rank, roles);
   if (selection.Moving.size() > 1)
   {
     roles.BodyIds = std::move(body);

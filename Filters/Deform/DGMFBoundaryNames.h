@@ -69,6 +69,16 @@ struct NodeRoles
   /// Per slip entry, the nodes of its blocks that are moving (the body's rim on a symmetry
   /// plane): a motion out of the plane takes them off it (MovingNodesOffSlipPlanes).
   std::vector<std::vector<std::int32_t>> MovingOnSlip;
+  /// One block of a slip entry of several: its name, its slip nodes and its moving nodes.
+  struct SlipBlock
+  {
+    std::string Name;
+    std::vector<std::int32_t> Slip, Moving;
+  };
+  /// Per slip entry of several blocks (alternatives, a wildcard, an OpenFOAM patch group such as
+  /// "wedge"), its blocks; empty for an entry of one block. Such an entry is one plane when its
+  /// nodes fit one (a plane cut into patches), else a plane per block (FitSlipPlanes).
+  std::vector<std::vector<SlipBlock>> SlipBlocks;
 };
 
 /**

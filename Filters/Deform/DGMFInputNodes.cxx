@@ -1,5 +1,7 @@
 #include "DGMFInputNodes.h"
 
+#include "DGMFSlipFitting.h"
+
 #include "DGMFBoundaryNodes.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
@@ -356,39 +358,7 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
     nodes.SlipNames = std::move(names);
     return;
   }
-  // A node in two groups (the line where two planes meet) is one slip node with two planes.
-  std::unordered_map<std::int32_t, std::size_t> listed;
-  for (std::size_t g = 0; g < groups.size(); ++g)
-  {
-    if (groups[g].empty())
-    {
-      continue;
-    }
-    nodes.Slip.Planes.push_back(dgmf::FitSlipPlane(nodes.Points, groups[g].data(), groups[g].size(),
-      names[g], dgmf::SlipPlaneTolerance, nodes.Dimension));
-    const auto plane = static_cast<std::int32_t>(nodes.Slip.Planes.size() - 1);
-    if (options.Roles && g < options.Roles->MovingOnSlip.size() &&
-      !options.Roles->MovingOnSlip[g].empty())
-    {
-      nodes.MovingOnSlip.push_back({ plane, options.Roles->MovingOnSlip[g], names[g] });
-    }
-    for (std::int32_t node : groups[g])
-    {
-      const auto [at, first] = listed.emplace(node, nodes.Slip.Nodes.size());
-      if (!first)
-      {
-        nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
-        nodes.Slip.SecondPlanes[at->second] = plane;
-        continue;
-      }
-      nodes.Slip.Nodes.push_back(node);
-      nodes.Slip.NodePlanes.push_back(plane);
-    }
-  }
-  if (!nodes.Slip.SecondPlanes.empty())
-  {
-    nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
-  }
+  FitSlipPlanes(groups, names, options.Roles, nodes);
 }
 
 std::vector<std::uint8_t> InputGatherer::FlagMeshBoundary(

@@ -125,8 +125,9 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     if (replacing)
     {
       vtkWarningMacro(<< this->LastWrittenFile
-                      << " held points already (a mesh a solver moved?): they are replaced by the "
-                         "deformation of the mesh in constant, not of that time's.");
+                      << " held points already (a mesh a solver moved, or an earlier run's): they "
+                         "are replaced by the deformation of the mesh in constant, not of that "
+                         "time's.");
     }
     if (target != caseDirectory && !fs::exists(target))
     {

@@ -214,3 +214,43 @@ TEST(BoundaryNames, AMotionTakingMovingNodesOffASlipPlaneIsSaid)
     EXPECT_EQ(warnings.Contains("off its plane"), across > 0.0) << across;
   }
 }
+
+TEST(BoundaryNames, ASlipEntryOfSeveralPlanesIsAPlaneEach)
+{
+  // One slip entry naming several blocks that are not one plane ("ymin|ymax": parallel sides;
+  // "ymin|zmin": two sides meeting along an edge, as a wedge's planes on its axis; an OpenFOAM
+  // patch group such as "wedge" or "symmetryPlane" is such an entry) is a plane per block: the
+  // bits of the blocks named one by one (until 2026-11-30 "The slip boundary ... is not planar").
+  const int n = 6;
+  const auto deform = [n](const std::vector<std::string>& slip)
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+    filter->AddMovingBoundary("xmin");
+    for (const std::string& name : slip)
+    {
+      filter->AddSlipBoundary(name.c_str());
+    }
+    filter->SetTranslation(0.3, 0.0, 0.0);
+    filter->SetRotationAngles(3.0, 0.0, 0.0);
+    filter->Update();
+    std::vector<double> xyz;
+    if (vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0)))
+    {
+      auto* data = vtkDataArray::SafeDownCast(volume->GetPoints()->GetData());
+      for (vtkIdType i = 0; i < data->GetNumberOfValues(); ++i)
+      {
+        xyz.push_back(data->GetComponent(i / 3, static_cast<int>(i % 3)));
+      }
+    }
+    return xyz;
+  };
+  for (const auto& [together, apart] :
+    { std::pair<std::string, std::vector<std::string>>{ "ymin|ymax", { "ymin", "ymax" } },
+      std::pair<std::string, std::vector<std::string>>{ "ymin|zmin", { "ymin", "zmin" } } })
+  {
+    const std::vector<double> one = deform({ together }), each = deform(apart);
+    ASSERT_EQ(one.size(), std::size_t(3 * (n + 1) * (n + 1) * (n + 1))) << together;
+    EXPECT_EQ(one, each) << together;
+  }
+}

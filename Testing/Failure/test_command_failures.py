@@ -282,6 +282,14 @@ class CommandFailures(unittest.TestCase):
         code, out, err = run(self.circle, "--rotate", 0, 0, 10)
         self.assertEqual(code, 2, err)
         self.assertIn("missing files: expected INPUT and OUTPUT, got 1", err)
+        # A file whose name starts with "-" after "--" (the end of the options).
+        dashed = os.path.join(os.path.dirname(middle), "-dashed.vtu")
+        shutil.copyfile(self.circle, dashed)
+        done = subprocess.run([ARGS.deform, "--rotate", "0", "0", "10", "--threads", "1", "--",
+                               "-dashed.vtu", "-out.vtu"], cwd=os.path.dirname(dashed),
+                              capture_output=True, text=True, timeout=600)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertEqual(digest(first), digest(os.path.join(os.path.dirname(dashed), "-out.vtu")))
         code, out, err = run(self.circle, self.path("o.vtu"), "--rotate", 0, 0, "720.0000001")
         self.assertEqual(code, 1, err)
         self.assertIn("(got 720.0000001)", err)

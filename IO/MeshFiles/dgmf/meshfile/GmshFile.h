@@ -39,10 +39,10 @@ namespace meshfile
  * gmsh's own order after reading a version 2 file follows its classification of the nodes, not
  * the file), NodeIds their tags, each node once (getNodes of the whole model without
  * includeBoundary, which would repeat the nodes of shared entity boundaries). A 2D mesh (no 3D
- * element) must lie in the plane z = 0. A version 2 file lists an element once per physical group
- * of its entity and gmsh keeps each copy: those are read once. Prisms are read with each triangle
- * reversed (gmsh's corner order turns the other way round from VTK's documented wedge); the other
- * types have VTK's order. Throws FileError naming the file.
+ * element) must lie in one plane z = constant. A version 2 file lists an element once per physical
+ * group of its entity and gmsh keeps each copy: those are read once. Prisms are read with each
+ * triangle reversed (gmsh's corner order turns the other way round from VTK's documented wedge);
+ * the other types have VTK's order. Throws FileError naming the file.
  *
  * Files of version 4.1 (what gmsh writes by default) and 2.2 (the legacy format), ASCII or binary,
  * are read without gmsh's library into the same mesh (ReadMsh41, MshReader41.h; ReadMsh22,

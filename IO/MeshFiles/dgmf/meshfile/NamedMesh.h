@@ -70,8 +70,8 @@ struct NamedBoundary
 /// A mesh read from a file.
 struct NamedMesh
 {
-  int Dimension = 3;          ///< 2 (all nodes at z = 0 in the file) or 3
-  std::vector<double> Points; ///< 3 coordinates per node, in the file's order (2D: z = 0)
+  int Dimension = 3;          ///< 2 (all nodes at one z in the file; z = 0 but for gmsh) or 3
+  std::vector<double> Points; ///< 3 coordinates per node, in the file's order
   /// The file's own id of each node (gmsh node tags; SU2: the index), same order as Points.
   std::vector<std::int64_t> NodeIds;
   Cells Volume; ///< the cells of the mesh's dimension (all of them, named or not)

@@ -145,9 +145,11 @@ void CopyCase(const fs::path& source, const fs::path& target)
   }
   // A target inside the case would be copied into itself, again and again (until 2026-11-30 a
   // 0.4 MB case grew to 190 MB of nested copies before the names got too long).
-  const fs::path from = fs::weakly_canonical(source, error);
-  const fs::path to = fs::weakly_canonical(target, error);
-  if (!error && std::mismatch(from.begin(), from.end(), to.begin(), to.end()).first == from.end())
+  std::error_code fromError, toError;
+  const fs::path from = fs::weakly_canonical(source, fromError);
+  const fs::path to = fs::weakly_canonical(target, toError);
+  if (!fromError && !toError && !from.empty() &&
+    std::mismatch(from.begin(), from.end(), to.begin(), to.end()).first == from.end())
   {
     throw std::runtime_error(Quoted(target) + " is inside the case " + Quoted(source) +
       ", which would be copied into it: give a directory outside the case");
