@@ -3,6 +3,7 @@
 #include "DGMFCommandData.h"
 
 #include "dgmf/meshfile/MeshFileFormat.h"
+#include "dgmf/openfoam/CaseDirectory.h"
 
 #include "vtkDGMFDeformFilter.h"
 
@@ -32,6 +33,15 @@ InputKind KindOf(const std::string& input)
 
 std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output)
 {
+  if (kind == InputKind::OpenFOAMCase && !IsMeshFileName(output) && !IsOpenFOAMCase(output))
+  {
+    // Said before the work (the writer refuses it too, before copying anything).
+    const std::filesystem::path source = dgmf::openfoam::CaseDirectoryOf(input);
+    return dgmf::openfoam::IsInside(source, output)
+      ? "the output '" + output + "' is inside the case '" + source.string() +
+        "', which would be copied into it: give a directory outside the case"
+      : "";
+  }
   if (IsMeshFileName(output) || kind == InputKind::OpenFOAMCase)
   {
     return "";

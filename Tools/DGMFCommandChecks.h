@@ -27,7 +27,8 @@ enum class InputKind
 InputKind KindOf(const std::string& input);
 
 /// Why `output` cannot be written from `input` ("" when it can): .vtu and .vtk always; the
-/// solver's file back in its own format; an OpenFOAM case back into a case.
+/// solver's file back in its own format; an OpenFOAM case back into a case, but not into a new
+/// directory inside it (it would be copied into itself).
 std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output);
 
 /**

@@ -131,6 +131,19 @@ std::vector<std::string> ReadPatchNames(const fs::path& caseDirectory)
   return names;
 }
 
+bool IsInside(const fs::path& directory, const fs::path& path)
+{
+  std::error_code directoryError, pathError;
+  const fs::path outer = fs::weakly_canonical(directory, directoryError);
+  const fs::path inner = fs::weakly_canonical(path, pathError);
+  if (directoryError || pathError || outer.empty())
+  {
+    return false;
+  }
+  const auto [end, rest] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return end == outer.end() && rest != inner.end() && !rest->empty();
+}
+
 void CopyCase(const fs::path& source, const fs::path& target)
 {
   if (!IsCase(source))
@@ -145,11 +158,7 @@ void CopyCase(const fs::path& source, const fs::path& target)
   }
   // A target inside the case would be copied into itself, again and again (until 2026-11-30 a
   // 0.4 MB case grew to 190 MB of nested copies before the names got too long).
-  std::error_code fromError, toError;
-  const fs::path from = fs::weakly_canonical(source, fromError);
-  const fs::path to = fs::weakly_canonical(target, toError);
-  if (!fromError && !toError && !from.empty() &&
-    std::mismatch(from.begin(), from.end(), to.begin(), to.end()).first == from.end())
+  if (IsInside(source, target))
   {
     throw std::runtime_error(Quoted(target) + " is inside the case " + Quoted(source) +
       ", which would be copied into it: give a directory outside the case");

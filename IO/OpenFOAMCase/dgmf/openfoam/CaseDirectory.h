@@ -25,6 +25,10 @@ bool IsCase(const std::filesystem::path& directory);
  */
 std::filesystem::path CaseDirectoryOf(const std::filesystem::path& path);
 
+/// True when `path` lies strictly inside `directory` (both made absolute, with the symbolic links
+/// of their existing parts resolved); false when either cannot be resolved.
+bool IsInside(const std::filesystem::path& directory, const std::filesystem::path& path);
+
 /// True for "constant" and for an OpenFOAM time name (a number such as "0", "1", "0.05").
 bool IsTimeName(const std::string& time);
 
