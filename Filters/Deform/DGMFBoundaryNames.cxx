@@ -431,35 +431,17 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     }
     return found;
   };
-  // Per node: its role's rank, and only where there are several bodies or slip entries, its body
-  // and its slip entry (the arrays are as large as the merged mesh: not made for nothing).
+  // Per node: its role's rank, and only where there are several bodies, its body (the arrays are
+  // as large as the merged mesh: not made for nothing).
   // Large arrays on huge pages (a 4 KiB page fault is costly on virtual machines: speed.md).
   std::vector<std::uint8_t> rank;
   dgmf::AssignOnHugePages(rank, n, std::uint8_t(None));
   std::vector<std::int32_t> body(selection.Moving.size() > 1 ? n : 0, 0);
-  // The slip entry of a node (-2 on three planes or more), and its second one on two planes.
-  std::vector<std::int32_t> slipEntry(selection.Slip.empty() ? 0 : n, -1);
-  std::vector<std::int32_t> slipSecond(selection.Slip.empty() ? 0 : n, -1);
-  const auto mark = [&](std::size_t l, int role, std::int32_t bodyId, std::int32_t entry)
+  const auto mark = [&](std::size_t l, int role, std::int32_t bodyId)
   {
     for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
     {
       const auto i = static_cast<std::size_t>(leaves[l].Node(point));
-      if (role == SlipRank)
-      {
-        if (slipEntry[i] == -1 || slipEntry[i] == entry)
-        {
-          slipEntry[i] = entry;
-        }
-        else if (slipEntry[i] >= 0 && (slipSecond[i] == -1 || slipSecond[i] == entry))
-        {
-          slipSecond[i] = entry;
-        }
-        else
-        {
-          slipEntry[i] = -2;
-        }
-      }
       if (role > rank[i] ||
         (role == MovingRank && rank[i] == MovingRank && !body.empty() && body[i] == 0))
       {
@@ -489,7 +471,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     for (std::size_t l : leavesOf(selection.Moving[k]))
     {
       choose(l, selection.Moving[k], "moving");
-      mark(l, MovingRank, static_cast<std::int32_t>(k + 1), -1);
+      mark(l, MovingRank, static_cast<std::int32_t>(k + 1));
     }
   }
   std::vector<std::size_t> staticLeaves; // for the warning of moving nodes on them
@@ -499,7 +481,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     for (std::size_t l : leavesOf(entry))
     {
       choose(l, entry, "static");
-      mark(l, StaticRank, 0, -1);
+      mark(l, StaticRank, 0);
       staticLeaves.push_back(l);
       staticNamed.push_back(true);
     }
@@ -510,7 +492,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     for (std::size_t l : leavesOf(selection.Slip[k]))
     {
       choose(l, selection.Slip[k], "slip");
-      mark(l, SlipRank, 0, static_cast<std::int32_t>(k));
+      mark(l, SlipRank, 0);
       slipLeaves[k].push_back(l);
     }
   }
@@ -526,7 +508,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     const bool inPlane = layers.Found() && InLayerPlanes(mesh, leaves[l], xyz, layers);
     if (!inPlane)
     {
-      mark(l, StaticRank, 0, -1);
+      mark(l, StaticRank, 0);
       if (leaves[l].CellDimension > 0) // (a node set on the body shears nothing)
       {
         staticLeaves.push_back(l);
@@ -544,7 +526,6 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   roles.Kinds.resize(n); // every kind written below, on the threads
   roles.SlipNodes.resize(selection.Slip.size());
   roles.SlipNames = selection.Slip;
-  const bool lines = dimension == 3 && !layers.Found();
   const auto kindOf = [&](std::size_t i)
   {
     switch (rank[i])
@@ -554,29 +535,32 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       case StaticRank:
         return dgmf::NodeKind::StaticBoundary;
       case SlipRank:
-        // On two planes of a 3D mesh a node slides along their line; on three (a corner), or on
-        // two lines of a 2D mesh (or of a one-cell-thick one), it cannot move: static.
-        return slipEntry[i] == -2 || (slipSecond[i] >= 0 && !lines) ? dgmf::NodeKind::StaticBoundary
-                                                                    : dgmf::NodeKind::SlipBoundary;
+        // On several planes: a line, or static (FitSlipPlanes, once the planes are known: two
+        // patches of one plane are one plane).
+        return dgmf::NodeKind::SlipBoundary;
       default:
         return dgmf::NodeKind::Interior;
     }
   };
   dgmf::ForEachIndex(MakeSMPParallelFor(), n, std::size_t(1) << 16,
     [&](std::size_t i) { roles.Kinds[i] = kindOf(i); });
-  for (std::size_t i = 0; i < (selection.Slip.empty() ? 0 : n); ++i)
+  // Each entry's slip nodes (a node on several entries' planes is in each).
+  for (std::size_t k = 0; k < slipLeaves.size(); ++k)
   {
-    if (roles.Kinds[i] == dgmf::NodeKind::SlipBoundary)
+    std::vector<std::int32_t>& slipNodes = roles.SlipNodes[k];
+    for (std::size_t l : slipLeaves[k])
     {
-      // A node of a line is in both planes' fits (the gathering gives it both planes).
-      for (const std::int32_t entry : { slipEntry[i], slipSecond[i] })
+      for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
       {
-        if (entry >= 0)
+        const vtkIdType i = leaves[l].Node(point);
+        if (rank[static_cast<std::size_t>(i)] == SlipRank)
         {
-          roles.SlipNodes[static_cast<std::size_t>(entry)].push_back(static_cast<std::int32_t>(i));
+          slipNodes.push_back(static_cast<std::int32_t>(i));
         }
       }
     }
+    std::sort(slipNodes.begin(), slipNodes.end());
+    slipNodes.erase(std::unique(slipNodes.begin(), slipNodes.end()), slipNodes.end());
   }
   AddSlipBlocks(leaves, slipLeaves, rank, roles);
   if (selection.Moving.size() > 1)

@@ -84,13 +84,15 @@ struct NodeRoles
 /**
  * The roles of `mesh`'s merged nodes. A node's role comes from the blocks that contain it: a
  * moving block (the first one listed wins between two bodies), over a static one, over a slip
- * one; a node on two slip blocks is static. Boundary blocks that are not selected (blocks whose
- * cells are of a lower dimension than the mesh's: OpenFOAM patches, side sets) are static, except
- * the two planes of a one-cell-thick mesh (`layers`, if Found()), which are not boundaries.
- * Throws std::invalid_argument for an entry that matches no block; the message lists the names
- * of the input's blocks. With `piece` (one piece of a distributed mesh), an entry that matches no
- * block of the piece is not an error here: `Found` says which did (AgreeOnNamedBoundaries), and
- * `meshDimension` (> 0) is the whole mesh's dimension (a piece may hold only patches).
+ * one; the slip nodes of each slip entry are listed (a node on several entries' planes in each:
+ * FitSlipPlanes makes it a line's or a static node once the planes are fitted). Boundary blocks
+ * that are not selected (blocks whose cells are of a lower dimension than the mesh's: OpenFOAM
+ * patches, side sets) are static, except the two planes of a one-cell-thick mesh (`layers`, if
+ * Found()), which are not boundaries. Throws std::invalid_argument for an entry that matches no
+ * block; the message lists the names of the input's blocks. With `piece` (one piece of a
+ * distributed mesh), an entry that matches no block of the piece is not an error here: `Found` says
+ * which did (AgreeOnNamedBoundaries), and `meshDimension` (> 0) is the whole mesh's dimension (a
+ * piece may hold only patches).
  */
 NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& selection,
   const dgmf::ExtrudedLayers& layers, bool piece = false, int meshDimension = 0);

@@ -94,6 +94,25 @@ std::string AgreeOnSlipPlanes(vtkMultiProcessController* controller, InputNodes&
     nodes.Slip = dgmf::SlipConstraint();
     return error.empty() ? "A slip boundary is not a plane (said on another process)." : error;
   }
+  // Per position, its distinct planes (two entries of one plane, a plane cut into patches named
+  // apart, are one: dgmf::SamePlane), as the serial FitSlipPlanes counts them.
+  for (auto& [position, at] : entriesAt)
+  {
+    std::vector<std::size_t> distinct;
+    for (const std::size_t g : at)
+    {
+      const dgmf::SlipPlane& plane = nodes.Slip.Planes[static_cast<std::size_t>(planeOf[g])];
+      if (std::none_of(distinct.begin(), distinct.end(),
+            [&](std::size_t d) {
+              return dgmf::SamePlane(
+                nodes.Slip.Planes[static_cast<std::size_t>(planeOf[d])], plane);
+            }))
+      {
+        distinct.push_back(g);
+      }
+    }
+    at = std::move(distinct);
+  }
   // On three planes, or on two lines of a 2D mesh, a node cannot move (the serial rule; a piece
   // may know only one of its planes): static, in this piece and in the other pieces' copies
   // alike (a static node is a vertex of the graph every process builds).

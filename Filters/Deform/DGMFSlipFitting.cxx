@@ -29,9 +29,10 @@ void FitSlipPlanes(const std::vector<std::vector<std::int32_t>>& groups,
       nodes.Points, ids.data(), ids.size(), name, dgmf::SlipPlaneTolerance, nodes.Dimension);
   };
   static const std::vector<std::int32_t> none;
-  // A node in two planes (the line where two planes meet) is one slip node with two planes.
-  std::unordered_map<std::int32_t, std::size_t> listed;
-  std::vector<int> planesOfNode;
+  // The planes of every slip node, in the order the nodes first come.
+  std::unordered_map<std::int32_t, std::size_t> slot;
+  std::vector<std::int32_t> order;
+  std::vector<std::vector<std::int32_t>> planesOf;
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     if (groups[g].empty())
@@ -71,46 +72,48 @@ void FitSlipPlanes(const std::vector<std::vector<std::int32_t>>& groups,
       }
       for (std::int32_t node : *fitted.Nodes)
       {
-        const auto [at, first] = listed.emplace(node, nodes.Slip.Nodes.size());
-        if (!first)
+        const auto [at, first] = slot.emplace(node, order.size());
+        if (first)
         {
-          nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
-          nodes.Slip.SecondPlanes[at->second] = plane;
-          ++planesOfNode[at->second];
-          continue;
+          order.push_back(node);
+          planesOf.emplace_back();
         }
-        nodes.Slip.Nodes.push_back(node);
-        nodes.Slip.NodePlanes.push_back(plane);
-        planesOfNode.push_back(1);
+        planesOf[at->second].push_back(plane);
       }
     }
   }
-  if (!nodes.Slip.SecondPlanes.empty())
+  // Each node on its distinct planes (two patches of one plane are one): one, it slides in it;
+  // two, along their line (two lines of a 2D mesh: a point, static; a one-cell-thick mesh's
+  // layer makes such a node static too); three or more (a corner), static.
+  std::vector<std::int32_t> seconds;
+  bool anySecond = false;
+  for (std::size_t k = 0; k < order.size(); ++k)
   {
-    nodes.Slip.SecondPlanes.resize(nodes.Slip.Nodes.size(), -1);
-  }
-  // On three planes or more (a corner where a group's planes meet): static. (Nodes on three
-  // entries were made static with the roles already.)
-  if (std::find_if(planesOfNode.begin(), planesOfNode.end(), [](int p) { return p > 2; }) ==
-    planesOfNode.end())
-  {
-    return;
-  }
-  dgmf::SlipConstraint kept;
-  kept.Planes = nodes.Slip.Planes;
-  for (std::size_t k = 0; k < nodes.Slip.Nodes.size(); ++k)
-  {
-    const std::int32_t node = nodes.Slip.Nodes[k];
-    if (planesOfNode[k] > 2)
+    std::vector<std::int32_t> distinct;
+    for (const std::int32_t plane : planesOf[k])
     {
-      nodes.Kinds[static_cast<std::size_t>(node)] = dgmf::NodeKind::StaticBoundary;
+      const dgmf::SlipPlane& p = nodes.Slip.Planes[static_cast<std::size_t>(plane)];
+      if (std::none_of(distinct.begin(), distinct.end(),
+            [&](std::int32_t d)
+            { return dgmf::SamePlane(nodes.Slip.Planes[static_cast<std::size_t>(d)], p); }))
+      {
+        distinct.push_back(plane);
+      }
+    }
+    if (distinct.size() >= 3 || (distinct.size() == 2 && nodes.Dimension == 2))
+    {
+      nodes.Kinds[static_cast<std::size_t>(order[k])] = dgmf::NodeKind::StaticBoundary;
       continue;
     }
-    kept.Nodes.push_back(node);
-    kept.NodePlanes.push_back(nodes.Slip.NodePlanes[k]);
-    kept.SecondPlanes.push_back(nodes.Slip.SecondPlaneOf(k));
+    nodes.Slip.Nodes.push_back(order[k]);
+    nodes.Slip.NodePlanes.push_back(distinct[0]);
+    seconds.push_back(distinct.size() > 1 ? distinct[1] : -1);
+    anySecond = anySecond || distinct.size() > 1;
   }
-  nodes.Slip = std::move(kept);
+  if (anySecond)
+  {
+    nodes.Slip.SecondPlanes = std::move(seconds);
+  }
 }
 
 } // namespace dgmf_vtk

@@ -21,8 +21,10 @@ namespace dgmf_vtk
  * `groups` of each entry (`names` for messages). An entry whose nodes fit one plane is that plane
  * (a plane cut into several patches); one of several blocks (roles->SlipBlocks) that does not is a
  * plane per block, so that a wedge's two planes, or two symmetry planes named by their group, are
- * each a plane (the nodes on two of them slide along their line). A node on three planes or more
- * cannot move: it is made static. `roles` is null for a boundary marker (one entry). Throws
+ * each a plane. A node's planes are then counted once per distinct plane (dgmf::SamePlane: two
+ * patches of one plane named apart are one): on one it slides in it, on two along their line (a
+ * 2D mesh's two lines meet in a point: static), on three or more (a corner) it is made static
+ * (nodes.Kinds). `roles` is null for a boundary marker (one entry). Throws
  * std::invalid_argument (FitSlipPlane's message) when an entry, or one of its blocks, is not a
  * plane.
  */

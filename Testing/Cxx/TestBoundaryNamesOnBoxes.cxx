@@ -5,10 +5,14 @@
 
 #include "ErrorMessages.h"
 #include "HexBoxBlocks.h"
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -253,4 +257,81 @@ TEST(BoundaryNames, ASlipEntryOfSeveralPlanesIsAPlaneEach)
     ASSERT_EQ(one.size(), std::size_t(3 * (n + 1) * (n + 1) * (n + 1))) << together;
     EXPECT_EQ(one, each) << together;
   }
+}
+
+TEST(BoundaryNames, APlaneCutIntoPatchesNamedApartIsOnePlane)
+{
+  // ymin cut into two patches along x = n/2 ("ymin1", "ymin2"), zmin slipping too: named apart,
+  // in one entry, or uncut, the same bits. Until 2026-11-30 the nodes where the two halves meet
+  // were taken to be on two planes, and the one on zmin as well on three: made static, it held
+  // the line x = n/2 on ymin still (a quarter model translated by 0.65 had 355 inverted cells).
+  const int n = 6;
+  const auto split = [n]()
+  {
+    vtkSmartPointer<vtkMultiBlockDataSet> blocks = dgmf_test::HexBoxBlocks(n, "");
+    auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+    vtkNew<vtkMultiBlockDataSet> cut;
+    unsigned int index = 0;
+    for (unsigned int b = 0; b < boundary->GetNumberOfBlocks(); ++b)
+    {
+      const std::string name = boundary->GetMetaData(b)->Get(vtkCompositeDataSet::NAME());
+      auto* faces = vtkPolyData::SafeDownCast(boundary->GetBlock(b));
+      if (name != "ymin")
+      {
+        cut->SetBlock(index, faces);
+        cut->GetMetaData(index++)->Set(vtkCompositeDataSet::NAME(), name.c_str());
+        continue;
+      }
+      for (int half = 0; half < 2; ++half)
+      {
+        // The side's quads are rows of n along z, one row per x (ymin): cut at x = n/2.
+        vtkNew<vtkCellArray> quads;
+        for (vtkIdType c = 0; c < faces->GetNumberOfCells(); ++c)
+        {
+          if ((c / n < n / 2) == (half == 0))
+          {
+            vtkNew<vtkIdList> ids;
+            faces->GetCellPoints(c, ids);
+            quads->InsertNextCell(ids);
+          }
+        }
+        vtkNew<vtkPolyData> piece;
+        piece->SetPoints(faces->GetPoints());
+        piece->SetPolys(quads);
+        cut->SetBlock(index, piece);
+        cut->GetMetaData(index++)->Set(vtkCompositeDataSet::NAME(), half ? "ymin2" : "ymin1");
+      }
+    }
+    blocks->SetBlock(1, cut);
+    return blocks;
+  };
+  const auto deform = [](vtkMultiBlockDataSet* input, const std::vector<std::string>& slip)
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(input);
+    filter->AddMovingBoundary("xmin");
+    for (const std::string& name : slip)
+    {
+      filter->AddSlipBoundary(name.c_str());
+    }
+    filter->SetTranslation(0.4, 0.0, 0.0);
+    filter->Update();
+    std::vector<double> xyz;
+    if (vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0)))
+    {
+      for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+      {
+        const double* p = volume->GetPoint(i);
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+    }
+    return xyz;
+  };
+  const std::vector<double> whole = deform(dgmf_test::HexBoxBlocks(n, ""), { "ymin", "zmin" });
+  ASSERT_EQ(whole.size(), std::size_t(3 * (n + 1) * (n + 1) * (n + 1)));
+  EXPECT_EQ(deform(split(), { "ymin1", "ymin2", "zmin" }), whole);
+  EXPECT_EQ(deform(split(), { "ymin1|ymin2", "zmin" }), whole);
+  // The cut line moved (the test would not tell otherwise): node (n/2, 0, 1).
+  const std::size_t node = n / 2 + (n + 1) * (0 + (n + 1) * 1);
+  EXPECT_GT(whole[3 * node], double(n / 2));
 }

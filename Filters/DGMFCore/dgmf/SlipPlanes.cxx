@@ -187,6 +187,23 @@ SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::siz
   return fit.Through(plane, normal, farthest);
 }
 
+bool SamePlane(const SlipPlane& a, const SlipPlane& b)
+{
+  const double* m = a.Normal;
+  const double* n = b.Normal;
+  const double cross[3] = { m[1] * n[2] - m[2] * n[1], m[2] * n[0] - m[0] * n[2],
+    m[0] * n[1] - m[1] * n[0] };
+  if (!(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]) <=
+        SlipPlaneTolerance))
+  {
+    return false;
+  }
+  const double d[3] = { b.Point[0] - a.Point[0], b.Point[1] - a.Point[1], b.Point[2] - a.Point[2] };
+  const double apart = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double across = std::abs(d[0] * m[0] + d[1] * m[1] + d[2] * m[2]);
+  return across <= SlipPlaneTolerance * apart + a.Deviation + b.Deviation;
+}
+
 bool SlipConstraint::operator==(const SlipConstraint& other) const
 {
   const auto samePlane = [](const SlipPlane& a, const SlipPlane& b)

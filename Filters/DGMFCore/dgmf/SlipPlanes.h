@@ -50,6 +50,13 @@ constexpr double SlipPlaneTolerance = 1e-6;
 SlipPlane FitSlipPlane(const double* points, const std::int32_t* nodes, std::size_t count,
   const std::string& name, double relativeTolerance = SlipPlaneTolerance, int dimension = 3);
 
+/**
+ * True when two fitted planes are one plane (a plane cut into several patches): their normals
+ * parallel (either way) to SlipPlaneTolerance, and each one's point off the other's plane by at
+ * most SlipPlaneTolerance times the points' distance plus both planes' deviations.
+ */
+bool SamePlane(const SlipPlane& a, const SlipPlane& b);
+
 /// The nodes of the slip boundaries and the plane each one stays in.
 struct SlipConstraint
 {
