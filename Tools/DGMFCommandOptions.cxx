@@ -216,7 +216,7 @@ std::string Usage()
     "                          what stock ParaView on Debian 12 reads)\n"
     "  --compression NAME      .vtu compression: none (default in appended mode: the fastest\n"
     "                          write), lz4 (default inline: files ~0.6 times as large), zlib\n"
-    "                          or lzma (meshio 5 reads none, zlib and lzma)\n"
+    "                          or lzma (meshio 5 reads zlib best)\n"
     "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
     "                          (on for OpenFOAM cases)\n"
     "exit codes: 0 written; 1 could not read, deform or write; 2 bad option; 3 inverted cells\n"
@@ -234,6 +234,9 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   // The two files may come anywhere among the options (INPUT OUTPUT [options], [options] INPUT
   // OUTPUT, INPUT [options] OUTPUT): an argument that is neither an option nor an option's value
   // is a file, the first the input, the second the output.
+  // A value that is an option itself ("--moving --no-write") is missing: a bad value.
+  const auto hasValue = [&](int i)
+  { return i + 1 < argc && std::strncmp(argv[i + 1], "--", 2) != 0; };
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i)
   {
@@ -264,7 +267,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       filter->SetRotationCenter(v);
     }
-    else if ((option == "--moving" || option == "--static" || option == "--slip") && i + 1 < argc)
+    else if ((option == "--moving" || option == "--static" || option == "--slip") && hasValue(i))
     {
       for (const std::string& name : SplitNames(argv[++i]))
       {
@@ -278,7 +281,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
         options.ByName = true;
       }
     }
-    else if (option == "--time" && i + 1 < argc)
+    else if (option == "--time" && hasValue(i))
     {
       options.Time = argv[++i];
     }
@@ -315,7 +318,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
                                     : filter->SetRotationLawParameters(law);
       options.Series = true;
     }
-    else if (option == "--trajectory" && i + 1 < argc)
+    else if (option == "--trajectory" && hasValue(i))
     {
       options.Trajectory = argv[++i];
       options.Series = true;
@@ -363,12 +366,12 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       filter->SetNumberOfThreads(k);
     }
-    else if (option == "--marker" && i + 1 < argc)
+    else if (option == "--marker" && hasValue(i))
     {
       options.Marker = argv[++i];
       options.MarkerGiven = true;
     }
-    else if (option == "--displacement" && i + 1 < argc)
+    else if (option == "--displacement" && hasValue(i))
     {
       options.Displacement = argv[++i];
       options.DisplacementGiven = true;

@@ -106,11 +106,13 @@ void PrintSummary(vtkDGMFDeformFilter* filter, const Times& times, const std::st
     std::cout << "; non-orthogonality max " << FieldValue(deformed, "MaximumNonOrthogonality")
               << " (input " << FieldValue(deformed, "InputMaximumNonOrthogonality") << ")";
   }
-  if (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0)
+  // Sub-steps and the guard are DGMF's (the other methods warn that they ignore them).
+  const bool dgmf = filter->GetMethod() == vtkDGMFDeformFilter::DGMF;
+  if (dgmf && (filter->GetSubSteps() != 1 || filter->GetRepairThreshold() > 0))
   {
     std::cout << "; sub-steps " << CountValue(deformed, "SubStepsUsed");
   }
-  if (filter->GetRepairThreshold() > 0)
+  if (dgmf && filter->GetRepairThreshold() > 0)
   {
     std::cout << ", bad cells found " << CountValue(deformed, "RepairedCellCount")
               << ", left unrepaired " << CountValue(deformed, "UnrepairedCellCount");

@@ -87,7 +87,8 @@ vtkSmartPointer<vtkDoubleArray> Expanded(
  * symmetry or wedge plane) off it: moving wins over slip, so the plane is no longer flat and the
  * solver's check of it fails (a half model pitched about an axis across its symmetry plane). A
  * node is off when its displacement across the plane is more than 1e-6 of the largest such
- * node's displacement (in-plane motions leave only round-off). Empty when none is.
+ * node's displacement and more than 1e-12 of the coordinates' magnitude (in-plane motions, and
+ * motions of round-off size, leave only round-off). Empty when none is.
  */
 std::string MovingNodesOffSlipPlanes(const InputNodes& nodes, const double* deformed)
 {
@@ -95,19 +96,21 @@ std::string MovingNodesOffSlipPlanes(const InputNodes& nodes, const double* defo
   for (const InputNodes::MovingOnPlane& entry : nodes.MovingOnSlip)
   {
     const double* normal = nodes.Slip.Planes[static_cast<std::size_t>(entry.Plane)].Normal;
-    double largestMove = 0.0, largestAcross = 0.0;
+    double largestMove = 0.0, largestAcross = 0.0, magnitude = 0.0;
     std::vector<double> across;
     for (const std::int32_t node : entry.Nodes)
     {
       const double* x = nodes.Points + 3 * static_cast<std::size_t>(node);
       const double* y = deformed + 3 * static_cast<std::size_t>(node);
+      magnitude = std::max({ magnitude, std::abs(x[0]), std::abs(x[1]), std::abs(x[2]) });
       const double d[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
       largestMove = std::max(largestMove, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
       across.push_back(std::abs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]));
       largestAcross = std::max(largestAcross, across.back());
     }
+    const double floor = std::max(1e-6 * largestMove, 1e-12 * magnitude);
     const auto off = std::count_if(
-      across.begin(), across.end(), [&](double distance) { return distance > 1e-6 * largestMove; });
+      across.begin(), across.end(), [&](double distance) { return distance > floor; });
     if (off > 0)
     {
       said += (said.empty() ? "" : " ") + std::string("The motion takes ") + std::to_string(off) +

@@ -282,6 +282,11 @@ class CommandFailures(unittest.TestCase):
         code, out, err = run(self.circle, "--rotate", 0, 0, 10)
         self.assertEqual(code, 2, err)
         self.assertIn("missing files: expected INPUT and OUTPUT, got 1", err)
+        # A name option followed by another option has no value (the option was taken as a name).
+        for option in ("--moving", "--marker", "--trajectory"):
+            code, out, err = run(self.circle, self.path("o.vtu"), option, "--no-write")
+            self.assertEqual(code, 2, err)
+            self.assertIn("bad option or value: " + option, err)
         # A file whose name starts with "-" after "--" (the end of the options).
         dashed = os.path.join(os.path.dirname(middle), "-dashed.vtu")
         shutil.copyfile(self.circle, dashed)
@@ -380,6 +385,12 @@ class CommandFailures(unittest.TestCase):
                              "--sub-steps", 300)
         self.assertEqual(code, 0, err)
         self.assertIn("sub-steps 300;", out)  # the guard's counts only with the guard
+        # Other methods ignore sub-steps and the guard (and warn): no step or guard count.
+        code, out, err = run(self.circle, self.path("idw.vtu"), "--rotate", 0, 0, 30,
+                             "--method", "idw", "--sub-steps", 0, "--repair", 0.25)
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("sub-steps", out)
+        self.assertNotIn("bad cells found", out)
 
     # Cells the metric does not cover: "no cell evaluated", not "minimum 0"; NaN in the file.
     def test_no_cell_evaluated(self):

@@ -353,6 +353,11 @@ TEST(GmshFile, A2DMeshLiesInOnePlaneZConstant)
   {
     ASSERT_EQ(read.Points[k], 0.5) << k / 3;
   }
+  // ... with the round-off of a transform (1e-6 of the x-y extent, as the filter allows), ...
+  const std::string rounded = (dir / "o.msh").string();
+  mesh.Points[3 * 7 + 2] = 0.5 + 1e-12;
+  mf::WriteGmshWithPoints(source, rounded, mesh.Points.data(), mesh.NumberOfNodes());
+  EXPECT_EQ(mf::ReadGmsh(rounded).Points[3 * 7 + 2], 0.5 + 1e-12);
   // ... but nodes off one plane are an error, which is also what a 3D geometry saved with
   // physical surfaces only gives: said.
   mesh.Points[3 * 7 + 2] = 0.25;

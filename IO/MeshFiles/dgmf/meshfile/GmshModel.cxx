@@ -194,11 +194,23 @@ NamedMesh ReadModel(GmshSession& session, const MshFormat& format)
   if (mesh.Dimension == 2 && !nodes.Tags.empty())
   {
     // A 2D mesh lies in one plane z = constant (the filter keeps that z; until 2026-11-30 only
-    // z = 0 was read).
+    // z = 0 was read), up to 1e-6 of its extent in x and y, as the filter takes it (a mesh turned
+    // into the plane by a transform, single precision).
     const double z = nodes.Coordinates[2];
+    double low[2] = { nodes.Coordinates[0], nodes.Coordinates[1] };
+    double high[2] = { low[0], low[1] };
     for (std::size_t k = 0; k < nodes.Tags.size(); ++k)
     {
-      if (nodes.Coordinates[3 * k + 2] != z)
+      for (int c = 0; c < 2; ++c)
+      {
+        low[c] = std::min(low[c], nodes.Coordinates[3 * k + c]);
+        high[c] = std::max(high[c], nodes.Coordinates[3 * k + c]);
+      }
+    }
+    const double tolerance = 1e-6 * std::max(high[0] - low[0], high[1] - low[1]);
+    for (std::size_t k = 0; k < nodes.Tags.size(); ++k)
+    {
+      if (!(std::abs(nodes.Coordinates[3 * k + 2] - z) <= tolerance))
       {
         // Also a 3D geometry saved with physical groups on its surfaces only (gmsh then keeps
         // no volume element): said, as it is the likelier mistake.
