@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <new>
+#include <set>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -56,14 +57,24 @@ dgmf::CellMesh LayerCells(
   dgmf::CellMesh cells;
   cells.NumberOfPoints = layers.Front.size();
   cells.Offsets.push_back(0);
+  // A face given twice (the volume's own face and the patch's polygon of a composite input) is
+  // one cell of the layer: the guard's counts are the layer's cells.
+  std::set<std::vector<std::int64_t>> seen;
   for (std::size_t f = 0; f < front.Size(); ++f)
   {
     const vtkIdType count = front.Offsets[f + 1] - front.Offsets[f];
+    std::vector<std::int64_t> key;
     for (vtkIdType k = 0; k < count; ++k)
     {
-      cells.Connectivity.push_back(
-        layers.Layer[static_cast<std::size_t>(front.Ids[front.Offsets[f] + k])]);
+      key.push_back(layers.Layer[static_cast<std::size_t>(front.Ids[front.Offsets[f] + k])]);
     }
+    const std::vector<std::int64_t> ordered = key;
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second)
+    {
+      continue;
+    }
+    cells.Connectivity.insert(cells.Connectivity.end(), ordered.begin(), ordered.end());
     cells.Offsets.push_back(static_cast<std::int64_t>(cells.Connectivity.size()));
     cells.Shapes.push_back(count == 4 ? dgmf::CellShape::Quad : dgmf::CellShape::Triangle);
     cells.Covered.push_back(count == 3 || count == 4 ? 1 : 0);
