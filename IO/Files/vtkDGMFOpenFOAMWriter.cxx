@@ -162,7 +162,7 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
   // of a decomposed case (a parallel run reads theirs).
   const std::string written = this->TimeDirectory ? this->TimeDirectory : "constant";
   std::error_code error;
-  std::vector<std::string> shadowing;
+  std::vector<std::string> shadowing, sameTime;
   bool decomposed = false;
   for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
   {
@@ -178,6 +178,19 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
     {
       shadowing.push_back(name);
     }
+    // The same time written another way ("0.0002" beside "2e-4"): OpenFOAM lists both.
+    if (isTime && written != "constant" && name != written &&
+      time == std::strtod(written.c_str(), nullptr))
+    {
+      sameTime.push_back(name);
+    }
+  }
+  for (const std::string& name : sameTime)
+  {
+    vtkWarningMacro(<< (caseDirectory / name).string() << " is the time " << written
+                    << " written another way: OpenFOAM lists both and reads one of them; write "
+                       "to --time "
+                    << name << " (or TimeDirectory " << name << ") instead.");
   }
   for (const std::string& name : shadowing)
   {
