@@ -9,13 +9,12 @@ usage: pvbatch make_named_sphere.py PLUGIN SOURCE.vtu TARGET.vtm HALF_REFERENCE.
 import os
 import sys
 
-from paraview import simple
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reader_blocks import write_reader_blocks  # noqa: E402
+from reader_blocks import deform_by_name, write_binary, write_reader_blocks  # noqa: E402
 
 plugin, source, target, half_reference = sys.argv[1:5]
 assert vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses() == 1
@@ -51,18 +50,8 @@ write_reader_blocks(volume, faces.GetPoints(), patches, target)
 
 # The serial result of wingA moving alone (wingB static): its seam nodes move (moving over
 # static, wherever the two halves' blocks are).
-simple.LoadPlugin(plugin, remote=False, ns=globals())
-deform = DGMFDeform(Input=simple.XMLMultiBlockDataReader(FileName=[target]))  # noqa: F821
-deform.BoundaryMarkerArray = ["POINTS", "None"]
-deform.DisplacementArray = ["POINTS", "None"]
-deform.MovingBoundaries = ["wingA"]
-deform.RotationAngles = [10.0, 20.0, 30.0]
-deform.Translation = [0.2, -0.1, 0.05]
-deform.UpdatePipeline()
-writer = vtkXMLUnstructuredGridWriter()
-writer.SetInputData(deform.GetClientSideObject().GetOutputDataObject(0).GetBlock(0))
-writer.SetFileName(half_reference)
-writer.SetDataModeToBinary()
-assert writer.Write() == 1
+deformed = deform_by_name(plugin, target, ["wingA"], RotationAngles=[10.0, 20.0, 30.0],
+                          Translation=[0.2, -0.1, 0.05])
+write_binary(deformed.GetBlock(0), half_reference)
 print("named sphere: wingA %d, wingB %d, box %d faces" % tuple(
     len(patches[name]) for name in ("wingA", "wingB", "box")))

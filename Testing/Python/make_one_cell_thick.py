@@ -10,14 +10,13 @@ usage: pvbatch make_one_cell_thick.py PLUGIN CIRCLE.vtu MESH.vtm REFERENCE.vtu
 import os
 import sys
 
-from paraview import simple
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import VTK_WEDGE, vtkUnstructuredGrid
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reader_blocks import write_reader_blocks  # noqa: E402
+from reader_blocks import deform_by_name, write_binary, write_reader_blocks  # noqa: E402
 
 plugin, source, mesh_path, reference_path = sys.argv[1:5]
 assert vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses() == 1
@@ -51,20 +50,9 @@ for (a, b), count in edges.items():
         patches[name].append([a, b, b + n, a + n])
 write_reader_blocks(volume, points, patches, mesh_path)
 
-simple.LoadPlugin(plugin, remote=False, ns=globals())
-deform = DGMFDeform(Input=simple.XMLMultiBlockDataReader(FileName=[mesh_path]))  # noqa: F821
-deform.BoundaryMarkerArray = ["POINTS", "None"]
-deform.DisplacementArray = ["POINTS", "None"]
-deform.MovingBoundaries = ["circle"]
-deform.RotationAngles = [0.0, 0.0, 30.0]
-deform.UpdatePipeline()
-deformed = deform.GetClientSideObject().GetOutputDataObject(0).GetBlock(0)
+output = deform_by_name(plugin, mesh_path, ["circle"], RotationAngles=[0.0, 0.0, 30.0])
+deformed = output.GetBlock(0)
 moved = sum(deformed.GetPoint(i) != volume.GetPoint(i) for i in range(2 * n))
-inverted = deform.GetClientSideObject().GetOutputDataObject(0).GetFieldData().GetArray(
-    "InvertedCellCount").GetTuple1(0)
-out = vtkXMLUnstructuredGridWriter()
-out.SetInputData(deformed)
-out.SetFileName(reference_path)
-out.SetDataModeToBinary()
-assert out.Write() == 1
+inverted = output.GetFieldData().GetArray("InvertedCellCount").GetTuple1(0)
+write_binary(deformed, reference_path)
 print("one-cell-thick reference: %d of %d nodes moved, %d inverted" % (moved, 2 * n, inverted))
