@@ -29,6 +29,33 @@ vtkUnstructuredGrid* VolumeOf(vtkDataObject* output)
   auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output);
   return blocks ? vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(0)) : nullptr;
 }
+
+/// The volume's points (x, y, z of each) after `input`'s side xmin moved by `translation` and
+/// turned by `angleX` degrees about x, the blocks `slip` sliding; empty when the filter fails.
+std::vector<double> PointsAfterXminMoves(vtkMultiBlockDataSet* input,
+  const std::vector<std::string>& slip, double translation, double angleX)
+{
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(input);
+  filter->AddMovingBoundary("xmin");
+  for (const std::string& name : slip)
+  {
+    filter->AddSlipBoundary(name.c_str());
+  }
+  filter->SetTranslation(translation, 0.0, 0.0);
+  filter->SetRotationAngles(angleX, 0.0, 0.0);
+  filter->Update();
+  std::vector<double> xyz;
+  if (vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0)))
+  {
+    for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+    {
+      const double* p = volume->GetPoint(i);
+      xyz.insert(xyz.end(), p, p + 3);
+    }
+  }
+  return xyz;
+}
 } // namespace
 
 TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
@@ -227,28 +254,7 @@ TEST(BoundaryNames, ASlipEntryOfSeveralPlanesIsAPlaneEach)
   // bits of the blocks named one by one (until 2026-11-30 "The slip boundary ... is not planar").
   const int n = 6;
   const auto deform = [n](const std::vector<std::string>& slip)
-  {
-    vtkNew<vtkDGMFDeformFilter> filter;
-    filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
-    filter->AddMovingBoundary("xmin");
-    for (const std::string& name : slip)
-    {
-      filter->AddSlipBoundary(name.c_str());
-    }
-    filter->SetTranslation(0.3, 0.0, 0.0);
-    filter->SetRotationAngles(3.0, 0.0, 0.0);
-    filter->Update();
-    std::vector<double> xyz;
-    if (vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0)))
-    {
-      auto* data = vtkDataArray::SafeDownCast(volume->GetPoints()->GetData());
-      for (vtkIdType i = 0; i < data->GetNumberOfValues(); ++i)
-      {
-        xyz.push_back(data->GetComponent(i / 3, static_cast<int>(i % 3)));
-      }
-    }
-    return xyz;
-  };
+  { return PointsAfterXminMoves(dgmf_test::HexBoxBlocks(n, ""), slip, 0.3, 3.0); };
   for (const auto& [together, apart] :
     { std::pair<std::string, std::vector<std::string>>{ "ymin|ymax", { "ymin", "ymax" } },
       std::pair<std::string, std::vector<std::string>>{ "ymin|zmin", { "ymin", "zmin" } } })
@@ -306,27 +312,7 @@ TEST(BoundaryNames, APlaneCutIntoPatchesNamedApartIsOnePlane)
     return blocks;
   };
   const auto deform = [](vtkMultiBlockDataSet* input, const std::vector<std::string>& slip)
-  {
-    vtkNew<vtkDGMFDeformFilter> filter;
-    filter->SetInputData(input);
-    filter->AddMovingBoundary("xmin");
-    for (const std::string& name : slip)
-    {
-      filter->AddSlipBoundary(name.c_str());
-    }
-    filter->SetTranslation(0.4, 0.0, 0.0);
-    filter->Update();
-    std::vector<double> xyz;
-    if (vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0)))
-    {
-      for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
-      {
-        const double* p = volume->GetPoint(i);
-        xyz.insert(xyz.end(), p, p + 3);
-      }
-    }
-    return xyz;
-  };
+  { return PointsAfterXminMoves(input, slip, 0.4, 0.0); };
   const std::vector<double> whole = deform(dgmf_test::HexBoxBlocks(n, ""), { "ymin", "zmin" });
   ASSERT_EQ(whole.size(), std::size_t(3 * (n + 1) * (n + 1) * (n + 1)));
   EXPECT_EQ(deform(split(), { "ymin1", "ymin2", "zmin" }), whole);
