@@ -3,6 +3,7 @@
 #include "DGMFWriterInputs.h"
 
 #include "dgmf/openfoam/CaseDirectory.h"
+#include "dgmf/openfoam/PointsFile.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCompositeDataSet.h"
@@ -114,10 +115,8 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     const std::string time = this->TimeDirectory ? this->TimeDirectory : "constant";
     // A time's points already there (a mesh a solver moved, as a dynamic-mesh run writes) are
     // replaced by the deformation of constant's mesh: said (silent until 2026-11-30).
-    std::error_code missing;
-    const fs::path timeMesh = caseDirectory / time / "polyMesh";
-    const bool replacing = time != "constant" &&
-      (fs::exists(timeMesh / "points", missing) || fs::exists(timeMesh / "points.gz", missing));
+    const bool replacing = time != "constant" && of::IsTimeName(time) &&
+      !of::FindPointsFile(of::PolyMeshDirectory(caseDirectory, time)).empty();
     this->LastWrittenFile =
       of::WriteDeformedPoints(of::CaseDirectoryOf(fs::path(source)), caseDirectory, time,
         before.data(), after.data(), static_cast<std::size_t>(deformed->GetNumberOfPoints()))
