@@ -35,17 +35,8 @@ std::string OutputProblem(InputKind kind, const std::string& input, const std::s
 {
   if (kind == InputKind::OpenFOAMCase && !IsMeshFileName(output) && !IsOpenFOAMCase(output))
   {
-    // Said before the work (the writer refuses both too, before copying anything).
-    const std::filesystem::path source = dgmf::openfoam::CaseDirectoryOf(input);
-    std::error_code error;
-    const bool holdsFiles = std::filesystem::exists(output, error) &&
-      !(std::filesystem::is_directory(output, error) && std::filesystem::is_empty(output, error));
-    return dgmf::openfoam::IsInside(source, output)
-      ? "the output '" + output + "' is inside the case '" + source.string() +
-        "', which would be copied into it: give a directory outside the case"
-      : holdsFiles ? "'" + output + "' already holds files and is not an OpenFOAM case: give a " +
-        "new directory"
-                   : "";
+    // Said before the work (CopyCase refuses it too, before copying anything).
+    return dgmf::openfoam::CopyTargetProblem(dgmf::openfoam::CaseDirectoryOf(input), output);
   }
   if (IsMeshFileName(output) || kind == InputKind::OpenFOAMCase)
   {

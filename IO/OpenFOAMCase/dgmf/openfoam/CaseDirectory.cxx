@@ -144,25 +144,36 @@ bool IsInside(const fs::path& directory, const fs::path& path)
   return end == outer.end() && rest != inner.end() && !rest->empty();
 }
 
+std::string CopyTargetProblem(const fs::path& source, const fs::path& target)
+{
+  // A target inside the case would be copied into itself, again and again (until 2026-11-30 a
+  // 0.4 MB case grew to 190 MB of nested copies before the names got too long).
+  if (IsInside(source, target))
+  {
+    return Quoted(target) + " is inside the case " + Quoted(source) +
+      ", which would be copied into it: give a directory outside the case";
+  }
+  std::error_code error;
+  if (fs::exists(target, error) && !IsEmptyDirectory(target))
+  {
+    return Quoted(target) +
+      " already holds files and is not an OpenFOAM case: give a new directory";
+  }
+  return std::string();
+}
+
 void CopyCase(const fs::path& source, const fs::path& target)
 {
   if (!IsCase(source))
   {
     throw std::runtime_error(Quoted(source) + " is not an OpenFOAM case (no system/controlDict)");
   }
+  const std::string problem = CopyTargetProblem(source, target);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
   std::error_code error;
-  if (fs::exists(target, error) && !IsEmptyDirectory(target))
-  {
-    throw std::runtime_error(
-      Quoted(target) + " already holds files and is not an OpenFOAM case: give a new directory");
-  }
-  // A target inside the case would be copied into itself, again and again (until 2026-11-30 a
-  // 0.4 MB case grew to 190 MB of nested copies before the names got too long).
-  if (IsInside(source, target))
-  {
-    throw std::runtime_error(Quoted(target) + " is inside the case " + Quoted(source) +
-      ", which would be copied into it: give a directory outside the case");
-  }
   // The first time directory holds the fields a solver starts from; later ones are results.
   double first = HUGE_VAL;
   for (const fs::directory_entry& entry : fs::directory_iterator(source))

@@ -49,11 +49,16 @@ std::vector<PatchEntry> ReadPatches(const std::filesystem::path& caseDirectory);
 /// The names of the patches in `caseDirectory`/constant/polyMesh/boundary, in order.
 std::vector<std::string> ReadPatchNames(const std::filesystem::path& caseDirectory);
 
+/// Why `target` cannot take a copy of the case `source` (CopyCase): it lies inside `source`, or
+/// it holds files already; "" when it can.
+std::string CopyTargetProblem(
+  const std::filesystem::path& source, const std::filesystem::path& target);
+
 /**
  * Copies the case `source` into `target` (created; it must not hold anything yet): every file and
  * directory of the case except the time directories after the first one (the fields to start
  * from are kept), `processor*` directories and `postProcessing`. Throws std::runtime_error, before
- * anything is copied, when `target` is inside `source`.
+ * anything is copied, when `target` cannot take the copy (CopyTargetProblem).
  */
 void CopyCase(const std::filesystem::path& source, const std::filesystem::path& target);
 
