@@ -19,7 +19,9 @@
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkLongArray.h"
 #include "vtkNew.h"
 #include "vtkOpenFOAMReader.h"
 #include "vtkPointData.h"
@@ -258,6 +260,34 @@ vtkSmartPointer<vtkUnstructuredGrid> VolumeToWrite(vtkDataObject* data)
   return written;
 }
 
+namespace
+{
+/// Replaces each vtkIdTypeArray of the point, cell and field data of `grid` (a copy about to be
+/// written) by a vtkLongArray of the same name and values: legacy files name the first type
+/// `vtkIdType`, which readers other than VTK's do not know.
+void WriteIdTypeArraysAsLong(vtkUnstructuredGrid* grid)
+{
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(grid->GetPointData()),
+         static_cast<vtkFieldData*>(grid->GetCellData()), grid->GetFieldData() })
+  {
+    for (int k = 0; data && k < data->GetNumberOfArrays(); ++k)
+    {
+      auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(k));
+      if (!ids || !ids->GetName())
+      {
+        continue;
+      }
+      vtkNew<vtkLongArray> values;
+      values->SetName(ids->GetName());
+      values->SetNumberOfComponents(ids->GetNumberOfComponents());
+      values->SetNumberOfTuples(ids->GetNumberOfTuples());
+      std::copy_n(ids->GetPointer(0), ids->GetNumberOfValues(), values->GetPointer(0));
+      data->AddArray(values); // in the place of the array of that name (an attribute stays one)
+    }
+  }
+}
+} // namespace
+
 bool IsMeshFileName(const std::string& path)
 {
   return EndsWith(path, ".vtu") || EndsWith(path, ".vtk");
@@ -300,6 +330,11 @@ bool WriteMeshFile(vtkUnstructuredGrid* mesh, const std::string& path, const VTU
   if (EndsWith(path, ".vtk"))
   {
     vtkNew<vtkUnstructuredGridWriter> legacy;
+    // Version 4.2, not VTK 9's default 5.1, and 64-bit ids as `long`: the form every reader
+    // takes (meshio 5 reads neither 5.1's `unsigned_char` nor the `vtkIdType` of the filter's
+    // counts; VTK and ParaView read both versions).
+    legacy->SetFileVersion(vtkDataWriter::VTK_LEGACY_READER_VERSION_4_2);
+    WriteIdTypeArraysAsLong(written);
     legacy->SetFileName(temporary.c_str());
     legacy->SetFileTypeToBinary();
     legacy->SetInputData(mesh);
