@@ -77,6 +77,13 @@ public:
   void DisplayGenericWarningText(const char* text) override { this->Print("warning: ", text); }
   void DisplayDebugText(const char*) override {}
 
+  /// Messages printed from now on are printed even if they were before.
+  void Forget()
+  {
+    const std::lock_guard<std::mutex> lock(this->Lock);
+    this->Printed.clear();
+  }
+
 private:
   void Print(const char* kind, const char* vtkText)
   {
@@ -135,6 +142,14 @@ void InstallMessageWindow()
   vtkOutputWindow::SetInstance(window);
   // VTK also logs every error and warning through vtkLogger, in colour, with the object's address.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+}
+
+void ForgetPrintedMessages()
+{
+  if (auto* window = CommandOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance()))
+  {
+    window->Forget();
+  }
 }
 
 int GetErrorCount()

@@ -22,6 +22,12 @@ namespace dgmf_cli
  */
 void InstallMessageWindow();
 
+/**
+ * Forgets which messages were printed: a series calls it for each frame, so that a frame's
+ * warning is printed after its "time" line even if an earlier frame said the same.
+ */
+void ForgetPrintedMessages();
+
 /// The number of VTK errors reported since InstallMessageWindow (or the last ResetErrorCount).
 int GetErrorCount();
 void ResetErrorCount();

@@ -324,13 +324,16 @@ int RunSeries(
   {
     const double t = steps[k];
     dgmf_cli::SetStage("deforming " + options.Input + " at time " + std::to_string(t));
-    std::string why;
-    const int verdict = DeformAndJudge(
-      filter, options.FailOnInverted, [&]() { filter->UpdateTimeStep(t); }, times, why);
-    // An OpenFOAM series names each frame by its time directory.
+    // The frame's line first, then what the frame's run says (each frame's warnings, even those
+    // an earlier frame gave word for word). An OpenFOAM series names each frame by its time
+    // directory.
     std::cout << "dgmf-deform: time ";
     (files ? std::cout << t : std::cout << timeNames[k]);
     std::cout << " (frame " << k + 1 << " of " << steps.size() << ")" << std::endl;
+    dgmf_cli::ForgetPrintedMessages();
+    std::string why;
+    const int verdict = DeformAndJudge(
+      filter, options.FailOnInverted, [&]() { filter->UpdateTimeStep(t); }, times, why);
     if (verdict != ExitSuccess)
     {
       std::cerr << "dgmf-deform: " << why << " at time " << t << "; "

@@ -236,6 +236,25 @@ class CommandFailures(unittest.TestCase):
                 self.assertNotIn("vtkDGMFDeformFilter (0x", err)
                 self.assertFalse(os.path.exists(output))
 
+    def test_each_frame_of_a_series_says_its_own_warnings_after_its_time(self):
+        # Until 2026-11-30 a warning was printed once per process: frames 2 and 3 of a series
+        # said nothing when they gave frame 1's warning word for word, and frame 1's came before
+        # its "time" line.
+        folder = self.path("series_warnings")
+        shutil.rmtree(folder, ignore_errors=True)
+        done = subprocess.run(
+            [ARGS.deform, os.path.join(ARGS.data, "pitching_airfoil.vtu"),
+             os.path.join(folder, "p.vtu"), "--center", "0.25", "0", "0", "--pitch", "0", "5",
+             "1", "0", "--times", "0:1:3", "--method", "dgm", "--repair", "0.2"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        self.assertEqual(done.returncode, 0, done.stdout)
+        lines = [line for line in done.stdout.splitlines()
+                 if line.startswith("dgmf-deform: time") or "ignored by DGM" in line]
+        self.assertEqual(len(lines), 6, done.stdout)
+        for k in range(3):
+            self.assertIn("(frame %d of 3)" % (k + 1), lines[2 * k])
+            self.assertIn("warning: Sub Steps and Repair Threshold", lines[2 * k + 1])
+
     def test_an_empty_file_is_said_to_be_empty(self):
         empty = self.path("empty.vtu")
         open(empty, "w").close()
