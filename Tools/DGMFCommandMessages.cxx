@@ -16,7 +16,10 @@
 #include <iostream>
 #include <mutex>
 #include <set>
+#include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace dgmf_cli
 {
@@ -84,12 +87,27 @@ public:
     this->Printed.clear();
   }
 
+  /// `text` is shown as `shown` in the messages printed from now on.
+  void AddAlias(const std::string& text, const std::string& shown)
+  {
+    const std::lock_guard<std::mutex> lock(this->Lock);
+    this->Aliases.emplace_back(text, shown);
+  }
+
 private:
   void Print(const char* kind, const char* vtkText)
   {
     // VTK's messages may come from several threads at once (a decompressor on each).
     const std::lock_guard<std::mutex> lock(this->Lock);
-    const std::string text = MessageText(vtkText);
+    std::string text = MessageText(vtkText);
+    for (const auto& alias : this->Aliases)
+    {
+      for (std::size_t at = text.find(alias.first); at != std::string::npos;
+           at = text.find(alias.first, at + alias.second.size()))
+      {
+        text.replace(at, alias.first.size(), alias.second);
+      }
+    }
     // The executive's report that an algorithm failed repeats what the algorithm said, followed
     // by a dump of the pipeline request.
     if (text.empty() || text.find("returned failure for request") != std::string::npos ||
@@ -101,6 +119,7 @@ private:
   }
 
   std::set<std::string> Printed;
+  std::vector<std::pair<std::string, std::string>> Aliases;
   std::mutex Lock;
 };
 vtkStandardNewMacro(CommandOutputWindow);
@@ -149,6 +168,14 @@ void ForgetPrintedMessages()
   if (auto* window = CommandOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance()))
   {
     window->Forget();
+  }
+}
+
+void ShowInMessagesAs(const std::string& text, const std::string& shown)
+{
+  if (auto* window = CommandOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance()))
+  {
+    window->AddAlias(text, shown);
   }
 }
 

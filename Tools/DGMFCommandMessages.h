@@ -28,6 +28,12 @@ void InstallMessageWindow();
  */
 void ForgetPrintedMessages();
 
+/**
+ * Messages printed from now on show `text` as `shown`: an OpenFOAM patch group the user named
+ * ('wall') instead of the alternatives of its patches the filter was given ('bottom|top|body').
+ */
+void ShowInMessagesAs(const std::string& text, const std::string& shown);
+
 /// The number of VTK errors reported since InstallMessageWindow (or the last ResetErrorCount).
 int GetErrorCount();
 void ResetErrorCount();

@@ -469,18 +469,23 @@ int main(int argc, char* argv[])
       filter->RemoveAllMovingBoundaries();
       filter->RemoveAllStaticBoundaries();
       filter->RemoveAllSlipBoundaries();
-      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Moving))
+      const auto add = [&input](const std::vector<std::string>& names, auto addBoundary)
       {
-        filter->AddMovingBoundary(name.c_str());
-      }
-      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Static))
-      {
-        filter->AddStaticBoundary(name.c_str());
-      }
-      for (const std::string& name : dgmf_cli::ExpandPatchGroups(input, options.Slip))
-      {
-        filter->AddSlipBoundary(name.c_str());
-      }
+        const std::vector<std::string> expanded = dgmf_cli::ExpandPatchGroups(input, names);
+        for (std::size_t k = 0; k < names.size(); ++k)
+        {
+          // Messages name a group of several patches as the user did (a group of one is its
+          // patch, whose name the messages use for the block as well).
+          if (expanded[k] != names[k] && expanded[k].find('|') != std::string::npos)
+          {
+            dgmf_cli::ShowInMessagesAs("'" + expanded[k] + "'", "'" + names[k] + "'");
+          }
+          addBoundary(expanded[k].c_str());
+        }
+      };
+      add(options.Moving, [&filter](const char* name) { filter->AddMovingBoundary(name); });
+      add(options.Static, [&filter](const char* name) { filter->AddStaticBoundary(name); });
+      add(options.Slip, [&filter](const char* name) { filter->AddSlipBoundary(name); });
       filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
     }
     else if (options.ByName)
