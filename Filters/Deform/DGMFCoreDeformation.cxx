@@ -128,8 +128,8 @@ std::string MovingNodesOffSlipPlanes(const InputNodes& nodes, const double* defo
         " nodes of the moving boundaries that lie on the slip boundary '" + entry.Name +
         "' off its plane, by up to " + dgmf::NumberText(largestAcross) +
         " (moving wins over slip): the plane is no longer flat, and a solver's check of a "
-        "symmetry or wedge plane fails. Move the body along the plane there, or make the boundary "
-        "static.";
+        "symmetry or wedge plane fails. Keep the body's motion in the plane: a rotation about its "
+        "normal, a translation along it.";
     }
   }
   return said;
