@@ -113,14 +113,14 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     const std::vector<double> before = PointsOf(reference), after = PointsOf(deformed);
     const fs::path caseDirectory = of::CaseDirectoryOf(target);
     const std::string time = this->TimeDirectory ? this->TimeDirectory : "constant";
-    // A time's points already there (a mesh a solver moved, as a dynamic-mesh run writes) are
-    // replaced by the deformation of constant's mesh: said (silent until 2026-11-30).
-    const bool replacing = time != "constant" && of::IsTimeName(time) &&
-      !of::FindPointsFile(of::PolyMeshDirectory(caseDirectory, time)).empty();
-    this->LastWrittenFile =
-      of::WriteDeformedPoints(of::CaseDirectoryOf(fs::path(source)), caseDirectory, time,
-        before.data(), after.data(), static_cast<std::size_t>(deformed->GetNumberOfPoints()))
-        .string();
+    // A time's points already there (a mesh a solver moved, as a dynamic-mesh run writes; in
+    // the case, or in the copy of the source case a new output gets) are replaced by the
+    // deformation of constant's mesh: said (silent until 2026-11-30).
+    bool replacing = false;
+    this->LastWrittenFile = of::WriteDeformedPoints(of::CaseDirectoryOf(fs::path(source)),
+      caseDirectory, time, before.data(), after.data(),
+      static_cast<std::size_t>(deformed->GetNumberOfPoints()), &replacing)
+                              .string();
     if (replacing)
     {
       vtkWarningMacro(<< this->LastWrittenFile

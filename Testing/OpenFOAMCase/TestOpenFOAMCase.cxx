@@ -332,6 +332,27 @@ TEST(CaseDirectory, UnmovedPointsKeepTheirBitsAndTheReadersRoundingDoesNotReachT
   EXPECT_EQ(of::FoamHeaderEntry(ReadText(timed), "location"), "2/polyMesh");
 }
 
+TEST(CaseDirectory, PointsAlreadyAtTheTimeWrittenAreSaidToBeReplaced)
+{
+  // A mesh a solver moved sits in the source case's first time (0/polyMesh/points): a new output
+  // case gets it with the copy, and writing time 0 replaces it. Until 2026-11-30 only a case that
+  // existed before the write was checked, and this replacement went unsaid.
+  const fs::path source = MakeCase(Scratch("replaced-src"), AsciiPoints(Sample));
+  fs::create_directories(source / "0" / "polyMesh");
+  fs::copy_file(source / "constant" / "polyMesh" / "points", source / "0" / "polyMesh" / "points");
+  const fs::path target = Scratch("replaced-out") / "new";
+  bool replaced = true;
+  of::WriteDeformedPoints(source, target, "constant", Sample.data(), Sample.data(), 3, &replaced);
+  EXPECT_FALSE(replaced); // constant's points are the mesh itself, not a time's
+  of::WriteDeformedPoints(source, target, "1", Sample.data(), Sample.data(), 3, &replaced);
+  EXPECT_FALSE(replaced); // a new time
+  of::WriteDeformedPoints(source, target, "1", Sample.data(), Sample.data(), 3, &replaced);
+  EXPECT_TRUE(replaced); // the same time again
+  const fs::path copied = Scratch("replaced-copy") / "new";
+  of::WriteDeformedPoints(source, copied, "0", Sample.data(), Sample.data(), 3, &replaced);
+  EXPECT_TRUE(replaced); // brought along by the copy
+}
+
 TEST(CaseDirectory, ExtraPointsAfterTheCasesAreNotWritten)
 {
   // The reader appends one point per polyhedron when it decomposes polyhedra.

@@ -210,7 +210,7 @@ void CopyCase(const fs::path& source, const fs::path& target)
 
 fs::path WriteDeformedPoints(const fs::path& source, const fs::path& target,
   const std::string& time, const double* reference, const double* deformed,
-  std::size_t numberOfPoints)
+  std::size_t numberOfPoints, bool* replaced)
 {
   if (!IsTimeName(time))
   {
@@ -276,6 +276,10 @@ fs::path WriteDeformedPoints(const fs::path& source, const fs::path& target,
     {
       CopyCase(source, target);
     }
+  }
+  if (replaced)
+  {
+    *replaced = time != "constant" && !FindPointsFile(PolyMeshDirectory(out, time)).empty();
   }
   return WritePointsFile(
     PolyMeshDirectory(out, time), original, points.data(), n, time + "/polyMesh");

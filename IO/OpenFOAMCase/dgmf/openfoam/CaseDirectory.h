@@ -79,11 +79,13 @@ void CopyCase(const std::filesystem::path& source, const std::filesystem::path& 
  *
  * Throws std::runtime_error when the counts differ, when `reference` is not the case's points
  * (another case, or another time), when a deformed point is not finite, or when a file cannot be
- * read or written; nothing is written then. Returns the file written.
+ * read or written; nothing is written then. Returns the file written. `replaced`, when given, is
+ * set to whether a time directory's points were there before (in `target`, or in the copy of
+ * `source` just made: a mesh a solver moved), which the new ones replace; false for "constant".
  */
 std::filesystem::path WriteDeformedPoints(const std::filesystem::path& source,
   const std::filesystem::path& target, const std::string& time, const double* reference,
-  const double* deformed, std::size_t numberOfPoints);
+  const double* deformed, std::size_t numberOfPoints, bool* replaced = nullptr);
 
 } // namespace openfoam
 } // namespace dgmf
