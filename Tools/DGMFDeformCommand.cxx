@@ -25,6 +25,9 @@
 
 #include "vtkDGMFDeformFilter.h"
 
+#include "DGMFMotionInTime.h"
+#include "dgmf/Trajectory.h"
+
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -44,6 +47,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -247,16 +251,26 @@ bool WriteAndReport(vtkDGMFDeformFilter* filter, InputKind kind,
 int RunSeries(
   vtkDGMFDeformFilter* filter, InputKind kind, dgmf_cli::CommandOptions options, Times times)
 {
+  // Without --times, the motion's own times (0:1:21, or the table's), not the input's: an
+  // OpenFOAM case's are its time directories (often "0" alone), which gave a series of one frame
+  // at time 0 until 2026-11-30.
   std::vector<double> steps = options.Times;
   if (steps.empty())
   {
-    filter->UpdateInformation();
-    vtkInformation* info = filter->GetOutputInformation(0);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    std::unique_ptr<dgmf::Trajectory> trajectory;
+    if (auto* table = vtkTable::SafeDownCast(filter->GetInputDataObject(1, 0)))
     {
-      const double* values = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-      steps.assign(values, values + info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+      try
+      {
+        trajectory = std::make_unique<dgmf::Trajectory>(dgmf_vtk::ReadTrajectoryTable(table));
+      }
+      catch (const std::exception& e)
+      {
+        std::cerr << "dgmf-deform: error: " << e.what() << "\n";
+        return ExitFailure;
+      }
     }
+    steps = dgmf_vtk::MotionTimeSteps(filter, trajectory.get());
   }
   if (steps.empty())
   {
