@@ -125,6 +125,42 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
       std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
       " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
   }
+  // A row for a body id between 1 and the largest that no moving node has (ids 1 and 3, a row for
+  // 2) would move nothing, and the body meant not at all: an error too (silent until
+  // 2026-11-30). Serial runs only: a piece of a distributed mesh may lack a body's nodes.
+  if (bodies > 1 && !nodes.Distributed && !nodes.BodyIds.empty() &&
+    ((rows && !this->Motions.empty()) || trajectory))
+  {
+    std::vector<bool> present(static_cast<std::size_t>(bodies) + 1, false);
+    for (std::size_t i = 0; i < nodes.LocalNodes; ++i)
+    {
+      if (nodes.Kinds[i] == dgmf::NodeKind::MovingBoundary && nodes.BodyIds[i] >= 1 &&
+        nodes.BodyIds[i] <= bodies)
+      {
+        present[static_cast<std::size_t>(nodes.BodyIds[i])] = true;
+      }
+    }
+    for (std::int32_t k = 1; k <= bodies; ++k)
+    {
+      const bool asked =
+        (rows && this->Motions.count(k) > 0) || (trajectory && trajectory->HasBody(k));
+      if (asked && !present[static_cast<std::size_t>(k)])
+      {
+        std::string have;
+        for (std::int32_t b = 1; b <= bodies; ++b)
+        {
+          have += present[static_cast<std::size_t>(b)]
+            ? (have.empty() ? "" : ", ") + std::to_string(b)
+            : "";
+        }
+        throw std::invalid_argument(
+          std::string(rows && this->Motions.count(k) > 0 ? "Body Motions moves body "
+                                                         : "The trajectory table moves body ") +
+          std::to_string(k) + ", but no moving node has that body id (the mesh's bodies: " + have +
+          ").");
+      }
+    }
+  }
   // With BODY_CENTROID: the centroid of each body's moving nodes; in a distributed run those of
   // every piece (this piece's, then the others' boundary nodes), each position once and in
   // increasing order, so that every process turns about the same centre (each turned about its

@@ -215,3 +215,32 @@ TEST(Bodies, BodyMotionRowsForBodiesTheMeshLacksAreErrors)
   filter->Update();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 1118);
 }
+
+TEST(Bodies, ARowForABodyIdNoNodeHasIsAnError)
+{
+  // Bodies numbered 1 and 3: a row for body 2 moved nothing, and body 3 (meant) stayed still,
+  // without a word, until 2026-11-30. Rows for the bodies the mesh has still work.
+  auto mesh = dgmf_test::ReadShippedMesh("two_circles.vtu", 1118, 2054);
+  vtkDataArray* ids = mesh->GetPointData()->GetArray("BodyId");
+  for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+  {
+    if (ids->GetTuple1(i) == 2)
+    {
+      ids->SetTuple1(i, 3);
+    }
+  }
+  vtkNew<vtkDGMFDeformFilter> filter;
+  dgmf_test::ErrorMessages errors(filter);
+  filter->SetInputData(mesh);
+  filter->SetBoundaryMarkerArrayName("BoundaryMarker");
+  filter->SetBodyIdArrayName("BodyId");
+  filter->SetBodyMotion(2, 0, 0, 0, 2.5, 0, 0, 0, 0, -10);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.Contains(
+    "Body Motions moves body 2, but no moving node has that body id (the mesh's bodies: 1, 3)."));
+  filter->RemoveAllBodyMotions();
+  filter->SetBodyMotion(3, 0, 0, 0, 2.5, 0, 0, 0, 0, -10);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 1118);
+}
