@@ -215,6 +215,7 @@ public:
     needs.Cells = this->Parameters.UsesSubSteps();
     needs.R = !problem.UsesBodies();
     needs.F = true;
+    needs.DisplacementEverywhere = this->Parameters.Mode == DeformationMode::DGMF1;
     return needs;
   }
 

@@ -49,8 +49,9 @@ DeformationReport DeformationMethod::Deform(const DeformationProblem& problem,
   const DelaunayMapping* mapping, const DeformationOutputs& outputs,
   const ParallelFor& parallelFor) const
 {
+  const MethodNeeds needs = this->GetNeeds(problem);
   const std::vector<std::string> warnings =
-    ValidateProblem(problem, !this->GetNeeds(problem).Graph);
+    ValidateProblem(problem, !needs.Graph, !needs.DisplacementEverywhere);
   if (!outputs.Points || (this->GetNeeds(problem).Graph && !mapping))
   {
     throw std::invalid_argument(std::string(this->GetInfo().Name) + " needs the output points" +

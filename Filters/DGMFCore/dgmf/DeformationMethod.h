@@ -64,6 +64,8 @@ struct MethodNeeds
   bool BoundaryWeights = false; ///< DeformationProblem::BoundaryWeights (IDW's A_i)
   bool R = false;               ///< the method writes r (DeformationOutputs::R)
   bool F = false;               ///< the method writes the damping factor f
+  /// Every node's displacement is read (DGMF1: a known field), not only the moving nodes'.
+  bool DisplacementEverywhere = false;
 };
 
 /// What a stored per-node field was computed with: r depends on r0s, f on r0s and u.

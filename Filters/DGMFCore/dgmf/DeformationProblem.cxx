@@ -34,7 +34,8 @@ std::string OutOfRangePointsMessage(std::size_t value)
     std::string(kLargestMagnitudeText) + " or more (point " + std::to_string(value / 3) + ").";
 }
 
-std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints)
+std::vector<std::string> ValidateProblem(
+  const DeformationProblem& problem, bool checkPoints, bool movingDisplacementOnly)
 {
   const std::size_t n = problem.NumberOfNodes;
   if (problem.Dimension != 2 && problem.Dimension != 3)
@@ -130,7 +131,7 @@ std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool
   {
     warnings.push_back("No node is marked as moving: the output has the input's points.");
   }
-  if (problem.Displacement)
+  if (problem.Displacement && movingDisplacementOnly)
   {
     // Only the moving nodes' displacement is used: a non-zero one elsewhere contradicts the
     // marker (a static node meant to move, or the wrong array).

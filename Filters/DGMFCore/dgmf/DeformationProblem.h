@@ -70,9 +70,12 @@ std::string OutOfRangePointsMessage(std::size_t value);
  * too few rigid motions for the bodies, a rigid motion that is not finite, turns beyond
  * +-720 degrees, or leaves the plane of a 2D mesh, and slip nodes that are not SlipBoundary nodes
  * or have no plane. With `checkPoints`, also non-finite point
- * coordinates (the graph methods check them when the graph is built: DelaunayMapping).
+ * coordinates (the graph methods check them when the graph is built: DelaunayMapping). With
+ * `movingDisplacementOnly` (a method that reads the displacement of the moving nodes alone),
+ * a warning counts the other nodes with a non-zero displacement, which the method ignores.
  */
-std::vector<std::string> ValidateProblem(const DeformationProblem& problem, bool checkPoints);
+std::vector<std::string> ValidateProblem(
+  const DeformationProblem& problem, bool checkPoints, bool movingDisplacementOnly = true);
 
 /**
  * The total motion of the boundary nodes, as the interpolation methods (DGM, DGRBF, RBF, IDW)
