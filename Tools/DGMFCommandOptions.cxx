@@ -238,6 +238,9 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   const auto hasValue = [&](int i)
   { return i + 1 < argc && std::strncmp(argv[i + 1], "--", 2) != 0; };
   std::vector<std::string> files;
+  // The option that gave the rotation law and the one that gave the translation law: a second
+  // would replace the first without a word.
+  std::string rotationLaw, translationLaw;
   for (int i = 1; i < argc; ++i)
   {
     if (argv[i][0] != '-')
@@ -313,6 +316,15 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     else if ((option == "--rotation-law" || option == "--translation-law" || option == "--pitch") &&
       ReadLaw(argc, argv, i, option == "--pitch", k, law))
     {
+      std::string& given = option == "--translation-law" ? translationLaw : rotationLaw;
+      if (!given.empty())
+      {
+        std::cerr << "dgmf-deform: " << given << " and " << option << " both give the "
+                  << (option == "--translation-law" ? "translation" : "rotation")
+                  << " law: give one\n";
+        return ExitUsage;
+      }
+      given = option;
       option == "--translation-law" ? filter->SetTranslationLaw(k) : filter->SetRotationLaw(k);
       option == "--translation-law" ? filter->SetTranslationLawParameters(law)
                                     : filter->SetRotationLawParameters(law);
@@ -432,6 +444,17 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     std::cerr << "dgmf-deform: --times needs a motion in time (--rotation-law, --pitch, "
                  "--translation-law or --trajectory)\n";
     return ExitUsage;
+  }
+  if (!options.Trajectory.empty() && !(rotationLaw + translationLaw).empty())
+  {
+    // The table's rows give the motion of their bodies; the laws move the others only.
+    std::cerr << "dgmf-deform: warning: "
+              << (rotationLaw.empty()         ? translationLaw
+                     : translationLaw.empty() ? rotationLaw
+                                              : rotationLaw + " and " + translationLaw)
+              << (rotationLaw.empty() || translationLaw.empty() ? " moves" : " move")
+              << " only the bodies the trajectory table has no rows for (none, when it moves "
+                 "every body)\n";
   }
   if (options.Series && options.Time != "constant")
   {

@@ -328,6 +328,19 @@ class CommandFailures(unittest.TestCase):
         self.assertEqual(code, 0, err)
         self.assertIn("--compression and --vtu-mode are for .vtu outputs", err)
         self.assertIn("without --repair they do nothing", err)
+        # Two rotation laws: the second replaced the first; a law beside a table moving the
+        # one body was dropped (both without a word until 2026-11-30).
+        code, out, err = run(self.circle, self.path("laws.vtu"), "--pitch", 0, 5, 1, 0,
+                             "--rotation-law", "ramp", 0, 10, 0, 1, "--times", "0:1:2")
+        self.assertEqual(code, 2, err)
+        self.assertIn("--pitch and --rotation-law both give the rotation law: give one", err)
+        table = self.path("one_body.csv")
+        with open(table, "w") as handle:
+            handle.write("Time,RZ\n0,0\n1,10\n")
+        code, out, err = run(self.circle, self.path("laws.vtu"), "--pitch", 0, 5, 1, 0,
+                             "--trajectory", table, "--no-write")
+        self.assertEqual(code, 0, err)
+        self.assertIn("--pitch moves only the bodies the trajectory table has no rows for", err)
 
     def test_a_trajectory_column_named_twice_is_refused(self):
         # VTK's table keeps one of two same-named columns: until 2026-11-30 the other was dropped.
