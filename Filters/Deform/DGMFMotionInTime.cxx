@@ -90,7 +90,7 @@ bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable)
     filter->GetTranslationLaw() != vtkDGMFDeformFilter::CONSTANT;
 }
 
-dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
+dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t, bool largest)
 {
   dgmf::RigidMotion motion;
   filter->GetTranslation(motion.Translation);
@@ -123,7 +123,7 @@ dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
   }
   if (rotation.IsTimeDependent())
   {
-    motion.AxisAngleDegrees = rotation.Evaluate(t);
+    motion.AxisAngleDegrees = largest ? rotation.LargestMagnitude() : rotation.Evaluate(t);
   }
   if (translation.IsTimeDependent())
   {
@@ -134,7 +134,7 @@ dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t)
       throw std::invalid_argument("A translation law moves along the Translation's direction: "
                                   "Translation must not be zero.");
     }
-    const double distance = translation.Evaluate(t);
+    const double distance = largest ? translation.LargestMagnitude() : translation.Evaluate(t);
     for (double& component : motion.Translation)
     {
       component = component / length * distance;

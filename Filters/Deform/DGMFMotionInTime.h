@@ -27,9 +27,11 @@ bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable);
  * translation law's value, with a law), RotationCenter, and RotationAngles or RotationAngle about
  * RotationAxis (the rotation law's value, with a law). Throws std::invalid_argument, with the
  * message for the user, for RotationAngles together with a RotationAngle or a rotation law, a
- * translation law with a zero Translation, and bad law parameters.
+ * translation law with a zero Translation, and bad law parameters. With `largest`, the laws'
+ * largest magnitudes instead of their values at `t` (the motion a series' checks judge before
+ * its first frame: an axis of length 0, a 2D mesh turned out of its plane).
  */
-dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t);
+dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t, bool largest = false);
 
 /**
  * The trajectories of a table (the filter's second input): a column "Time"; optionally "Body"

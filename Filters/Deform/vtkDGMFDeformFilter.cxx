@@ -499,6 +499,14 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   const Internals& internal = *this->Internal;
   problem.Motions = internal.BodyMotions.For(this, nodes,
     dgmf_vtk::PropertiesMotionAt(this, internal.Time), internal.Trajectory.get(), internal.Time);
+  if (internal.TimeDependent && !problem.ExtractRigidMotion)
+  {
+    // What the laws reach at their largest, judged now: a series is not half written before an
+    // axis of length 0 or a 2D mesh turned out of its plane shows (at angle 0 both pass).
+    dgmf::ValidateMotions(problem,
+      internal.BodyMotions.For(this, nodes, dgmf_vtk::PropertiesMotionAt(this, internal.Time, true),
+        internal.Trajectory.get(), internal.Time));
+  }
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =
     dgmf_vtk::ReuseOutputPoints(cache.OutputPoints, input, output, n);

@@ -121,6 +121,21 @@ class CommandFailures(unittest.TestCase):
         for name in listed:
             self.assertGreater(meshes.read(os.path.join(folder, name)).GetNumberOfPoints(), 0)
 
+    def test_a_series_whose_motion_fails_later_writes_no_frame(self):
+        # An axis of length 0, or a 2D mesh turned about x: at angle 0 (frame 0) both passed, so
+        # frame 0 and a .pvd were written before the run failed at time 0.5 (until 2026-11-30).
+        for name, source, axis in (("zero_axis", "sphere_in_box.vtu", (0, 0, 0)),
+                                   ("out_of_plane", "pitching_airfoil.vtu", (1, 0, 0))):
+            with self.subTest(case=name):
+                folder = self.path("series_" + name)
+                shutil.rmtree(folder, ignore_errors=True)
+                code, out, err = run(os.path.join(ARGS.data, source),
+                                     os.path.join(folder, "p.vtu"), "--axis", *axis,
+                                     "--pitch", 0, 20, 1, 0, "--times", "0:1:3")
+                self.assertEqual(code, 1, err)
+                self.assertIn("failed at time 0; 0 earlier frames were written", err)
+                self.assertEqual(glob.glob(os.path.join(folder, "*")), [])
+
     def test_a_mesh_without_a_marker_whose_nodes_cannot_move_is_an_error(self):
         # Without a marker array and with a zero displacement no node moves: until 2026-11-30
         # the input's points were written, exit 0, after a warning.

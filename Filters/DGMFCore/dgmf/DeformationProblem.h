@@ -64,6 +64,14 @@ constexpr const char* NoBoundaryNodeMessage =
 std::string OutOfRangePointsMessage(std::size_t value);
 
 /**
+ * Checks the rigid motions of `problem`'s bodies (one per body): each finite and within +-720
+ * degrees, about an axis of non-zero length, and in the plane of a 2D mesh. Throws
+ * std::invalid_argument with the message for the user ("Body k: ..." with several bodies).
+ * ValidateProblem checks problem.Motions with it; a series checks the motions its laws reach.
+ */
+void ValidateMotions(const DeformationProblem& problem, const std::vector<RigidMotion>& motions);
+
+/**
  * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
  * std::invalid_argument, with a message for the user, for: a dimension other than 2 or 3, no node,
  * missing points or kinds, a displacement that is not finite, or not in the plane of a 2D mesh,
