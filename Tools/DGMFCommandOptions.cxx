@@ -193,7 +193,9 @@ std::string Usage()
     "  --marker NAME           boundary-marker point array (default "
     "BoundaryMarker if present)\n"
     "  --displacement NAME     displacement point array (default Displacement "
-    "if present)\n";
+    "if present)\n"
+    "  --body-id NAME          body-id point array: 0 off the bodies, 1, 2, ... each body\n"
+    "                          (several bodies: Documentation/bodies.md; default none)\n";
   usage +=
     "  --method NAME           " + vtkDGMFDeformFilter::GetMethodKeys(", ") + " (default dgmf)\n";
   usage +=
@@ -382,6 +384,10 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       options.Marker = argv[++i];
       options.MarkerGiven = true;
+    }
+    else if (option == "--body-id" && hasValue(i))
+    {
+      filter->SetBodyIdArrayName(argv[++i]);
     }
     else if (option == "--displacement" && hasValue(i))
     {

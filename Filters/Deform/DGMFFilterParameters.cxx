@@ -115,7 +115,8 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
     throw std::invalid_argument("Body Motions moves body " +
       std::to_string(this->Motions.rbegin()->first) + ", but the mesh has " +
       std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
-      " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
+      " (numbered from 1: the body-id array, Body Id Array or dgmf-deform's --body-id, or the "
+      "moving boundaries in the order named).");
   }
   if (trajectory && trajectory->GetLargestBody() > bodies)
   {
@@ -123,7 +124,8 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
     throw std::invalid_argument("The trajectory table moves body " +
       std::to_string(trajectory->GetLargestBody()) + ", but the mesh has " +
       std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
-      " (numbered from 1: the body-id array, or the moving boundaries in the order named).");
+      " (numbered from 1: the body-id array, Body Id Array or dgmf-deform's --body-id, or the "
+      "moving boundaries in the order named).");
   }
   // A row for a body id between 1 and the largest that no moving node has (ids 1 and 3, a row for
   // 2) would move nothing, and the body meant not at all: an error too (silent until

@@ -136,6 +136,30 @@ class CommandFailures(unittest.TestCase):
                 self.assertIn("failed at time 0; 0 earlier frames were written", err)
                 self.assertEqual(glob.glob(os.path.join(folder, "*")), [])
 
+    def test_the_body_id_array_is_an_option(self):
+        # A two-body table on two_circles.vtu needs its BodyId array, which the command could not
+        # select until 2026-11-30 (the error named an array no option gave).
+        table = self.path("two_bodies.csv")
+        with open(table, "w") as handle:
+            handle.write("Time,Body,RZ\n0,1,0\n0,2,0\n1,1,20\n1,2,-20\n")
+        source = os.path.join(ARGS.data, "two_circles.vtu")
+        folder = self.path("two_bodies")
+        shutil.rmtree(folder, ignore_errors=True)
+        code, out, err = run(source, os.path.join(folder, "t.vtu"), "--trajectory", table)
+        self.assertEqual(code, 1, err)
+        self.assertIn("dgmf-deform's --body-id", err)
+        code, out, err = run(source, os.path.join(folder, "t.vtu"), "--trajectory", table,
+                             "--body-id", "BodyId")
+        self.assertEqual(code, 0, err)
+        grid = meshes.read(source)
+        ids = grid.GetPointData().GetArray("BodyId")
+        moved = meshes.read(os.path.join(folder, "t_0001.vtu"))
+        for body in (1, 2):
+            largest = max(math.dist(grid.GetPoint(i), moved.GetPoint(i))
+                          for i in range(grid.GetNumberOfPoints())
+                          if ids.GetTuple1(i) == body)
+            self.assertGreater(largest, 0.05, body)
+
     def test_a_mesh_without_a_marker_whose_nodes_cannot_move_is_an_error(self):
         # Without a marker array and with a zero displacement no node moves: until 2026-11-30
         # the input's points were written, exit 0, after a warning.
