@@ -88,9 +88,15 @@ const dgmf::DelaunayMapping& MappingCache::Update(const dgmf::DeformationProblem
   }
   if (built.GetNumberOfOutsideNodes() > 0)
   {
+    const std::size_t slipOutside = built.GetNumberOfSlipOutsideNodes();
     warnings.push_back(std::to_string(built.GetNumberOfOutsideNodes()) +
       " nodes lie outside the Delaunay graph of the boundary nodes (is the whole outer boundary "
-      "marked?); they use the hull facet they project onto.");
+      "marked?); they use the hull facet they project onto." +
+      (slipOutside == 0 ? std::string()
+                        : " " + std::to_string(slipOutside) +
+            " of them are slip nodes: where a slip boundary meets the static boundary, mark the "
+            "nodes of their common edges static (1), or the slip boundary lies outside the graph "
+            "of the static and moving nodes and its nodes barely move."));
   }
   return built;
 }

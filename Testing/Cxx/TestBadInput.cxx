@@ -521,3 +521,33 @@ TEST(BadInput, ADeformationThatCannotFitInMemoryIsRefusedBeforeItStarts)
   FilterRun allowed;
   EXPECT_EQ(allowed.Execute(mesh)->GetNumberOfPoints(), 822);
 }
+
+TEST(BadInput, ASlipFaceMarkedEdgesIncludedIsSaidAsSuch)
+{
+  // The box's lowest face marked slip (3), its edges included: the slip nodes lie outside the
+  // graph of the static and moving nodes and barely move. The warning asked "is the whole outer
+  // boundary marked?" (it is) until 2026-11-30; it now says what to mark. With the edges static,
+  // no slip node is outside.
+  for (const bool edges : { true, false })
+  {
+    auto mesh = dgmf_test::ReadShippedMesh("sphere_in_box.vtu", 3200);
+    vtkDataArray* marker = mesh->GetPointData()->GetArray("BoundaryMarker");
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      mesh->GetPoint(i, p);
+      const bool inner = std::abs(p[0]) < 5.0 && std::abs(p[1]) < 5.0;
+      if (marker->GetTuple1(i) == 1 && p[2] == -5.0 && (edges || inner))
+      {
+        marker->SetTuple1(i, 3);
+      }
+    }
+    FilterRun run;
+    run.Filter->SetTranslation(2.0, 0.0, 0.0);
+    ASSERT_EQ(run.Execute(mesh)->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << edges;
+    EXPECT_EQ(FilterRun::Has(run.Warnings,
+                "of them are slip nodes: where a slip boundary meets the static boundary, mark "
+                "the nodes of their common edges static (1)"),
+      edges);
+  }
+}

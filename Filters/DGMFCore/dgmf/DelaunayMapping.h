@@ -155,6 +155,8 @@ public:
   /// Number of interior nodes outside the graph's convex hull (interpolated in the hull facet they
   /// project onto).
   std::size_t GetNumberOfOutsideNodes() const { return this->OutsideNodes; }
+  /// The slip nodes among them (outside even a hair inside their plane).
+  std::size_t GetNumberOfSlipOutsideNodes() const { return this->SlipOutsideNodes; }
   /// Number of interior nodes found from their stride neighbour's element (see hintStride).
   std::size_t GetNumberOfStrideHits() const { return this->StrideHits; }
   /// True when the walks started from a LocationStartGrid because the nodes' numbering is not
