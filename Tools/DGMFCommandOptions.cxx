@@ -108,8 +108,10 @@ bool ReadLaw(int argc, char* argv[], int& i, bool pitch, int& kind, double param
 
 /// START:END:COUNT as COUNT equally spaced times (COUNT >= 1; END >= START; END > START when
 /// COUNT > 1, else the frames would share one time; COUNT 1 gives START alone).
-bool ReadTimes(const char* text, std::vector<double>& times)
+/// START:END:COUNT into `times`; returns why not ("" when read).
+std::string ReadTimes(const char* text, std::vector<double>& times)
 {
+  const std::string form = "give START:END:COUNT, such as 0:1:21";
   std::stringstream stream(text);
   std::string start, end, count;
   std::string rest;
@@ -118,7 +120,7 @@ bool ReadTimes(const char* text, std::vector<double>& times)
     std::count(text, text + std::strlen(text), ':') != 2 || !Plain(start) || !Plain(end) ||
     !Plain(count))
   {
-    return false; // (also "0:1:2:junk")
+    return form; // (also "0:1:2:junk")
   }
   try
   {
@@ -129,11 +131,22 @@ bool ReadTimes(const char* text, std::vector<double>& times)
     whole = whole && used == end.size();
     const long n = std::stol(count, &used);
     whole = whole && used == count.size();
-    // (b - a) k must be finite too: the times are a + (b - a) k / (n - 1), here and in the filter.
-    if (!whole || !std::isfinite(a) || !std::isfinite(b) || b < a || n < 1 || n > 1000000 ||
-      (n > 1 && !(b > a)) || !std::isfinite((b - a) * static_cast<double>(n - 1)))
+    if (!whole || !std::isfinite(a) || !std::isfinite(b))
     {
-      return false;
+      return form + " (finite numbers, COUNT a whole number)";
+    }
+    if (n < 1 || n > 1000000)
+    {
+      return "COUNT must be 1 to 1000000 frames";
+    }
+    if (b < a || (n > 1 && !(b > a)))
+    {
+      return n > 1 ? "END must be above START for several frames" : "END must not be below START";
+    }
+    // (b - a) k must be finite too: the times are a + (b - a) k / (n - 1), here and in the filter.
+    if (!std::isfinite((b - a) * static_cast<double>(n - 1)))
+    {
+      return "the times are too far apart to be computed";
     }
     times.clear();
     for (long k = 0; k < n; ++k)
@@ -141,11 +154,11 @@ bool ReadTimes(const char* text, std::vector<double>& times)
       times.push_back(
         n == 1 ? a : a + (b - a) * static_cast<double>(k) / static_cast<double>(n - 1));
     }
-    return true;
+    return std::string();
   }
   catch (const std::exception&)
   {
-    return false;
+    return form + " (numbers in range)";
   }
 }
 } // namespace
@@ -337,9 +350,14 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
       options.Trajectory = argv[++i];
       options.Series = true;
     }
-    else if (option == "--times" && i + 1 < argc && ReadTimes(argv[i + 1], options.Times))
+    else if (option == "--times" && i + 1 < argc)
     {
-      ++i;
+      const std::string why = ReadTimes(argv[++i], options.Times);
+      if (!why.empty())
+      {
+        std::cerr << "dgmf-deform: bad option or value: --times " << argv[i] << ": " << why << "\n";
+        return ExitUsage;
+      }
       filter->SetTimeRange(options.Times.front(), options.Times.back());
       filter->SetNumberOfTimeSteps(static_cast<int>(options.Times.size()));
     }

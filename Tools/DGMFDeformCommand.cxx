@@ -26,6 +26,7 @@
 #include "vtkDGMFDeformFilter.h"
 
 #include "DGMFMotionInTime.h"
+#include "dgmf/NumberText.h"
 #include "dgmf/Trajectory.h"
 
 #include "vtkCompositeDataSet.h"
@@ -278,6 +279,14 @@ int RunSeries(
     return ExitFailure;
   }
   const bool files = kind != InputKind::OpenFOAMCase;
+  if (!files && steps.front() < 0.0)
+  {
+    // Said before the first frame (it was "could not write the points" after it).
+    std::cerr << "dgmf-deform: an OpenFOAM series writes time directories from 0 on: the series "
+                 "starts at "
+              << dgmf::NumberText(steps.front()) << " (give --times from 0)\n";
+    return ExitUsage;
+  }
   const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";
   if (files && firstFrame.empty())
   {
@@ -337,12 +346,12 @@ int RunSeries(
   for (std::size_t k = 0; k < steps.size(); ++k)
   {
     const double t = steps[k];
-    dgmf_cli::SetStage("deforming " + options.Input + " at time " + std::to_string(t));
+    dgmf_cli::SetStage("deforming " + options.Input + " at time " + dgmf::NumberText(t));
     // The frame's line first, then what the frame's run says (each frame's warnings, even those
     // an earlier frame gave word for word). An OpenFOAM series names each frame by its time
     // directory.
     std::cout << "dgmf-deform: time ";
-    (files ? std::cout << t : std::cout << timeNames[k]);
+    std::cout << (files ? dgmf::NumberText(t) : timeNames[k]); // as the .pvd has it
     std::cout << " (frame " << k + 1 << " of " << steps.size() << ")" << std::endl;
     dgmf_cli::ForgetPrintedMessages();
     std::string why;
@@ -350,7 +359,7 @@ int RunSeries(
       filter, options.FailOnInverted, [&]() { filter->UpdateTimeStep(t); }, times, why);
     if (verdict != ExitSuccess)
     {
-      std::cerr << "dgmf-deform: " << why << " at time " << t << "; "
+      std::cerr << "dgmf-deform: " << why << " at time " << dgmf::NumberText(t) << "; "
                 << (verdict == ExitInvertedCells
                        ? "this frame was not written (--fail-on-inverted), " +
                          std::to_string(frames.size()) + " earlier frames were written\n"

@@ -160,6 +160,25 @@ class CommandFailures(unittest.TestCase):
                           if ids.GetTuple1(i) == body)
             self.assertGreater(largest, 0.05, body)
 
+    def test_series_times_are_printed_exactly_and_refused_times_say_why(self):
+        # Until 2026-11-30 each refusal printed "bad option or value: --times" and the usage page,
+        # and the frame lines showed 6 digits ("time 0.123457" for three different times).
+        airfoil = os.path.join(ARGS.data, "pitching_airfoil.vtu")
+        pitch = ("--pitch", 0, 5, 1, 0)
+        for times, why in (("1:0:5", "END must be above START for several frames"),
+                           ("0:1:0", "COUNT must be 1 to 1000000 frames"),
+                           ("0:1:1000001", "COUNT must be 1 to 1000000 frames"),
+                           ("0:1", "give START:END:COUNT, such as 0:1:21")):
+            with self.subTest(times=times):
+                code, out, err = run(airfoil, self.path("t.vtu"), *pitch, "--times", times)
+                self.assertEqual(code, 2, err)
+                self.assertIn("bad option or value: --times %s: %s" % (times, why), err)
+                self.assertNotIn("usage", err.lower())
+        code, out, err = run(airfoil, self.path("exact/t.vtu"), *pitch, "--times",
+                             "0.1234567891234:0.2:2", "--no-write")
+        self.assertEqual(code, 0, err)
+        self.assertIn("time 0.1234567891234 (frame 1 of 2)", out)
+
     def test_a_mesh_without_a_marker_whose_nodes_cannot_move_is_an_error(self):
         # Without a marker array and with a zero displacement no node moves: until 2026-11-30
         # the input's points were written, exit 0, after a warning.
