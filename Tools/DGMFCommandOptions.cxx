@@ -2,6 +2,8 @@
 
 #include "vtkDGMFDeformFilter.h"
 
+#include "dgmf/MotionLaw.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -340,6 +342,20 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
         return ExitUsage;
       }
       given = option;
+      // Bad parameters (a ramp ending before it starts, a negative frequency) are a bad value,
+      // said now (exit 2), not at the first frame (exit 1).
+      dgmf::MotionLaw checked;
+      checked.Kind = static_cast<dgmf::MotionLawKind>(k);
+      std::copy_n(law, 4, checked.Parameters);
+      try
+      {
+        checked.Check(option == "--translation-law" ? "the translation law" : "the rotation law");
+      }
+      catch (const std::invalid_argument& e)
+      {
+        std::cerr << "dgmf-deform: bad option or value: " << option << ": " << e.what() << "\n";
+        return ExitUsage;
+      }
       option == "--translation-law" ? filter->SetTranslationLaw(k) : filter->SetRotationLaw(k);
       option == "--translation-law" ? filter->SetTranslationLawParameters(law)
                                     : filter->SetRotationLawParameters(law);

@@ -174,6 +174,13 @@ class CommandFailures(unittest.TestCase):
                 self.assertEqual(code, 2, err)
                 self.assertIn("bad option or value: --times %s: %s" % (times, why), err)
                 self.assertNotIn("usage", err.lower())
+        # Bad law parameters are bad values too (exit 2 before any work; exit 1 at frame 0 before).
+        for law in (("--rotation-law", "ramp", 0, 10, 1, 0), ("--pitch", 0, 10, -1, 0)):
+            with self.subTest(law=law):
+                code, out, err = run(airfoil, self.path("t.vtu"), *law, "--times", "0:1:3")
+                self.assertEqual(code, 2, err)
+                self.assertIn("bad option or value: %s: the rotation law" % law[0], err)
+                self.assertNotIn("frame 1", out)
         code, out, err = run(airfoil, self.path("exact/t.vtu"), *pitch, "--times",
                              "0.1234567891234:0.2:2", "--no-write")
         self.assertEqual(code, 0, err)
