@@ -452,10 +452,11 @@ std::string ListPatchNames(const std::string& path)
   return names;
 }
 
-std::string WriteOpenFOAMPoints(
-  vtkAlgorithm* deformer, const std::string& outputCase, const std::string& time)
+std::string WriteOpenFOAMPoints(vtkAlgorithm* deformer, const std::string& outputCase,
+  const std::string& time, bool checkOtherMeshes)
 {
   vtkNew<vtkDGMFOpenFOAMWriter> writer;
+  writer->SetCheckOtherMeshes(checkOtherMeshes);
   writer->SetInputConnection(deformer->GetOutputPort());
   writer->SetFileName(outputCase.c_str());
   writer->SetTimeDirectory(time.c_str());

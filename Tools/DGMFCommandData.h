@@ -108,10 +108,11 @@ std::string ListPatchNames(const std::string& path);
 /**
  * Writes the points of the deformed output of `deformer` (whose input comes from the OpenFOAM
  * reader ReadOpenFOAMCase made) into the case `outputCase` at `time` (vtkDGMFOpenFOAMWriter);
- * returns the file written, or "" on failure (the error is printed).
+ * returns the file written, or "" on failure (the error is printed). `checkOtherMeshes`: say
+ * which other meshes of the case a solver would read instead (a series: at its last frame).
  */
-std::string WriteOpenFOAMPoints(
-  vtkAlgorithm* deformer, const std::string& outputCase, const std::string& time);
+std::string WriteOpenFOAMPoints(vtkAlgorithm* deformer, const std::string& outputCase,
+  const std::string& time, bool checkOtherMeshes = true);
 } // namespace dgmf_cli
 
 #endif

@@ -43,6 +43,9 @@ struct CommandOptions
   std::string Trajectory;      ///< --trajectory: a CSV table of body motions in time
   std::vector<double> Times;   ///< --times START:END:COUNT (empty: the filter's own)
   bool Series = false;         ///< the motion depends on time: one output per time (a series)
+  /// OpenFOAM: say which other meshes of the case a solver would read (a series: at its last
+  /// frame only, the later times' meshes of an earlier run being replaced by the series)
+  bool CheckOtherMeshes = true;
 };
 
 /// The usage text.

@@ -186,7 +186,8 @@ bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   else
   {
     dgmf_cli::SetStage("writing into " + options.Output);
-    written = dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time);
+    written =
+      dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time, options.CheckOtherMeshes);
     if (written.empty())
     {
       std::cerr << "dgmf-deform: error: could not write the points into " << options.Output << "\n";
@@ -375,6 +376,7 @@ int RunSeries(
     else
     {
       frame.Time = timeNames[k];
+      frame.CheckOtherMeshes = k + 1 == steps.size();
     }
     std::string written;
     if (!WriteAndReport(filter, kind, frame, times, written))

@@ -134,7 +134,10 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     }
     try
     {
-      this->WarnAboutOtherMeshes(caseDirectory);
+      if (this->CheckOtherMeshes)
+      {
+        this->WarnAboutOtherMeshes(caseDirectory);
+      }
     }
     catch (const std::exception&)
     {

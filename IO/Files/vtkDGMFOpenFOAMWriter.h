@@ -68,6 +68,18 @@ public:
   vtkGetStringMacro(TimeDirectory);
   ///@}
 
+  ///@{
+  /**
+   * Whether Write() warns about the other meshes of the case a solver would read instead of the
+   * points written (a time directory's polyMesh hiding them, processor directories). A series
+   * turns it off for all frames but its last: the later times' meshes an earlier run left are
+   * replaced by the series itself. Default: on.
+   */
+  vtkSetMacro(CheckOtherMeshes, bool);
+  vtkGetMacro(CheckOtherMeshes, bool);
+  vtkBooleanMacro(CheckOtherMeshes, bool);
+  ///@}
+
   /// The undeformed mesh (port 1, optional): the mesh as read, before the deformation.
   void SetReferenceConnection(vtkAlgorithmOutput* output);
   void SetReferenceData(vtkDataObject* reference);
@@ -84,6 +96,7 @@ protected:
   /// Warns about meshes a solver would read instead of the one written (an earlier time's
   /// polyMesh, processor directories).
   void WarnAboutOtherMeshes(const std::filesystem::path& caseDirectory);
+  bool CheckOtherMeshes = true;
 
   char* FileName = nullptr;
   char* SourceCase = nullptr;
