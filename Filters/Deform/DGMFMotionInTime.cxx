@@ -4,6 +4,8 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -88,6 +90,52 @@ bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable)
 {
   return hasTrajectoryTable || filter->GetRotationLaw() != vtkDGMFDeformFilter::CONSTANT ||
     filter->GetTranslationLaw() != vtkDGMFDeformFilter::CONSTANT;
+}
+
+MotionInTime MotionOfExecution(
+  vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* outInfo)
+{
+  MotionInTime motion;
+  motion.TimeDependent = IsMotionInTime(filter, table != nullptr);
+  if (!motion.TimeDependent)
+  {
+    return motion;
+  }
+  if (table)
+  {
+    motion.Trajectory = std::make_unique<dgmf::Trajectory>(ReadTrajectoryTable(table));
+  }
+  motion.Time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    : MotionTimeSteps(filter, motion.Trajectory.get()).front();
+  return motion;
+}
+
+void ReportMotionTimeSteps(
+  vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!IsMotionInTime(filter, table != nullptr) ||
+    inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    return;
+  }
+  std::vector<double> steps = MotionTimeSteps(filter, nullptr);
+  if (table && table->GetNumberOfRows() > 0)
+  {
+    try
+    {
+      const dgmf::Trajectory trajectory = ReadTrajectoryTable(table);
+      steps = MotionTimeSteps(filter, &trajectory);
+    }
+    catch (const std::exception&)
+    {
+      // reported by RequestData
+    }
+  }
+  outInfo->Set(
+    vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
+  const double range[2] = { steps.front(), steps.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
 }
 
 dgmf::RigidMotion PropertiesMotionAt(vtkDGMFDeformFilter* filter, double t, bool largest)

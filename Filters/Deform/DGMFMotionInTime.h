@@ -14,6 +14,7 @@
 #include <vector>
 
 class vtkDGMFDeformFilter;
+class vtkInformation;
 class vtkTable;
 
 namespace dgmf_vtk
@@ -21,6 +22,30 @@ namespace dgmf_vtk
 
 /// True when the filter's motion depends on time: a law other than Constant, or a table connected.
 bool IsMotionInTime(vtkDGMFDeformFilter* filter, bool hasTrajectoryTable);
+
+/// One execution's motion in time.
+struct MotionInTime
+{
+  bool TimeDependent = false; ///< a law other than Constant, or a trajectory table
+  double Time = 0.0;          ///< the time the motion is taken at (0 when not time dependent)
+  std::unique_ptr<dgmf::Trajectory> Trajectory; ///< the table's motions, when one is connected
+};
+
+/**
+ * The motion in time of the execution about to run (RequestData): the time asked for downstream
+ * (`outInfo`'s UPDATE_TIME_STEP), else the first of the motion's time steps, and the trajectory
+ * `table` read (may be null). Throws std::invalid_argument for a table that cannot be read.
+ */
+MotionInTime MotionOfExecution(
+  vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* outInfo);
+
+/**
+ * RequestInformation's part: when the motion depends on time and the input (`inInfo`) has no time
+ * steps, the motion's own (MotionTimeSteps, the table's when it can be read) and their range are
+ * set in `outInfo`; an input with time steps keeps them (the pipeline copied them already).
+ */
+void ReportMotionTimeSteps(
+  vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* inInfo, vtkInformation* outInfo);
 
 /**
  * The motion the filter's properties give at time `t`: Translation (its direction times the

@@ -43,10 +43,7 @@ struct vtkDGMFDeformFilter::Internals
     std::make_unique<dgmf_vtk::DeformationCaches>();
   dgmf_vtk::BodyMotionTable BodyMotions;  ///< SetBodyMotion
   dgmf_vtk::BoundarySelection Boundaries; ///< AddMovingBoundary, AddStaticBoundary, AddSlipBoundary
-  // This execution's motion in time: the time, and the trajectory table's motions (if connected).
-  bool TimeDependent = false;
-  double Time = 0.0;
-  std::unique_ptr<dgmf::Trajectory> Trajectory;
+  dgmf_vtk::MotionInTime Motion; ///< this execution's time, and the trajectory table's motions
 };
 
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
@@ -189,7 +186,7 @@ void vtkDGMFDeformFilter::ReleaseCache()
 
 double vtkDGMFDeformFilter::GetLastMotionTime() const
 {
-  return this->Internal->Time;
+  return this->Internal->Motion.Time;
 }
 
 void vtkDGMFDeformFilter::SetTrajectoryConnection(vtkAlgorithmOutput* output)
@@ -223,8 +220,6 @@ int vtkDGMFDeformFilter::RequestInformation(
 {
   // A motion in time on an input without time: the filter's own time steps (input with time steps
   // keeps them: the pipeline copied them already).
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   // The table's times are needed now: its source runs ahead of this filter's data pass (a reader
   // reads it once; data set directly is there already).
   vtkTable* table = nullptr;
@@ -233,28 +228,8 @@ int vtkDGMFDeformFilter::RequestInformation(
     this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
     table = vtkTable::SafeDownCast(this->GetInputDataObject(1, 0));
   }
-  if (!dgmf_vtk::IsMotionInTime(this, table != nullptr) ||
-    inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
-  {
-    return 1;
-  }
-  std::vector<double> steps = dgmf_vtk::MotionTimeSteps(this, nullptr);
-  if (table && table->GetNumberOfRows() > 0)
-  {
-    try
-    {
-      const dgmf::Trajectory trajectory = dgmf_vtk::ReadTrajectoryTable(table);
-      steps = dgmf_vtk::MotionTimeSteps(this, &trajectory);
-    }
-    catch (const std::exception&)
-    {
-      // reported by RequestData
-    }
-  }
-  outInfo->Set(
-    vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
-  const double range[2] = { steps.front(), steps.back() };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  dgmf_vtk::ReportMotionTimeSteps(
+    this, table, inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(0));
   return 1;
 }
 
@@ -302,30 +277,17 @@ int vtkDGMFDeformFilter::RequestData(
   // The motion's time: the one asked for downstream (else the first step), when it depends on
   // time; and the trajectories of the table, if one is connected.
   Internals& internal = *this->Internal;
-  vtkTable* table = vtkTable::GetData(inputVector[1], 0);
-  internal.Trajectory.reset();
-  internal.TimeDependent = dgmf_vtk::IsMotionInTime(this, table != nullptr);
-  internal.Time = 0.0;
-  if (internal.TimeDependent)
+  internal.Motion = dgmf_vtk::MotionInTime(); // none, until this execution's is read
+  try
   {
-    try
-    {
-      if (table)
-      {
-        internal.Trajectory =
-          std::make_unique<dgmf::Trajectory>(dgmf_vtk::ReadTrajectoryTable(table));
-      }
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorMacro(<< e.what());
-      outputObject->Initialize();
-      return 0;
-    }
-    vtkInformation* outInfo = outputVector->GetInformationObject(0);
-    internal.Time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      : dgmf_vtk::MotionTimeSteps(this, internal.Trajectory.get()).front();
+    internal.Motion = dgmf_vtk::MotionOfExecution(
+      this, vtkTable::GetData(inputVector[1], 0), outputVector->GetInformationObject(0));
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    outputObject->Initialize();
+    return 0;
   }
 
   // The merge (1) and steps 2-4, check, deform and write the outputs (Execute), on the filter's
@@ -416,9 +378,9 @@ int vtkDGMFDeformFilter::RequestData(
   {
     composite->ScatterResult(output, patchesOutput, compositeOutput);
   }
-  if (status && internal.TimeDependent)
+  if (status && internal.Motion.TimeDependent)
   {
-    outputObject->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), internal.Time);
+    outputObject->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), internal.Motion.Time);
   }
   return status;
 }
@@ -497,15 +459,17 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   dgmf::DeformationProblem problem = nodes.ToProblem();
   problem.ExtractRigidMotion = this->RigidMotionMode == EXTRACTED;
   const Internals& internal = *this->Internal;
-  problem.Motions = internal.BodyMotions.For(this, nodes,
-    dgmf_vtk::PropertiesMotionAt(this, internal.Time), internal.Trajectory.get(), internal.Time);
-  if (internal.TimeDependent && !problem.ExtractRigidMotion)
+  problem.Motions =
+    internal.BodyMotions.For(this, nodes, dgmf_vtk::PropertiesMotionAt(this, internal.Motion.Time),
+      internal.Motion.Trajectory.get(), internal.Motion.Time);
+  if (internal.Motion.TimeDependent && !problem.ExtractRigidMotion)
   {
     // What the laws reach at their largest, judged now: a series is not half written before an
     // axis of length 0 or a 2D mesh turned out of its plane shows (at angle 0 both pass).
     dgmf::ValidateMotions(problem,
-      internal.BodyMotions.For(this, nodes, dgmf_vtk::PropertiesMotionAt(this, internal.Time, true),
-        internal.Trajectory.get(), internal.Time));
+      internal.BodyMotions.For(this, nodes,
+        dgmf_vtk::PropertiesMotionAt(this, internal.Motion.Time, true),
+        internal.Motion.Trajectory.get(), internal.Motion.Time));
   }
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =
@@ -542,9 +506,9 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   }
   dgmf_vtk::AddMethodResults(output, result.R, result.F, result.Report, result.Needs.Graph,
     result.GraphReused, method->GetInfo().Name, nodes.LocalNodes);
-  if (internal.TimeDependent)
+  if (internal.Motion.TimeDependent)
   {
-    dgmf_vtk::AddFieldValue(output->GetFieldData(), dgmf::names::MotionTime, internal.Time);
+    dgmf_vtk::AddFieldValue(output->GetFieldData(), dgmf::names::MotionTime, internal.Motion.Time);
   }
   const auto qualityStart = std::chrono::steady_clock::now();
   const dgmf_vtk::HexReferences hexReferences = this->ComputeQuality && input->GetPoints()
