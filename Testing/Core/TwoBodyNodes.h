@@ -8,6 +8,9 @@
 
 #include "SyntheticNodes.h"
 
+#include "dgmf/DelaunayMapping.h"
+#include "dgmf/ParallelFor.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,6 +20,14 @@
 
 namespace dgmf_test
 {
+
+/// The Delaunay mapping of a node set (its graph from its boundary nodes, every node located).
+inline dgmf::DelaunayMapping Map(
+  const NodeSet& set, const dgmf::ParallelFor& parallelFor = dgmf::SerialFor)
+{
+  return dgmf::DelaunayMapping(
+    set.Dimension, set.Points.data(), set.Size(), set.Kinds.data(), parallelFor);
+}
 
 /// A node set with one body id per node (0: not on a body; 1, 2: the body).
 struct BodyNodeSet : NodeSet
