@@ -51,7 +51,7 @@ DeformationReport DeformationMethod::Deform(const DeformationProblem& problem,
 {
   const MethodNeeds needs = this->GetNeeds(problem);
   const std::vector<std::string> warnings =
-    ValidateProblem(problem, !needs.Graph, !needs.DisplacementEverywhere);
+    ValidateProblem(problem, !needs.Graph, needs.DisplacementEverywhere);
   if (!outputs.Points || (this->GetNeeds(problem).Graph && !mapping))
   {
     throw std::invalid_argument(std::string(this->GetInfo().Name) + " needs the output points" +

@@ -65,7 +65,7 @@ void ValidateMotions(const DeformationProblem& problem, const std::vector<RigidM
 }
 
 std::vector<std::string> ValidateProblem(
-  const DeformationProblem& problem, bool checkPoints, bool movingDisplacementOnly)
+  const DeformationProblem& problem, bool checkPoints, bool displacementEverywhere)
 {
   const std::size_t n = problem.NumberOfNodes;
   if (problem.Dimension != 2 && problem.Dimension != 3)
@@ -136,17 +136,23 @@ std::vector<std::string> ValidateProblem(
   {
     warnings.push_back("No node is marked as moving: the output has the input's points.");
   }
-  if (problem.Displacement && movingDisplacementOnly)
+  if (problem.Displacement)
   {
-    // Only the moving nodes' displacement is used: a non-zero one elsewhere contradicts the
-    // marker (a static node meant to move, or the wrong array).
+    // A non-zero displacement where the method does not read it contradicts the marker (a static
+    // node meant to move, or the wrong array): elsewhere than on the moving nodes, or, for a
+    // method that reads every node's value (DGMF1), on the static nodes, which never move.
+    const auto ignores = [&](NodeKind kind)
+    {
+      return displacementEverywhere ? kind == NodeKind::StaticBoundary
+                                    : kind != NodeKind::MovingBoundary;
+    };
     std::size_t ignored = 0, largestAt = 0;
     double largest = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
       const double* d = problem.Displacement + 3 * i;
       const double size = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      if (problem.Kinds[i] != NodeKind::MovingBoundary && size > 0.0)
+      if (size > 0.0 && ignores(problem.Kinds[i]))
       {
         ++ignored;
         if (size > largest)
@@ -159,9 +165,11 @@ std::vector<std::string> ValidateProblem(
     if (ignored > 0)
     {
       warnings.push_back(std::to_string(ignored) +
-        " nodes not marked as moving have a non-zero displacement (the largest, " +
-        Number(largest) + ", at point " + std::to_string(largestAt) +
-        "); it is ignored: only moving nodes follow the displacement array.");
+        (displacementEverywhere ? " static nodes" : " nodes not marked as moving") +
+        " have a non-zero displacement (the largest, " + Number(largest) + ", at point " +
+        std::to_string(largestAt) + "); it is ignored: " +
+        (displacementEverywhere ? "static nodes do not move."
+                                : "only moving nodes follow the displacement array."));
     }
   }
   return warnings;

@@ -79,11 +79,12 @@ void ValidateMotions(const DeformationProblem& problem, const std::vector<RigidM
  * +-720 degrees, or leaves the plane of a 2D mesh, and slip nodes that are not SlipBoundary nodes
  * or have no plane. With `checkPoints`, also non-finite point
  * coordinates (the graph methods check them when the graph is built: DelaunayMapping). With
- * `movingDisplacementOnly` (a method that reads the displacement of the moving nodes alone),
- * a warning counts the other nodes with a non-zero displacement, which the method ignores.
+ * `displacementEverywhere` (a method that reads every node's displacement, DGMF1), a warning
+ * counts the static nodes with a non-zero displacement, which never move; without, the nodes
+ * other than the moving ones with a non-zero displacement, which the method ignores.
  */
 std::vector<std::string> ValidateProblem(
-  const DeformationProblem& problem, bool checkPoints, bool movingDisplacementOnly = true);
+  const DeformationProblem& problem, bool checkPoints, bool displacementEverywhere = false);
 
 /**
  * The total motion of the boundary nodes, as the interpolation methods (DGM, DGRBF, RBF, IDW)
