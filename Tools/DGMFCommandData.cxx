@@ -453,10 +453,10 @@ std::string ListPatchNames(const std::string& path)
 }
 
 std::string WriteOpenFOAMPoints(vtkAlgorithm* deformer, const std::string& outputCase,
-  const std::string& time, bool checkOtherMeshes)
+  const std::string& time, const std::vector<std::string>& seriesTimes)
 {
   vtkNew<vtkDGMFOpenFOAMWriter> writer;
-  writer->SetCheckOtherMeshes(checkOtherMeshes);
+  writer->SetSeriesTimes(seriesTimes);
   writer->SetInputConnection(deformer->GetOutputPort());
   writer->SetFileName(outputCase.c_str());
   writer->SetTimeDirectory(time.c_str());

@@ -108,11 +108,11 @@ std::string ListPatchNames(const std::string& path);
 /**
  * Writes the points of the deformed output of `deformer` (whose input comes from the OpenFOAM
  * reader ReadOpenFOAMCase made) into the case `outputCase` at `time` (vtkDGMFOpenFOAMWriter);
- * returns the file written, or "" on failure (the error is printed). `checkOtherMeshes`: say
- * which other meshes of the case a solver would read instead (a series: at its last frame).
+ * returns the file written, or "" on failure (the error is printed). `seriesTimes`: the time
+ * directories of the series this write is a frame of (vtkDGMFOpenFOAMWriter::SetSeriesTimes).
  */
 std::string WriteOpenFOAMPoints(vtkAlgorithm* deformer, const std::string& outputCase,
-  const std::string& time, bool checkOtherMeshes = true);
+  const std::string& time, const std::vector<std::string>& seriesTimes = {});
 } // namespace dgmf_cli
 
 #endif

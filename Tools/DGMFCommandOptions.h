@@ -43,9 +43,8 @@ struct CommandOptions
   std::string Trajectory;      ///< --trajectory: a CSV table of body motions in time
   std::vector<double> Times;   ///< --times START:END:COUNT (empty: the filter's own)
   bool Series = false;         ///< the motion depends on time: one output per time (a series)
-  /// OpenFOAM: say which other meshes of the case a solver would read (a series: at its last
-  /// frame only, the later times' meshes of an earlier run being replaced by the series)
-  bool CheckOtherMeshes = true;
+  /// OpenFOAM: the time directories of the series a write is a frame of (empty: one time)
+  std::vector<std::string> SeriesTimes;
 };
 
 /// The usage text.

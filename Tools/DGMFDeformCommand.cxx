@@ -187,7 +187,7 @@ bool WriteOutput(vtkDGMFDeformFilter* filter, InputKind kind,
   {
     dgmf_cli::SetStage("writing into " + options.Output);
     written =
-      dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time, options.CheckOtherMeshes);
+      dgmf_cli::WriteOpenFOAMPoints(filter, options.Output, options.Time, options.SeriesTimes);
     if (written.empty())
     {
       std::cerr << "dgmf-deform: error: could not write the points into " << options.Output << "\n";
@@ -376,7 +376,7 @@ int RunSeries(
     else
     {
       frame.Time = timeNames[k];
-      frame.CheckOtherMeshes = k + 1 == steps.size();
+      frame.SeriesTimes = timeNames;
     }
     std::string written;
     if (!WriteAndReport(filter, kind, frame, times, written))

@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -134,10 +135,7 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     }
     try
     {
-      if (this->CheckOtherMeshes)
-      {
-        this->WarnAboutOtherMeshes(caseDirectory);
-      }
+      this->WarnAboutOtherMeshes(caseDirectory);
     }
     catch (const std::exception&)
     {
@@ -173,8 +171,11 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
     char* end = nullptr;
     const double time = std::strtod(name.c_str(), &end);
     const bool isTime = !name.empty() && end && *end == '\0';
-    const bool hides =
-      written == "constant" || (std::strtod(written.c_str(), nullptr) < time && name != written);
+    // A time of the series this write is a frame of is replaced by the series itself.
+    const bool ofTheSeries = std::find(this->SeriesTimes.begin(), this->SeriesTimes.end(), name) !=
+      this->SeriesTimes.end();
+    const bool hides = !ofTheSeries &&
+      (written == "constant" || (std::strtod(written.c_str(), nullptr) < time && name != written));
     std::error_code missing;
     if (isTime && hides && fs::exists(entry.path() / "polyMesh", missing))
     {
@@ -201,7 +202,7 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
                     << " or later reads it, not the deformed points written to " << written
                     << "/polyMesh (remove it, or write to that time).");
   }
-  if (decomposed)
+  if (decomposed && (this->SeriesTimes.empty() || written == this->SeriesTimes.back()))
   {
     vtkWarningMacro(<< caseDirectory.string()
                     << " is decomposed: its processor* directories keep the old mesh; run "

@@ -32,6 +32,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 class DGMFIO_EXPORT vtkDGMFOpenFOAMWriter : public vtkWriter
 {
@@ -70,14 +71,14 @@ public:
 
   ///@{
   /**
-   * Whether Write() warns about the other meshes of the case a solver would read instead of the
-   * points written (a time directory's polyMesh hiding them, processor directories). A series
-   * turns it off for all frames but its last: the later times' meshes an earlier run left are
-   * replaced by the series itself. Default: on.
+   * The time directories a series writes with this writer, one Write() per frame (empty: one
+   * time alone, the default). Write() warns about the other meshes of the case a solver would read
+   * instead of the points written (a later time's polyMesh, processor directories); the series'
+   * own times are not among them (the series replaces them), and the processor directories are
+   * said at its last time only.
    */
-  vtkSetMacro(CheckOtherMeshes, bool);
-  vtkGetMacro(CheckOtherMeshes, bool);
-  vtkBooleanMacro(CheckOtherMeshes, bool);
+  void SetSeriesTimes(const std::vector<std::string>& times) { this->SeriesTimes = times; }
+  const std::vector<std::string>& GetSeriesTimes() const { return this->SeriesTimes; }
   ///@}
 
   /// The undeformed mesh (port 1, optional): the mesh as read, before the deformation.
@@ -96,7 +97,7 @@ protected:
   /// Warns about meshes a solver would read instead of the one written (an earlier time's
   /// polyMesh, processor directories).
   void WarnAboutOtherMeshes(const std::filesystem::path& caseDirectory);
-  bool CheckOtherMeshes = true;
+  std::vector<std::string> SeriesTimes;
 
   char* FileName = nullptr;
   char* SourceCase = nullptr;
