@@ -494,14 +494,20 @@ int main(int argc, char* argv[])
       filter->RemoveAllMovingBoundaries();
       filter->RemoveAllStaticBoundaries();
       filter->RemoveAllSlipBoundaries();
-      const auto add = [&input](const std::vector<std::string>& names, auto addBoundary)
+      // Every name as the user gave it: an expansion a user also typed ('front|back') is not
+      // renamed in messages.
+      std::vector<std::string> given = options.Moving;
+      given.insert(given.end(), options.Static.begin(), options.Static.end());
+      given.insert(given.end(), options.Slip.begin(), options.Slip.end());
+      const auto add = [&input, &given](const std::vector<std::string>& names, auto addBoundary)
       {
         const std::vector<std::string> expanded = dgmf_cli::ExpandPatchGroups(input, names);
         for (std::size_t k = 0; k < names.size(); ++k)
         {
           // Messages name a group of several patches as the user did (a group of one is its
           // patch, whose name the messages use for the block as well).
-          if (expanded[k] != names[k] && expanded[k].find('|') != std::string::npos)
+          if (expanded[k] != names[k] && expanded[k].find('|') != std::string::npos &&
+            std::find(given.begin(), given.end(), expanded[k]) == given.end())
           {
             dgmf_cli::ShowInMessagesAs("'" + expanded[k] + "'", "'" + names[k] + "'");
           }
