@@ -99,6 +99,20 @@ bool BodyMotionTable::Clear()
   return any;
 }
 
+bool BodyMotionTable::PropertiesMove(
+  vtkDGMFDeformFilter* filter, const InputNodes& nodes, const dgmf::Trajectory* trajectory) const
+{
+  const bool rows = filter->GetRigidMotionMode() == vtkDGMFDeformFilter::PROPERTIES;
+  for (std::int32_t k = 1; k <= std::max<std::int32_t>(nodes.NumberOfBodies, 1); ++k)
+  {
+    if (!(rows && this->Motions.count(k) > 0) && !(trajectory && trajectory->HasBody(k)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
   const InputNodes& nodes, const dgmf::RigidMotion& properties, const dgmf::Trajectory* trajectory,
   double t) const

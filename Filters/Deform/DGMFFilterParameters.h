@@ -58,6 +58,13 @@ public:
   std::vector<dgmf::RigidMotion> For(vtkDGMFDeformFilter* filter, const InputNodes& nodes,
     const dgmf::RigidMotion& properties, const dgmf::Trajectory* trajectory, double t) const;
 
+  /**
+   * Whether some body of `nodes` moves as the filter's properties say: one without a row (or
+   * every body, in Extracted mode, where rows do not count) and without a trajectory.
+   */
+  bool PropertiesMove(
+    vtkDGMFDeformFilter* filter, const InputNodes& nodes, const dgmf::Trajectory* trajectory) const;
+
 private:
   std::map<int, dgmf::RigidMotion> Motions;
   std::string BadRow; ///< the error of a row set with a bad body id, or ""

@@ -462,14 +462,13 @@ int vtkDGMFDeformFilter::Execute(vtkUnstructuredGrid* input, vtkUnstructuredGrid
   problem.Motions =
     internal.BodyMotions.For(this, nodes, dgmf_vtk::PropertiesMotionAt(this, internal.Motion.Time),
       internal.Motion.Trajectory.get(), internal.Motion.Time);
-  if (internal.Motion.TimeDependent && !problem.ExtractRigidMotion)
+  if (internal.Motion.TimeDependent && !problem.ExtractRigidMotion &&
+    internal.BodyMotions.PropertiesMove(this, nodes, internal.Motion.Trajectory.get()))
   {
     // What the laws reach at their largest, judged now: a series is not half written before an
     // axis of length 0 or a 2D mesh turned out of its plane shows (at angle 0 both pass).
-    dgmf::ValidateMotions(problem,
-      internal.BodyMotions.For(this, nodes,
-        dgmf_vtk::PropertiesMotionAt(this, internal.Motion.Time, true),
-        internal.Motion.Trajectory.get(), internal.Motion.Time));
+    dgmf::ValidateMotion(problem, dgmf_vtk::PropertiesMotionAt(this, internal.Motion.Time, true),
+      "The motion at its largest: ");
   }
   const std::size_t n = nodes.NumberOfNodes;
   const vtkSmartPointer<vtkPoints> newPoints =

@@ -34,33 +34,24 @@ std::string OutOfRangePointsMessage(std::size_t value)
     std::string(kLargestMagnitudeText) + " or more (point " + std::to_string(value / 3) + ").";
 }
 
-void ValidateMotions(const DeformationProblem& problem, const std::vector<RigidMotion>& motions)
+void ValidateMotion(
+  const DeformationProblem& problem, const RigidMotion& motion, const std::string& which)
 {
-  const auto bodies = static_cast<std::size_t>(std::max<std::int32_t>(problem.NumberOfBodies, 1));
-  if (motions.size() < bodies)
+  try
   {
-    throw std::invalid_argument(
-      std::to_string(bodies) + " bodies but " + std::to_string(motions.size()) + " rigid motions");
+    motion.Check();
   }
-  for (std::size_t k = 0; k < bodies; ++k)
+  catch (const std::invalid_argument& e)
   {
-    const RigidMotion& motion = motions[k];
-    const std::string which = bodies > 1 ? "Body " + std::to_string(k + 1) + ": " : "";
-    try
-    {
-      motion.Check();
-    }
-    catch (const std::invalid_argument& e)
-    {
-      throw std::invalid_argument(which + e.what());
-    }
-    if (problem.Dimension == 2 && !motion.KeepsPlane())
-    {
-      throw std::invalid_argument(which +
-        "This is a 2D mesh (all points at z = " + Number(problem.Points[2]) +
-        "): it can only rotate about z and translate in x and y. Set the rotation angles "
-        "about x and y and the z translation to 0.");
-    }
+    throw std::invalid_argument(which + e.what());
+  }
+  if (problem.Dimension == 2 && !motion.KeepsPlane())
+  {
+    throw std::invalid_argument(which + "This is a 2D mesh (all points at z = " +
+      Number(problem.Points[2]) + "): it can only rotate about z" +
+      (motion.HasAxisRotation() ? " (a Rotation Axis of 0 0 1)" : "") +
+      " and translate in x and y. Set the rotation angles about x and y and the z translation to "
+      "0.");
   }
 }
 
@@ -101,7 +92,17 @@ std::vector<std::string> ValidateProblem(
   }
   if (!problem.ExtractRigidMotion)
   {
-    ValidateMotions(problem, problem.Motions);
+    const auto bodies = static_cast<std::size_t>(std::max<std::int32_t>(problem.NumberOfBodies, 1));
+    if (problem.Motions.size() < bodies)
+    {
+      throw std::invalid_argument(std::to_string(bodies) + " bodies but " +
+        std::to_string(problem.Motions.size()) + " rigid motions");
+    }
+    for (std::size_t k = 0; k < bodies; ++k)
+    {
+      ValidateMotion(
+        problem, problem.Motions[k], bodies > 1 ? "Body " + std::to_string(k + 1) + ": " : "");
+    }
   }
   const SlipConstraint& slip = problem.Slip;
   if (slip.NodePlanes.size() != slip.Nodes.size() ||

@@ -64,12 +64,13 @@ constexpr const char* NoBoundaryNodeMessage =
 std::string OutOfRangePointsMessage(std::size_t value);
 
 /**
- * Checks the rigid motions of `problem`'s bodies (one per body): each finite and within +-720
- * degrees, about an axis of non-zero length, and in the plane of a 2D mesh. Throws
- * std::invalid_argument with the message for the user ("Body k: ..." with several bodies).
- * ValidateProblem checks problem.Motions with it; a series checks the motions its laws reach.
+ * Checks one rigid motion of `problem`: finite and within +-720 degrees, about an axis of non-zero
+ * length, and in the plane of a 2D mesh. Throws std::invalid_argument with the message for the
+ * user, `which` first ("Body 2: "). ValidateProblem checks each body's motion with it; a series
+ * checks the motion its laws reach at their largest.
  */
-void ValidateMotions(const DeformationProblem& problem, const std::vector<RigidMotion>& motions);
+void ValidateMotion(
+  const DeformationProblem& problem, const RigidMotion& motion, const std::string& which);
 
 /**
  * Checks everything a method relies on and returns the warnings (e.g. no moving node). Throws
