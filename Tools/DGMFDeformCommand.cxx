@@ -152,10 +152,15 @@ void PrintBoundaries(
   {
     chosen.insert(chosen.end(), list->begin(), list->end());
   }
+  const auto inFile = [&fileNames](const std::string& name)
+  { return std::find(fileNames.begin(), fileNames.end(), name) != fileNames.end(); };
   for (const std::string& name : fileNames)
   {
-    if (std::find(chosen.begin(), chosen.end(), name) == chosen.end() &&
-      std::find(chosen.begin(), chosen.end(), "patch/" + name) == chosen.end())
+    // "patch/wing" names the block "wing" (an OpenFOAM region name) unless a block has that name.
+    const bool named = std::find(chosen.begin(), chosen.end(), name) != chosen.end() ||
+      (std::find(chosen.begin(), chosen.end(), "patch/" + name) != chosen.end() &&
+        !inFile("patch/" + name));
+    if (!named)
     {
       others.push_back(name);
     }

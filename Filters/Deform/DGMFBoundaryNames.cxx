@@ -325,6 +325,23 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   const auto literalLeaves = [&](const std::string& entry)
   {
     std::vector<std::size_t> found;
+    // Blocks of that very name first: a file's group named "boundary" or "patch/wing" is that
+    // group, not the reader's container "boundary" (every patch: the whole mesh turned) or the
+    // path to a block "wing" (until 2026-11-30).
+    for (const std::string& name : { entry, NameOf(entry) }) // as given, then without "patch/"
+    {
+      for (std::size_t l = 0; l < leaves.size(); ++l)
+      {
+        if (leaves[l].Name == name)
+        {
+          found.push_back(l);
+        }
+      }
+      if (!found.empty())
+      {
+        return found;
+      }
+    }
     if (hasHierarchy)
     {
       for (unsigned int id : vtkDataAssemblyUtilities::GetSelectedCompositeIds(

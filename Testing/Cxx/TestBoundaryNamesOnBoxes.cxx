@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -324,4 +325,54 @@ TEST(BoundaryNames, APlaneCutIntoPatchesNamedApartIsOnePlane)
   // The cut line moved (the test would not tell otherwise): node (n/2, 0, 1).
   const std::size_t node = n / 2 + (n + 1) * (0 + (n + 1) * 1);
   EXPECT_GT(whole[3 * node], double(n / 2));
+}
+
+TEST(BoundaryNames, ABlockOfTheNameGivenWinsOverContainersAndRegionPrefixes)
+{
+  // A mesh file's group named "boundary" sits in the reader's container "boundary": naming it
+  // moved every patch, the whole mesh turned rigidly; a group "patch/wing" beside a group "wing"
+  // was taken for "wing" (the OpenFOAM region prefix dropped). Both until 2026-11-30.
+  const int n = 4;
+  auto blocks = dgmf_test::HexBoxBlocks(n, "");
+  auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+  ASSERT_NE(boundary, nullptr);
+  const auto rename = [&](const char* from, const char* to)
+  {
+    for (unsigned int b = 0; b < boundary->GetNumberOfBlocks(); ++b)
+    {
+      if (std::strcmp(boundary->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()), from) == 0)
+      {
+        boundary->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), to);
+      }
+    }
+  };
+  rename("xmin", "boundary");
+  rename("ymin", "patch/wing");
+  rename("ymax", "wing");
+  for (const char* name : { "boundary", "patch/wing" })
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(blocks);
+    filter->AddMovingBoundary(name);
+    filter->SetTranslation(0.0, 0.0, 0.1); // along the named side, across none
+    filter->Update();
+    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+    ASSERT_NE(volume, nullptr) << name;
+    vtkUnstructuredGrid* input = VolumeOf(blocks);
+    // Only the named side's nodes move by the whole translation: x = 0 for "boundary" (xmin),
+    // y = 0 for "patch/wing" (ymin); the nodes of the opposite side (at n) stay.
+    const int axis = std::strcmp(name, "boundary") == 0 ? 0 : 1;
+    vtkIdType moved = 0, oppositeMoved = 0;
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      double before[3], after[3];
+      input->GetPoint(i, before);
+      volume->GetPoint(i, after);
+      const bool movedAll = std::abs(after[2] - before[2] - 0.1) < 1e-12;
+      moved += before[axis] == 0.0 && movedAll ? 1 : 0;
+      oppositeMoved += before[axis] == n && after[2] != before[2] ? 1 : 0;
+    }
+    EXPECT_EQ(moved, (n + 1) * (n + 1)) << name;
+    EXPECT_EQ(oppositeMoved, 0) << name;
+  }
 }
