@@ -17,6 +17,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -264,16 +265,18 @@ namespace
 {
 /// Replaces each vtkIdTypeArray of the point, cell and field data of `grid` (a copy about to be
 /// written) by a vtkLongArray of the same name and values: legacy files name the first type
-/// `vtkIdType`, which readers other than VTK's do not know.
+/// `vtkIdType`, which readers other than VTK's do not know. Attributes (global or pedigree ids)
+/// stay vtkIdTypeArray: VTK code asks for them as such.
 void WriteIdTypeArraysAsLong(vtkUnstructuredGrid* grid)
 {
   for (vtkFieldData* data : { static_cast<vtkFieldData*>(grid->GetPointData()),
          static_cast<vtkFieldData*>(grid->GetCellData()), grid->GetFieldData() })
   {
+    auto* attributes = vtkDataSetAttributes::SafeDownCast(data);
     for (int k = 0; data && k < data->GetNumberOfArrays(); ++k)
     {
       auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(k));
-      if (!ids || !ids->GetName())
+      if (!ids || !ids->GetName() || (attributes && attributes->IsArrayAnAttribute(k) >= 0))
       {
         continue;
       }

@@ -439,6 +439,23 @@ class CommandFailures(unittest.TestCase):
         self.assertEqual(meshes.read(output).GetNumberOfPoints(), CIRCLE_POINTS)
         code, out, err = run(self.circle, self.path("o.exe"), "--rotate", 0, 0, 30)
         self.assertEqual(code, 2, err)
+        # Written as version 4.2 with 64-bit ids as `long` (meshio reads it: formats test), but a
+        # global-ids attribute stays vtkIdType, as VTK code asks for it.
+        from vtkmodules.vtkCommonCore import vtkIdTypeArray
+        grid = meshes.read(self.circle)
+        ids = vtkIdTypeArray()
+        ids.SetName("GlobalNodeId")
+        ids.SetNumberOfTuples(grid.GetNumberOfPoints())
+        for i in range(grid.GetNumberOfPoints()):
+            ids.SetValue(i, 1000 + i)
+        grid.GetPointData().SetGlobalIds(ids)
+        with_ids = self.path("global_ids.vtu")
+        meshes.write(grid, with_ids)
+        code, out, err = run(with_ids, output, "--rotate", 0, 0, 30)
+        self.assertEqual(code, 0, err)
+        back = meshes.read(output).GetPointData().GetGlobalIds()
+        self.assertEqual(back.GetClassName(), "vtkIdTypeArray")
+        self.assertEqual(back.GetValue(5), 1005)
 
     # Progress through the sub-steps on stderr (shown after 2 s, or from the start with --progress);
     # none on a short run.
