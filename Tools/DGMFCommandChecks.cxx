@@ -65,6 +65,11 @@ bool OptionsFitTheInput(InputKind kind, const CommandOptions& options, vtkDGMFDe
   {
     std::cerr << "dgmf-deform: warning: --marker is not read: the boundaries are chosen by name\n";
   }
+  if (options.BodyIdGiven && options.ByName)
+  {
+    std::cerr << "dgmf-deform: warning: --body-id is not read: the boundaries are chosen by name "
+                 "(each --moving entry is a body)\n";
+  }
   if ((!options.Compression.empty() || !options.VTUAppended) && !IsVTUFileName(options.Output))
   {
     std::cerr << "dgmf-deform: warning: --compression and --vtu-mode are for .vtu outputs; "

@@ -108,9 +108,9 @@ bool ReadLaw(int argc, char* argv[], int& i, bool pitch, int& kind, double param
   return true;
 }
 
-/// START:END:COUNT as COUNT equally spaced times (COUNT >= 1; END >= START; END > START when
-/// COUNT > 1, else the frames would share one time; COUNT 1 gives START alone).
-/// START:END:COUNT into `times`; returns why not ("" when read).
+/// START:END:COUNT into `times`, COUNT equally spaced times (COUNT 1 to 1000000; END >= START;
+/// END > START when COUNT > 1, else the frames would share one time; COUNT 1 gives START alone).
+/// Returns why not ("" when read).
 std::string ReadTimes(const char* text, std::vector<double>& times)
 {
   const std::string form = "give START:END:COUNT, such as 0:1:21";
@@ -422,6 +422,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     else if (option == "--body-id" && hasValue(i))
     {
       filter->SetBodyIdArrayName(argv[++i]);
+      options.BodyIdGiven = true;
     }
     else if (option == "--displacement" && hasValue(i))
     {

@@ -31,6 +31,7 @@ struct CommandOptions
   std::string Displacement = "Displacement";
   bool MarkerGiven = false;
   bool DisplacementGiven = false;
+  bool BodyIdGiven = false;      ///< --body-id NAME
   std::string Time = "constant"; ///< OpenFOAM: the time directory written
   bool DecomposePolyhedra = false;
   bool ByName = false; ///< boundaries chosen by name (--moving, --static, --slip)

@@ -22,12 +22,12 @@
 #include "DGMFCommandSeries.h"
 
 #include "dgmf/meshfile/MeshFileFormat.h"
+#include "dgmf/openfoam/CaseDirectory.h"
 
 #include "vtkDGMFDeformFilter.h"
 
 #include "DGMFMotionInTime.h"
 #include "dgmf/NumberText.h"
-#include "dgmf/Trajectory.h"
 
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -48,7 +48,6 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -264,20 +263,16 @@ int RunSeries(
   std::vector<double> steps = options.Times;
   if (steps.empty())
   {
-    std::unique_ptr<dgmf::Trajectory> trajectory;
-    if (auto* table = vtkTable::SafeDownCast(filter->GetInputDataObject(1, 0)))
+    try
     {
-      try
-      {
-        trajectory = std::make_unique<dgmf::Trajectory>(dgmf_vtk::ReadTrajectoryTable(table));
-      }
-      catch (const std::exception& e)
-      {
-        std::cerr << "dgmf-deform: error: " << e.what() << "\n";
-        return ExitFailure;
-      }
+      steps =
+        dgmf_vtk::MotionTimeSteps(filter, vtkTable::SafeDownCast(filter->GetInputDataObject(1, 0)));
     }
-    steps = dgmf_vtk::MotionTimeSteps(filter, trajectory.get());
+    catch (const std::exception& e)
+    {
+      std::cerr << "dgmf-deform: error: " << e.what() << "\n";
+      return ExitFailure;
+    }
   }
   if (steps.empty())
   {
@@ -288,10 +283,25 @@ int RunSeries(
   if (!files && steps.front() < 0.0)
   {
     // Said before the first frame (it was "could not write the points" after it).
-    std::cerr << "dgmf-deform: an OpenFOAM series writes time directories from 0 on: the series "
-                 "starts at "
+    std::cerr << "dgmf-deform: error: an OpenFOAM series writes time directories from 0 on: "
+                 "the series starts at "
               << dgmf::NumberText(steps.front()) << " (give --times from 0)\n";
-    return ExitUsage;
+    return options.Times.empty() ? ExitFailure : ExitUsage; // the table's times, or --times
+  }
+  double caseStart = 0.0;
+  if (!files &&
+    dgmf::openfoam::FirstTimeOf(dgmf::openfoam::CaseDirectoryOf(options.Input), caseStart))
+  {
+    const auto before = static_cast<std::size_t>(
+      std::count_if(steps.begin(), steps.end(), [caseStart](double t) { return t < caseStart; }));
+    if (before > 0)
+    {
+      // A solver started at the case's first time (its controlDict's startTime, usually) reads no
+      // mesh of an earlier time.
+      std::cerr << "dgmf-deform: warning: " << before << " of the " << steps.size()
+                << " frames come before the case's first time, " << dgmf::NumberText(caseStart)
+                << ": a solver started there does not read them (give --times)\n";
+    }
   }
   const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";
   if (files && firstFrame.empty())
@@ -357,7 +367,7 @@ int RunSeries(
     // an earlier frame gave word for word). An OpenFOAM series names each frame by its time
     // directory.
     std::cout << "dgmf-deform: time ";
-    std::cout << (files ? dgmf::NumberText(t) : timeNames[k]); // as the .pvd has it
+    std::cout << (files ? dgmf::NumberText(t) : timeNames[k]); // exactly; a case: its directory
     std::cout << " (frame " << k + 1 << " of " << steps.size() << ")" << std::endl;
     dgmf_cli::ForgetPrintedMessages();
     std::string why;

@@ -119,18 +119,15 @@ void ReportMotionTimeSteps(
   {
     return;
   }
-  std::vector<double> steps = MotionTimeSteps(filter, nullptr);
-  if (table && table->GetNumberOfRows() > 0)
+  std::vector<double> steps;
+  try
   {
-    try
-    {
-      const dgmf::Trajectory trajectory = ReadTrajectoryTable(table);
-      steps = MotionTimeSteps(filter, &trajectory);
-    }
-    catch (const std::exception&)
-    {
-      // reported by RequestData
-    }
+    steps = MotionTimeSteps(filter, table && table->GetNumberOfRows() > 0 ? table : nullptr);
+  }
+  catch (const std::exception&)
+  {
+    steps = MotionTimeSteps(filter, static_cast<const dgmf::Trajectory*>(nullptr));
+    // the table's error is reported by RequestData
   }
   outInfo->Set(
     vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
@@ -300,6 +297,16 @@ std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, const dgmf::Tra
   // Steps finer than the doubles around the range give equal times: each once.
   steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   return steps;
+}
+
+std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, vtkTable* table)
+{
+  if (!table)
+  {
+    return MotionTimeSteps(filter, static_cast<const dgmf::Trajectory*>(nullptr));
+  }
+  const dgmf::Trajectory trajectory = ReadTrajectoryTable(table);
+  return MotionTimeSteps(filter, &trajectory);
 }
 
 } // namespace dgmf_vtk

@@ -74,6 +74,10 @@ dgmf::Trajectory ReadTrajectoryTable(vtkTable* table);
 std::vector<double> MotionTimeSteps(
   vtkDGMFDeformFilter* filter, const dgmf::Trajectory* trajectory);
 
+/// MotionTimeSteps with the trajectory of `table` (read here; may be null: none). Throws
+/// std::invalid_argument, as ReadTrajectoryTable does, for a table that cannot be read.
+std::vector<double> MotionTimeSteps(vtkDGMFDeformFilter* filter, vtkTable* table);
+
 } // namespace dgmf_vtk
 
 #endif

@@ -162,6 +162,23 @@ std::string CopyTargetProblem(const fs::path& source, const fs::path& target)
   return std::string();
 }
 
+bool FirstTimeOf(const fs::path& caseDirectory, double& first)
+{
+  bool found = false;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
+  {
+    double value = 0.0;
+    std::error_code notDirectory;
+    if (entry.is_directory(notDirectory) && TimeValue(entry.path().filename().string(), value))
+    {
+      first = found ? std::min(first, value) : value;
+      found = true;
+    }
+  }
+  return found;
+}
+
 void CopyCase(const fs::path& source, const fs::path& target)
 {
   if (!IsCase(source))
@@ -176,14 +193,7 @@ void CopyCase(const fs::path& source, const fs::path& target)
   std::error_code error;
   // The first time directory holds the fields a solver starts from; later ones are results.
   double first = HUGE_VAL;
-  for (const fs::directory_entry& entry : fs::directory_iterator(source))
-  {
-    double value = 0.0;
-    if (entry.is_directory() && TimeValue(entry.path().filename().string(), value))
-    {
-      first = std::min(first, value);
-    }
-  }
+  FirstTimeOf(source, first);
   fs::create_directories(target, error);
   if (error)
   {

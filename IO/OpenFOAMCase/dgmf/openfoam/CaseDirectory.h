@@ -32,6 +32,10 @@ bool IsInside(const std::filesystem::path& directory, const std::filesystem::pat
 /// True for "constant" and for an OpenFOAM time name (a number such as "0", "1", "0.05").
 bool IsTimeName(const std::string& time);
 
+/// The earliest time of the case's time directories (a solver's start, usually), in `first`;
+/// false when it has none.
+bool FirstTimeOf(const std::filesystem::path& caseDirectory, double& first);
+
 /// `caseDirectory`/constant/polyMesh for "constant", else `caseDirectory`/`time`/polyMesh.
 std::filesystem::path PolyMeshDirectory(
   const std::filesystem::path& caseDirectory, const std::string& time);
