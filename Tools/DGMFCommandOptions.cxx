@@ -289,6 +289,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
     else if ((option == "--moving" || option == "--static" || option == "--slip") && hasValue(i))
     {
+      options.NameValues.emplace_back(option[2], argv[i + 1]);
       for (const std::string& name : SplitNames(argv[++i]))
       {
         option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
@@ -510,4 +511,36 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   }
   return ExitSuccess;
 }
+void KeepWholeNames(
+  CommandOptions& options, const std::vector<std::string>& fileNames, vtkDGMFDeformFilter* filter)
+{
+  const auto whole = [&fileNames](const std::string& value)
+  {
+    return value.find(',') != std::string::npos &&
+      std::find(fileNames.begin(), fileNames.end(), value) != fileNames.end();
+  };
+  if (std::none_of(options.NameValues.begin(), options.NameValues.end(),
+        [&whole](const auto& value) { return whole(value.second); }))
+  {
+    return;
+  }
+  options.Moving.clear();
+  options.Static.clear();
+  options.Slip.clear();
+  filter->RemoveAllMovingBoundaries();
+  filter->RemoveAllStaticBoundaries();
+  filter->RemoveAllSlipBoundaries();
+  for (const auto& [role, value] : options.NameValues)
+  {
+    for (const std::string& name :
+      whole(value) ? std::vector<std::string>{ value } : SplitNames(value))
+    {
+      role == 'm'     ? filter->AddMovingBoundary(name.c_str())
+        : role == 's' ? filter->AddStaticBoundary(name.c_str())
+                      : filter->AddSlipBoundary(name.c_str());
+      (role == 'm' ? options.Moving : role == 's' ? options.Static : options.Slip).push_back(name);
+    }
+  }
+}
+
 } // namespace dgmf_cli

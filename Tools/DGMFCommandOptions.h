@@ -7,6 +7,7 @@
 #define DGMFCommandOptions_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkDGMFDeformFilter;
@@ -36,6 +37,9 @@ struct CommandOptions
   bool DecomposePolyhedra = false;
   bool ByName = false; ///< boundaries chosen by name (--moving, --static, --slip)
   std::vector<std::string> Moving, Static, Slip; ///< the names given
+  /// The values of --moving, --static and --slip as given ('m', 's', 'l'), before the split at
+  /// commas (KeepWholeNames)
+  std::vector<std::pair<char, std::string>> NameValues;
   bool FailOnInverted = false; ///< exit 3, writing nothing, when cells are inverted
   double ProgressDelay = 2.0;  ///< seconds before the progress is shown (--progress: 0)
   bool NoWrite = false;        ///< --no-write: read and deform only (the timings show)
@@ -50,6 +54,14 @@ struct CommandOptions
 
 /// The usage text.
 std::string Usage();
+
+/**
+ * A value of --moving, --static or --slip that is, whole, one of the file's boundary names
+ * (`fileNames`: a gmsh group "Flap, inner") is that name, not a list split at its commas: the
+ * options' lists and the filter's boundaries are made again so.
+ */
+void KeepWholeNames(
+  CommandOptions& options, const std::vector<std::string>& fileNames, vtkDGMFDeformFilter* filter);
 
 /**
  * Reads the command line into `filter`'s properties and `options`. Returns ExitSuccess, or

@@ -536,6 +536,7 @@ int main(int argc, char* argv[])
     }
     else if (options.ByName)
     {
+      dgmf_cli::KeepWholeNames(options, names, filter);
       PrintBoundaries(options, names);
     }
   }
