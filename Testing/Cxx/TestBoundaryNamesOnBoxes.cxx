@@ -375,4 +375,21 @@ TEST(BoundaryNames, ABlockOfTheNameGivenWinsOverContainersAndRegionPrefixes)
     EXPECT_EQ(moved, (n + 1) * (n + 1)) << name;
     EXPECT_EQ(oppositeMoved, 0) << name;
   }
+  // The group's block not loaded (a piece of a distributed mesh without it): its name is still
+  // the group's, not the container's: nothing to move here, not every patch.
+  for (unsigned int b = 0; b < boundary->GetNumberOfBlocks(); ++b)
+  {
+    if (std::strcmp(boundary->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()), "boundary") == 0)
+    {
+      boundary->SetBlock(b, nullptr);
+    }
+  }
+  vtkNew<vtkDGMFDeformFilter> filter;
+  dgmf_test::ErrorMessages errors(filter);
+  filter->SetInputData(blocks);
+  filter->AddMovingBoundary("boundary");
+  filter->SetTranslation(0.0, 0.0, 0.1);
+  filter->Update();
+  EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)), nullptr);
+  EXPECT_TRUE(errors.Contains("No block of the input is named 'boundary'"));
 }
