@@ -182,7 +182,8 @@ std::string Usage()
     "  --moving NAMES          moving boundaries by name (patches), comma-separated: one body "
     "each\n"
     "                          (an OpenFOAM patch group, 'wing_*' or 'flap|slat': its patches\n"
-    "                          as one body)\n"
+    "                          as one body; a value that is a file's name whole, commas\n"
+    "                          included, is that name)\n"
     "  --static NAMES          static boundaries by name (unselected patches are static anyway)\n"
     "  --slip NAMES            planar boundaries whose nodes slide in their plane (symmetry)\n"
     "  --time T                OpenFOAM: write T/polyMesh/points (default constant)\n"
@@ -289,7 +290,8 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
     else if ((option == "--moving" || option == "--static" || option == "--slip") && hasValue(i))
     {
-      options.NameValues.emplace_back(option[2], argv[i + 1]);
+      options.NameValues.emplace_back(
+        option == "--moving" ? 'm' : option == "--static" ? 's' : 'l', argv[i + 1]);
       for (const std::string& name : SplitNames(argv[++i]))
       {
         option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
