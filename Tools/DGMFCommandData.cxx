@@ -276,7 +276,9 @@ void WriteIdTypeArraysAsLong(vtkUnstructuredGrid* grid)
     for (int k = 0; data && k < data->GetNumberOfArrays(); ++k)
     {
       auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(k));
-      if (!ids || !ids->GetName() || (attributes && attributes->IsArrayAnAttribute(k) >= 0))
+      const int attribute = attributes ? attributes->IsArrayAnAttribute(k) : -1;
+      if (!ids || !ids->GetName() || attribute == vtkDataSetAttributes::GLOBALIDS ||
+        attribute == vtkDataSetAttributes::PEDIGREEIDS)
       {
         continue;
       }

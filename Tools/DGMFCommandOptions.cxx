@@ -290,8 +290,10 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
     else if ((option == "--moving" || option == "--static" || option == "--slip") && hasValue(i))
     {
-      options.NameValues.emplace_back(
-        option == "--moving" ? 'm' : option == "--static" ? 's' : 'l', argv[i + 1]);
+      options.NameValues.emplace_back(option == "--moving" ? 'm'
+          : option == "--static"                           ? 's'
+                                                           : 'l',
+        argv[i + 1]);
       for (const std::string& name : SplitNames(argv[++i]))
       {
         option == "--moving"     ? filter->AddMovingBoundary(name.c_str())

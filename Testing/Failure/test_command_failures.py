@@ -456,6 +456,14 @@ class CommandFailures(unittest.TestCase):
         back = meshes.read(output).GetPointData().GetGlobalIds()
         self.assertEqual(back.GetClassName(), "vtkIdTypeArray")
         self.assertEqual(back.GetValue(5), 1005)
+        # Other attributes of ids (the scalars of an Id filter) are written as long all the same.
+        grid.GetPointData().SetGlobalIds(None)
+        grid.GetPointData().SetScalars(ids)
+        meshes.write(grid, with_ids)
+        code, out, err = run(with_ids, output, "--rotate", 0, 0, 30)
+        self.assertEqual(code, 0, err)
+        with open(output, "rb") as handle:
+            self.assertNotIn(b"vtkIdType", handle.read())
 
     # Progress through the sub-steps on stderr (shown after 2 s, or from the start with --progress);
     # none on a short run.
