@@ -368,6 +368,13 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
         return found;
       }
     }
+    // A name that is no block's is not a container's either ("boundary", the reader's group of
+    // patches: every boundary moving, the mesh turned rigidly): only a selector ("/Root/...")
+    // reaches into the reader's tree.
+    if (NameOf(entry).empty() || NameOf(entry)[0] != '/')
+    {
+      return found;
+    }
     if (hasHierarchy)
     {
       for (unsigned int id : vtkDataAssemblyUtilities::GetSelectedCompositeIds(

@@ -392,4 +392,13 @@ TEST(BoundaryNames, ABlockOfTheNameGivenWinsOverContainersAndRegionPrefixes)
   filter->Update();
   EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)), nullptr);
   EXPECT_TRUE(errors.Contains("No block of the input is named 'boundary'"));
+  // No block named so at all: the reader's container is not a boundary either (only a selector,
+  // "/Root/boundary/...", reaches into the tree).
+  vtkNew<vtkDGMFDeformFilter> plain;
+  dgmf_test::ErrorMessages plainErrors(plain);
+  plain->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
+  plain->AddMovingBoundary("boundary");
+  plain->Update();
+  EXPECT_EQ(VolumeOf(plain->GetOutputDataObject(0)), nullptr);
+  EXPECT_TRUE(plainErrors.Contains("No block of the input is named 'boundary'"));
 }
