@@ -288,19 +288,26 @@ int RunSeries(
               << dgmf::NumberText(steps.front()) << " (give --times from 0)\n";
     return options.Times.empty() ? ExitFailure : ExitUsage; // the table's times, or --times
   }
-  double caseStart = 0.0;
+  // Frames before the time a solver run of the case starts from (its controlDict's startFrom,
+  // once the series is written; the output case's, or the input's that it will copy) are read
+  // by no such run.
+  double solverStart = 0.0;
+  const std::filesystem::path outputCase = dgmf::openfoam::CaseDirectoryOf(options.Output);
   if (!files &&
-    dgmf::openfoam::FirstTimeOf(dgmf::openfoam::CaseDirectoryOf(options.Input), caseStart))
+    dgmf::openfoam::SolverStartTime(dgmf::openfoam::IsCase(outputCase)
+        ? outputCase
+        : dgmf::openfoam::CaseDirectoryOf(options.Input),
+      steps, solverStart))
   {
-    const auto before = static_cast<std::size_t>(
-      std::count_if(steps.begin(), steps.end(), [caseStart](double t) { return t < caseStart; }));
+    const auto before = static_cast<std::size_t>(std::count_if(
+      steps.begin(), steps.end(), [solverStart](double t) { return t < solverStart; }));
     if (before > 0)
     {
-      // A solver started at the case's first time (its controlDict's startTime, usually) reads no
-      // mesh of an earlier time.
       std::cerr << "dgmf-deform: warning: " << before << " of the " << steps.size()
-                << " frames come before the case's first time, " << dgmf::NumberText(caseStart)
-                << ": a solver started there does not read them (give --times)\n";
+                << " frames come before the time a solver run of the case starts from, "
+                << dgmf::NumberText(solverStart)
+                << " (its controlDict's startFrom): such a run does not read them (give --times, "
+                   "or change startFrom)\n";
     }
   }
   const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";

@@ -424,3 +424,44 @@ TEST(CaseDirectory, InPlaceOnPurposeAndInTheCasesOwnFormat)
   ExpectSameBits(back.Points, deformed);
   ExpectSameBits(of::ReadPointsFile(source / "constant" / "polyMesh" / "points.gz").Points, Sample);
 }
+
+TEST(FoamFileText, TopLevelEntriesAreFoundPastSubDictionariesAndDirectives)
+{
+  // A controlDict's startFrom and startTime: after the header, directives and comments; entries
+  // of the same keyword inside a sub-dictionary do not count.
+  const std::string text = "FoamFile\n{\n    version 2.0;\n    object controlDict;\n}\n"
+                           "#include \"settings\"\n"
+                           "functions\n{\n    probe { startTime 7; type probes; }\n}\n"
+                           "// startFrom firstTime;\n"
+                           "application simpleFoam;\n"
+                           "startFrom   startTime; /* not latestTime */\n"
+                           "startTime   0.25;\n";
+  EXPECT_EQ(of::FoamTopLevelEntry(text, "startFrom"), "startTime");
+  EXPECT_EQ(of::FoamTopLevelEntry(text, "startTime"), "0.25");
+  EXPECT_EQ(of::FoamTopLevelEntry(text, "type"), "");
+  EXPECT_EQ(of::FoamTopLevelEntry(text, "endTime"), "");
+}
+
+TEST(CaseDirectory, TheSolversStartTimeFollowsStartFrom)
+{
+  const fs::path source = MakeCase(Scratch("start-from"), AsciiPoints(Sample));
+  fs::create_directories(source / "100");
+  const auto controlDict = [&](const std::string& entries)
+  {
+    std::ofstream(source / "system" / "controlDict")
+      << "FoamFile\n{\n    version 2.0;\n    object controlDict;\n}\n"
+      << entries;
+  };
+  double start = -1.0;
+  controlDict("startFrom latestTime;\nstartTime 0;\n");
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  EXPECT_EQ(start, 100.0); // the case's time 100, after the frames written
+  controlDict("startFrom firstTime;\n");
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  EXPECT_EQ(start, 0.0); // the case's 0
+  controlDict("startFrom startTime;\nstartTime 0.75;\n");
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  EXPECT_EQ(start, 0.75);
+  controlDict("startFrom somewhere;\n");
+  EXPECT_FALSE(of::SolverStartTime(source, { 0.5 }, start));
+}

@@ -30,6 +30,23 @@ bool TimeValue(const std::string& name, double& value)
   return read.ec == std::errc() && read.ptr == end && std::isfinite(value);
 }
 
+/// The times of the case's time directories, in no order.
+std::vector<double> TimesOf(const fs::path& caseDirectory)
+{
+  std::vector<double> times;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
+  {
+    double value = 0.0;
+    std::error_code notDirectory;
+    if (entry.is_directory(notDirectory) && TimeValue(entry.path().filename().string(), value))
+    {
+      times.push_back(value);
+    }
+  }
+  return times;
+}
+
 bool IsEmptyDirectory(const fs::path& directory)
 {
   std::error_code error;
@@ -164,19 +181,45 @@ std::string CopyTargetProblem(const fs::path& source, const fs::path& target)
 
 bool FirstTimeOf(const fs::path& caseDirectory, double& first)
 {
-  bool found = false;
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
+  const std::vector<double> times = TimesOf(caseDirectory);
+  if (times.empty())
   {
-    double value = 0.0;
-    std::error_code notDirectory;
-    if (entry.is_directory(notDirectory) && TimeValue(entry.path().filename().string(), value))
-    {
-      first = found ? std::min(first, value) : value;
-      found = true;
-    }
+    return false;
   }
-  return found;
+  first = *std::min_element(times.begin(), times.end());
+  return true;
+}
+
+bool SolverStartTime(
+  const fs::path& caseDirectory, const std::vector<double>& written, double& start)
+{
+  std::string text;
+  try
+  {
+    text = ReadFoamText(caseDirectory / "system" / "controlDict");
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+  const std::string from = FoamTopLevelEntry(text, "startFrom");
+  if (from == "startTime")
+  {
+    return TimeValue(FoamTopLevelEntry(text, "startTime"), start);
+  }
+  if (from != "firstTime" && from != "latestTime")
+  {
+    return false;
+  }
+  std::vector<double> times = TimesOf(caseDirectory);
+  times.insert(times.end(), written.begin(), written.end());
+  if (times.empty())
+  {
+    return false;
+  }
+  start = from == "firstTime" ? *std::min_element(times.begin(), times.end())
+                              : *std::max_element(times.begin(), times.end());
+  return true;
 }
 
 void CopyCase(const fs::path& source, const fs::path& target)

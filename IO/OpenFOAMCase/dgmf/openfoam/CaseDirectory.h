@@ -32,9 +32,16 @@ bool IsInside(const std::filesystem::path& directory, const std::filesystem::pat
 /// True for "constant" and for an OpenFOAM time name (a number such as "0", "1", "0.05").
 bool IsTimeName(const std::string& time);
 
-/// The earliest time of the case's time directories (a solver's start, usually), in `first`;
-/// false when it has none.
+/// The earliest time of the case's time directories, in `first`; false when it has none.
 bool FirstTimeOf(const std::filesystem::path& caseDirectory, double& first);
+
+/**
+ * The time a solver run of the case starts from once the times `written` are in it, by its
+ * controlDict's startFrom: startTime (its startTime), firstTime or latestTime (of the time
+ * directories and `written`). False when the controlDict cannot be read or says something else.
+ */
+bool SolverStartTime(
+  const std::filesystem::path& caseDirectory, const std::vector<double>& written, double& start);
 
 /// `caseDirectory`/constant/polyMesh for "constant", else `caseDirectory`/`time`/polyMesh.
 std::filesystem::path PolyMeshDirectory(

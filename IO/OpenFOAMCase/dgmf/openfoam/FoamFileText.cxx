@@ -211,6 +211,56 @@ std::string FoamHeaderEntry(const std::string& text, const std::string& keyword)
   return ParseFoamHeader(text).Get(keyword);
 }
 
+std::string FoamTopLevelEntry(const std::string& text, const std::string& keyword)
+{
+  const FoamHeader header = ParseFoamHeader(text);
+  std::size_t at = header.Found ? header.End : 0;
+  while ((at = SkipSpaceAndComments(text, at)) < text.size())
+  {
+    const std::size_t wordEnd = text.find_first_of(" \t\r\n{;", at);
+    if (wordEnd == std::string::npos)
+    {
+      break;
+    }
+    const std::string word = text.substr(at, wordEnd - at);
+    if (!word.empty() && word[0] == '#') // a directive (#include "..."): one line
+    {
+      at = text.find('\n', at);
+      at = at == std::string::npos ? text.size() : at + 1;
+      continue;
+    }
+    const std::size_t next = SkipSpaceAndComments(text, wordEnd);
+    if (next < text.size() && text[next] == '{') // a sub-dictionary: skipped whole
+    {
+      int depth = 0;
+      for (at = next; at < text.size(); ++at)
+      {
+        depth += text[at] == '{' ? 1 : text[at] == '}' ? -1 : 0;
+        if (depth == 0)
+        {
+          break;
+        }
+      }
+      ++at;
+      continue;
+    }
+    const std::size_t semicolon = FindEntryEnd(text, wordEnd);
+    if (semicolon == std::string::npos)
+    {
+      break;
+    }
+    if (word == keyword)
+    {
+      const std::size_t valueStart = SkipSpaceAndComments(text, wordEnd);
+      std::string value = text.substr(valueStart, semicolon - valueStart);
+      value.erase(value.find_last_not_of(" \t\r\n") + 1);
+      return value;
+    }
+    at = semicolon + 1;
+  }
+  return std::string();
+}
+
 std::string SetHeaderEntry(
   const std::string& text, const std::string& keyword, const std::string& value)
 {

@@ -44,6 +44,13 @@ FoamHeader ParseFoamHeader(const std::string& text);
 std::string FoamHeaderEntry(const std::string& text, const std::string& keyword);
 
 /**
+ * The value of the top-level entry `keyword` of `text` after its header ("startFrom startTime;"
+ * in a controlDict: "startTime"), or "" when absent; sub-dictionaries ("functions { ... }") are
+ * skipped, not searched.
+ */
+std::string FoamTopLevelEntry(const std::string& text, const std::string& keyword);
+
+/**
  * `text` with the header entry `keyword` set to `value` (written as given: quote it if needed).
  * An entry that is absent is added at the end of the header. `text` without a header is returned
  * unchanged.
