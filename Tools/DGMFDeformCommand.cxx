@@ -288,9 +288,8 @@ int RunSeries(
               << dgmf::NumberText(steps.front()) << " (give --times from 0)\n";
     return options.Times.empty() ? ExitFailure : ExitUsage; // the table's times, or --times
   }
-  // Frames before the time a solver run of the case starts from (its controlDict's startFrom,
-  // once the series is written; the output case's, or the input's that it will copy) are read
-  // by no such run.
+  // The time a solver run of the case starts from (its controlDict's startFrom, once the series
+  // is written; the output case's, or the input's that it will copy).
   double solverStart = 0.0;
   const std::filesystem::path outputCase = dgmf::openfoam::CaseDirectoryOf(options.Output);
   if (!files &&
@@ -299,14 +298,15 @@ int RunSeries(
         : dgmf::openfoam::CaseDirectoryOf(options.Input),
       steps, solverStart))
   {
-    const auto before = static_cast<std::size_t>(std::count_if(
-      steps.begin(), steps.end(), [solverStart](double t) { return t < solverStart; }));
-    if (before > 0)
+    // Every frame before it: no run of the case reads any (a run reads the frames from its start
+    // on; a series before a later start is the mistake worth a word).
+    if (std::all_of(
+          steps.begin(), steps.end(), [solverStart](double t) { return t < solverStart; }))
     {
-      std::cerr << "dgmf-deform: warning: " << before << " of the " << steps.size()
+      std::cerr << "dgmf-deform: warning: all " << steps.size()
                 << " frames come before the time a solver run of the case starts from, "
                 << dgmf::NumberText(solverStart)
-                << " (its controlDict's startFrom): such a run does not read them (give --times, "
+                << " (its controlDict's startFrom): such a run reads none of them (give --times, "
                    "or change startFrom)\n";
     }
   }
