@@ -46,8 +46,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fnmatch.h>
 #include <functional>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -153,13 +155,45 @@ void PrintBoundaries(
   }
   const auto inFile = [&fileNames](const std::string& name)
   { return std::find(fileNames.begin(), fileNames.end(), name) != fileNames.end(); };
+  // Whether an entry reaches the file's name `name` as the filter takes it: the name itself, an
+  // OpenFOAM region name ("patch/wing") or a selector ending in it unless a block has that very
+  // name, or an alternative or wildcard of it ("flap|slat", "wing_*").
+  const auto reaches = [&inFile](const std::string& entry, const std::string& name)
+  {
+    if (entry == name)
+    {
+      return true;
+    }
+    if (inFile(entry))
+    {
+      return false;
+    }
+    const std::size_t slash = entry.rfind('/');
+    if (slash != std::string::npos && entry.compare(slash + 1, std::string::npos, name) == 0)
+    {
+      return true;
+    }
+    if (entry.find_first_of("|*?") == std::string::npos)
+    {
+      return false;
+    }
+    std::stringstream alternatives(entry);
+    std::string alternative;
+    while (std::getline(alternatives, alternative, '|'))
+    {
+      alternative.erase(0, alternative.find_first_not_of(" \t"));
+      alternative.erase(alternative.find_last_not_of(" \t") + 1);
+      if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
   for (const std::string& name : fileNames)
   {
-    // "patch/wing" names the block "wing" (an OpenFOAM region name) unless a block has that name.
-    const bool named = std::find(chosen.begin(), chosen.end(), name) != chosen.end() ||
-      (std::find(chosen.begin(), chosen.end(), "patch/" + name) != chosen.end() &&
-        !inFile("patch/" + name));
-    if (!named)
+    if (std::none_of(chosen.begin(), chosen.end(),
+          [&](const std::string& entry) { return reaches(entry, name); }))
     {
       others.push_back(name);
     }
