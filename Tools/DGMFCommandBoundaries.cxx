@@ -1,0 +1,114 @@
+#include "DGMFCommandBoundaries.h"
+
+#include "DGMFCommandData.h"
+#include "DGMFCommandMessages.h"
+
+#include "vtkDGMFDeformFilter.h"
+
+#include <algorithm>
+#include <fnmatch.h>
+#include <iostream>
+#include <sstream>
+
+namespace dgmf_cli
+{
+std::string Listed(const std::vector<std::string>& names)
+{
+  std::string text;
+  for (const std::string& name : names)
+  {
+    text += (text.empty() ? "" : ", ") + name;
+  }
+  return text.empty() ? "(none)" : text;
+}
+
+void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames)
+{
+  const std::vector<std::string>&moving = options.Moving, &fixed = options.Static,
+        &slip = options.Slip;
+  std::vector<std::string> chosen, others;
+  for (const auto* list : { &moving, &fixed, &slip })
+  {
+    chosen.insert(chosen.end(), list->begin(), list->end());
+  }
+  const auto inFile = [&fileNames](const std::string& name)
+  { return std::find(fileNames.begin(), fileNames.end(), name) != fileNames.end(); };
+  // Whether an entry reaches the file's name `name` as the filter takes it: the name itself, an
+  // OpenFOAM region name ("patch/wing") or a selector ending in it unless a block has that very
+  // name, or an alternative or wildcard of it ("flap|slat", "wing_*").
+  const auto reaches = [&inFile](const std::string& entry, const std::string& name)
+  {
+    if (entry == name)
+    {
+      return true;
+    }
+    if (inFile(entry))
+    {
+      return false;
+    }
+    const std::size_t slash = entry.rfind('/');
+    if (slash != std::string::npos && entry.compare(slash + 1, std::string::npos, name) == 0)
+    {
+      return true;
+    }
+    if (entry.find_first_of("|*?") == std::string::npos)
+    {
+      return false;
+    }
+    std::stringstream alternatives(entry);
+    std::string alternative;
+    while (std::getline(alternatives, alternative, '|'))
+    {
+      alternative.erase(0, alternative.find_first_not_of(" \t"));
+      alternative.erase(alternative.find_last_not_of(" \t") + 1);
+      if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  for (const std::string& name : fileNames)
+  {
+    if (std::none_of(chosen.begin(), chosen.end(),
+          [&](const std::string& entry) { return reaches(entry, name); }))
+    {
+      others.push_back(name);
+    }
+  }
+  std::cout << "dgmf-deform: boundaries from the file's names: moving " << Listed(moving)
+            << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
+            << Listed(others) << ")" << std::endl;
+}
+
+void GiveOpenFOAMBoundaries(
+  vtkDGMFDeformFilter* filter, const std::string& input, const CommandOptions& options)
+{
+  filter->RemoveAllMovingBoundaries();
+  filter->RemoveAllStaticBoundaries();
+  filter->RemoveAllSlipBoundaries();
+  // Every name as the user gave it: an expansion a user also typed ('front|back') is not
+  // renamed in messages.
+  std::vector<std::string> given = options.Moving;
+  given.insert(given.end(), options.Static.begin(), options.Static.end());
+  given.insert(given.end(), options.Slip.begin(), options.Slip.end());
+  const auto add = [&input, &given](const std::vector<std::string>& names, auto addBoundary)
+  {
+    const std::vector<std::string> expanded = ExpandPatchGroups(input, names);
+    for (std::size_t k = 0; k < names.size(); ++k)
+    {
+      // Messages name a group of several patches as the user did (a group of one is its
+      // patch, whose name the messages use for the block as well).
+      if (expanded[k] != names[k] && expanded[k].find('|') != std::string::npos &&
+        std::find(given.begin(), given.end(), expanded[k]) == given.end())
+      {
+        ShowInMessagesAs("'" + expanded[k] + "'", "'" + names[k] + "'");
+      }
+      addBoundary(expanded[k].c_str());
+    }
+  };
+  add(options.Moving, [&filter](const char* name) { filter->AddMovingBoundary(name); });
+  add(options.Static, [&filter](const char* name) { filter->AddStaticBoundary(name); });
+  add(options.Slip, [&filter](const char* name) { filter->AddSlipBoundary(name); });
+}
+} // namespace dgmf_cli

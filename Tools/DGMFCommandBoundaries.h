@@ -1,0 +1,38 @@
+/**
+ * @file DGMFCommandBoundaries.h
+ * @brief dgmf-deform's boundaries chosen by name: what it gives the filter for an OpenFOAM case
+ * (patch groups as the alternatives of their patches) and what it says it took from a mesh file.
+ */
+#ifndef DGMFCommandBoundaries_h
+#define DGMFCommandBoundaries_h
+
+#include "DGMFCommandOptions.h"
+
+#include <string>
+#include <vector>
+
+class vtkDGMFDeformFilter;
+
+namespace dgmf_cli
+{
+/// "a, b, c", or "(none)".
+std::string Listed(const std::vector<std::string>& names);
+
+/**
+ * Says which boundaries the run uses: the names given, and every other boundary of the file
+ * (`fileNames`), which stays static, as the filter reads the names (wildcards, alternatives,
+ * selectors, region prefixes). The file's names win over any detection of the mesh boundary.
+ */
+void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames);
+
+/**
+ * Gives `filter` the boundaries of `options` for the OpenFOAM case `input`: a patch group
+ * ("wall", "motorBikeGroup") is the alternatives of its patches, one boundary (a slip group whose
+ * patches are not one plane, as "wedge", is a plane per patch: FitSlipPlanes), and messages name
+ * a group of several patches as the user did.
+ */
+void GiveOpenFOAMBoundaries(
+  vtkDGMFDeformFilter* filter, const std::string& input, const CommandOptions& options);
+} // namespace dgmf_cli
+
+#endif
