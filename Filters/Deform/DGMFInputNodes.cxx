@@ -31,6 +31,7 @@
 #include <array>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -326,6 +327,15 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
   {
     groups = options.Roles->SlipNodes;
     names = options.Roles->SlipNames;
+    // Less the nodes made static since (the edges of a slip plane on an unread boundary).
+    for (std::vector<std::int32_t>& group : groups)
+    {
+      group.erase(
+        std::remove_if(group.begin(), group.end(),
+          [&nodes](std::int32_t i)
+          { return nodes.Kinds[static_cast<std::size_t>(i)] != dgmf::NodeKind::SlipBoundary; }),
+        group.end());
+    }
   }
   else
   {
@@ -467,6 +477,40 @@ bool InputGatherer::RolesCoverTheBoundary(vtkUnstructuredGrid* mesh, const Input
   return true;
 }
 
+void InputGatherer::MakeSlipEdgesStatic(
+  vtkUnstructuredGrid* mesh, const std::vector<std::uint8_t>& unread, InputNodes& nodes)
+{
+  // Where a slip plane meets the boundary no block was read for, the nodes of their common edge
+  // are static, as they are when that boundary is read as a static patch (static over slip): a
+  // face of that boundary with a node of it and slip nodes makes them static. Otherwise the slip
+  // plane lies outside the graph of the static and moving nodes, and its nodes barely move (a
+  // half model read with its symmetry planes but not its far field: inverted cells until
+  // 2026-11-30). The slip plane's own faces have no node of the unread boundary.
+  const BoundaryFacets& facets = this->GetBoundaryFacets(mesh, nodes.Patches, nodes.Dimension);
+  if (!facets.Canonical.empty() || nodes.Layers.Found() ||
+    std::none_of(nodes.Kinds.begin(), nodes.Kinds.end(),
+      [](dgmf::NodeKind kind) { return kind == dgmf::NodeKind::SlipBoundary; }))
+  {
+    return; // (coincident points, one-cell-thick layers: not done)
+  }
+  std::vector<vtkIdType> edge;
+  for (std::size_t f = 0; f < facets.Size(); ++f)
+  {
+    const vtkIdType* begin = facets.Ids.data() + facets.Offsets[f];
+    const vtkIdType* end = facets.Ids.data() + facets.Offsets[f + 1];
+    if (std::any_of(begin, end, [&](vtkIdType id) { return unread[static_cast<std::size_t>(id)]; }))
+    {
+      std::copy_if(begin, end, std::back_inserter(edge),
+        [&](vtkIdType id)
+        { return nodes.Kinds[static_cast<std::size_t>(id)] == dgmf::NodeKind::SlipBoundary; });
+    }
+  }
+  for (vtkIdType id : edge)
+  {
+    nodes.Kinds[static_cast<std::size_t>(id)] = dgmf::NodeKind::StaticBoundary;
+  }
+}
+
 void InputGatherer::GatherKinds(
   vtkUnstructuredGrid* mesh, const GatherOptions& options, vtkDataArray* marker, InputNodes& nodes)
 {
@@ -480,13 +524,16 @@ void InputGatherer::GatherKinds(
       !this->RolesCoverTheBoundary(mesh, nodes))
     {
       const std::vector<std::uint8_t> flags = this->FlagMeshBoundary(mesh, nodes);
+      std::vector<std::uint8_t> unread(n, 0); // on the boundary no block was read for
       for (std::size_t i = 0; i < n; ++i)
       {
         if (flags[i] && nodes.Kinds[i] == dgmf::NodeKind::Interior)
         {
           nodes.Kinds[i] = dgmf::NodeKind::StaticBoundary;
+          unread[i] = 1;
         }
       }
+      this->MakeSlipEdgesStatic(mesh, unread, nodes);
     }
     return;
   }

@@ -185,6 +185,9 @@ private:
   // 1 for the nodes on the mesh's boundary faces (for a one-cell-thick mesh, the faces across
   // its two planes).
   std::vector<std::uint8_t> FlagMeshBoundary(vtkUnstructuredGrid* mesh, const InputNodes& nodes);
+  /// The slip nodes on faces of the boundary no block was read for (`unread` nodes) made static.
+  void MakeSlipEdgesStatic(
+    vtkUnstructuredGrid* mesh, const std::vector<std::uint8_t>& unread, InputNodes& nodes);
   // Whether the mesh's boundary nodes all have a role in `nodes.Kinds` already, known without
   // the boundary: the mesh's polygons (boundary patches) close it and their nodes have roles
   // (but for the two planes of a one-cell-thick mesh, whose nodes need none).
