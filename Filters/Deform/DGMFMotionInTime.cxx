@@ -114,8 +114,10 @@ MotionInTime MotionOfExecution(
 void ReportMotionTimeSteps(
   vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* inInfo, vtkInformation* outInfo)
 {
+  // An input whose data change in time (two time steps or more) keeps its steps; one time step
+  // (an OpenFOAM case's "0": until 2026-11-30 the animation had that one frame) does not.
   if (!IsMotionInTime(filter, table != nullptr) ||
-    inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 1)
   {
     return;
   }

@@ -40,9 +40,10 @@ MotionInTime MotionOfExecution(
   vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* outInfo);
 
 /**
- * RequestInformation's part: when the motion depends on time and the input (`inInfo`) has no time
- * steps, the motion's own (MotionTimeSteps, the table's when it can be read) and their range are
- * set in `outInfo`; an input with time steps keeps them (the pipeline copied them already).
+ * RequestInformation's part: when the motion depends on time and the input (`inInfo`) has fewer
+ * than two time steps, the motion's own (MotionTimeSteps, the table's when it can be read) and
+ * their range are set in `outInfo`; an input with two or more keeps them (the pipeline copied
+ * them already).
  */
 void ReportMotionTimeSteps(
   vtkDGMFDeformFilter* filter, vtkTable* table, vtkInformation* inInfo, vtkInformation* outInfo);

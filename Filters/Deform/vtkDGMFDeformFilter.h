@@ -274,9 +274,10 @@ public:
   ///@{
   /**
    * The time steps reported when the motion depends on time (a law, or a trajectory table) and
-   * the input has none: NumberOfTimeSteps times spread over TimeRange, both ends included, in
-   * increasing order (a range given end first is taken from its low end; an empty range is one
-   * time). With a table: the table's times. Defaults: (0, 1) and 21.
+   * the input has fewer than two (an OpenFOAM case's "0" alone): NumberOfTimeSteps times spread
+   * over TimeRange, both ends included, in increasing order (a range given end first is taken from
+   * its low end; an empty range is one time). With a table: the table's times. Defaults: (0, 1)
+   * and 21.
    */
   vtkSetVector2Macro(TimeRange, double);
   vtkGetVector2Macro(TimeRange, double);

@@ -11,11 +11,14 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridAlgorithm.h"
 
 #include <gtest/gtest.h>
 
@@ -77,6 +80,35 @@ vtkSmartPointer<vtkTable> Table(const std::map<std::string, std::vector<double>>
   }
   return table;
 }
+
+/// A source of a grid with the given time steps (a reader of a case with time directories).
+class TimedGridSource : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static TimedGridSource* New();
+  vtkTypeMacro(TimedGridSource, vtkUnstructuredGridAlgorithm);
+  vtkSmartPointer<vtkUnstructuredGrid> Grid;
+  std::vector<double> Times;
+
+protected:
+  TimedGridSource() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkInformation* info = out->GetInformationObject(0);
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->Times.data(),
+      static_cast<int>(this->Times.size()));
+    const double range[2] = { this->Times.front(), this->Times.back() };
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    return 1;
+  }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkUnstructuredGrid::GetData(out)->ShallowCopy(this->Grid);
+    return 1;
+  }
+};
+vtkStandardNewMacro(TimedGridSource);
 } // namespace
 
 TEST(MotionInTime, AnAxisAndAnAngleTurnAsTheEulerAnglesDo)
@@ -182,6 +214,31 @@ TEST(MotionInTime, AHarmonicLawReportsTimeStepsAndDeformsEachFrameFromTheInput)
   ramp->SetTranslationLawParameters(0.0, 0.5, 1.0, 1.0);
   ramp->UpdateTimeStep(0.5);
   EXPECT_TRUE(errors.Contains("end time"));
+}
+
+TEST(MotionInTime, AnInputWithOneTimeGetsTheMotionsTimesAndOneWithSeveralKeepsThem)
+{
+  // An OpenFOAM case with a "0" directory alone reports the one time 0: the animation had that
+  // one frame until 2026-11-30. An input with two times or more keeps them.
+  vtkNew<TimedGridSource> source;
+  source->Grid = Rectangle();
+  for (const std::vector<double>& times : { std::vector<double>{ 0.0 }, { 0.0, 2.0, 5.0 } })
+  {
+    source->Times = times;
+    source->Modified();
+    vtkNew<vtkDGMFDeformFilter> pitching;
+    pitching->SetInputConnection(source->GetOutputPort());
+    pitching->SetBoundaryMarkerArrayName("BoundaryMarker");
+    pitching->SetRotationLaw(vtkDGMFDeformFilter::HARMONIC);
+    pitching->SetRotationLawParameters(0.0, 10.0, 1.0, 0.0);
+    pitching->SetNumberOfTimeSteps(5);
+    pitching->UpdateInformation();
+    vtkInformation* info = pitching->GetOutputInformation(0);
+    const int reported = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    EXPECT_EQ(reported, times.size() > 1 ? 3 : 5) << times.size();
+    pitching->UpdateTimeStep(0.25);
+    EXPECT_EQ(dgmf_test::Field(pitching->GetOutput(), "MotionTime"), 0.25) << times.size();
+  }
 }
 
 TEST(MotionInTime, APitchingAirfoilComesBackToTheSameBitsEveryPeriodWithoutInvertedCells)
