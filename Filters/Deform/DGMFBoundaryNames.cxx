@@ -321,6 +321,12 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
         "Cells Generator out of the pipeline.");
     }
   }
+  // The cells of the mesh's dimension, all blocks together.
+  vtkIdType volumeCells = 0;
+  for (const CompositeMesh::Leaf& leaf : leaves)
+  {
+    volumeCells += leaf.CellDimension == dimension ? leaf.Cells : 0;
+  }
   // The names of every leaf of the input, loaded or not.
   std::set<std::string> allLeafNames;
   if (auto* input = mesh.GetInput())
@@ -470,8 +476,10 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     }
     for (std::size_t l : found)
     {
-      if (leaves[l].CellDimension == dimension &&
-        static_cast<std::size_t>(leaves[l].NumberOfPoints) == n)
+      // Every cell of the mesh's dimension from this block: its volume (by the cells, not the
+      // points: a piece of a redistributed mesh may hold patch points its volume piece lacks).
+      if (leaves[l].CellDimension == dimension && leaves[l].Cells > 0 &&
+        leaves[l].Cells == volumeCells)
       {
         throw std::invalid_argument("'" + entry +
           "' is the whole mesh (its volume block), not a boundary: name the boundary patches "

@@ -455,3 +455,24 @@ TEST(BoundaryNames, ASlipPlaneMeetingAnUnreadBoundaryHasItsEdgesStatic)
   }
   EXPECT_LT(largest, 1e-12);
 }
+
+TEST(BoundaryNames, TheVolumeBlockIsRefusedAlsoWhenPatchesHoldPointsOfTheirOwn)
+{
+  // A piece of a redistributed mesh: a patch block holds a point its volume piece does not, so
+  // the volume block is not all of the merged nodes. Until 2026-11-30 the volume block named as
+  // moving was then taken (pvbatch on 2 processes turned the whole mesh); it is the volume by
+  // its cells.
+  auto blocks = dgmf_test::HexBoxBlocks(3, "");
+  auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+  auto* side = vtkPolyData::SafeDownCast(boundary->GetBlock(0));
+  ASSERT_NE(side, nullptr);
+  side->GetPoints()->InsertNextPoint(10.0, 10.0, 10.0); // in no cell of the volume piece
+  vtkNew<vtkDGMFDeformFilter> filter;
+  dgmf_test::ErrorMessages errors(filter);
+  filter->SetInputData(blocks);
+  filter->AddMovingBoundary("internalMesh");
+  filter->SetTranslation(0.1, 0.0, 0.0);
+  filter->Update();
+  EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)), nullptr);
+  EXPECT_TRUE(errors.Contains("'internalMesh' is the whole mesh (its volume block)"));
+}
