@@ -87,6 +87,13 @@ private:
 };
 
 /// The file's sizes, checked against what the file can hold before anything is allocated.
+/// For a node number 0, what it most often means: the file ends before its data (a copy cut
+/// short reads back zeros where its arrays should be).
+std::string CutShortHint(std::int64_t node)
+{
+  return node == 0 ? " (0: is the file cut short? Its arrays read back as zeros past its end)" : "";
+}
+
 ex_init_params ReadSizes(const ExodusHandle& file)
 {
   ex_init_params sizes{};
@@ -278,7 +285,7 @@ void ReadElementBlocks(const ExodusHandle& file, const ex_init_params& sizes, Na
         if (node < 1 || node > nodeCount)
         {
           throw FileError(file.Path + ": an element uses node " + std::to_string(node) +
-            ", outside 1.." + std::to_string(nodeCount));
+            ", outside 1.." + std::to_string(nodeCount) + CutShortHint(node));
         }
         cell[k] = node - 1;
       }
@@ -332,7 +339,8 @@ Cells ReadSideSet(const ExodusHandle& file, std::int64_t id, const std::string& 
       const std::int64_t node = nodes[next++];
       if (node < 1 || node > nodeCount)
       {
-        throw FileError(file.Path + ": " + what + " uses node " + std::to_string(node));
+        throw FileError(
+          file.Path + ": " + what + " uses node " + std::to_string(node) + CutShortHint(node));
       }
       face[k] = node - 1;
     }
@@ -366,7 +374,7 @@ Cells ReadNodeSet(
     if (node < 1 || node > nodeCount)
     {
       throw FileError(file.Path + ": " + what + " holds node " + std::to_string(node) +
-        ", outside 1.." + std::to_string(nodeCount));
+        ", outside 1.." + std::to_string(nodeCount) + CutShortHint(node));
     }
     const std::int64_t index = node - 1;
     vertices.Add(Vertex, &index, 1);
