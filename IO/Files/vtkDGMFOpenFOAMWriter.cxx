@@ -10,6 +10,7 @@
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenFOAMReader.h"
 #include "vtkPointSet.h"
@@ -80,6 +81,20 @@ void vtkDGMFOpenFOAMWriter::WriteData()
     return;
   }
   vtkPointSet* deformed = InternalMeshOf(this->GetInput(0));
+  // Under MPI (pvbatch) the case is written by the process that holds the mesh as the reader
+  // gives it; a process without a piece has nothing to write (it said "no unstructured grid").
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
+  if (processes > 1 && (!deformed || deformed->GetNumberOfPoints() == 0))
+  {
+    return;
+  }
+  const std::string distributedHint = processes > 1
+    ? " In a distributed run (" + std::to_string(processes) +
+      " processes), the mesh to write is the reader's as it gives it on its process, not "
+      "redistributed or gathered (their points are ordered otherwise); or write with dgmf-deform "
+      "(Documentation/distributed.md)."
+    : "";
   if (!deformed)
   {
     fail("The input has no unstructured grid (the OpenFOAM reader's internalMesh).");
@@ -98,14 +113,15 @@ void vtkDGMFOpenFOAMWriter::WriteData()
   if (!reference || source.empty())
   {
     fail("No undeformed mesh or no source case: read the case with an OpenFOAM reader upstream, "
-         "or set SourceCase and connect the Reference input (the mesh as read).");
+         "or set SourceCase and connect the Reference input (the mesh as read)." +
+      distributedHint);
     return;
   }
   if (reference->GetNumberOfPoints() != deformed->GetNumberOfPoints())
   {
     fail("The input has " + std::to_string(deformed->GetNumberOfPoints()) +
       " points and the undeformed mesh " + std::to_string(reference->GetNumberOfPoints()) +
-      ": they must be the same mesh.");
+      ": they must be the same mesh." + distributedHint);
     return;
   }
   const fs::path target(this->FileName);
