@@ -515,16 +515,60 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
   }
   return ExitSuccess;
 }
+namespace
+{
+/**
+ * The names of a value as the file has them: split at its commas, but for runs of its comma-
+ * separated parts that are, joined again, one of `fileNames` ("farfield,Flap, inner": farfield and
+ * "Flap, inner"; the longest run first).
+ */
+std::vector<std::string> NamesOfValue(
+  const std::string& value, const std::vector<std::string>& fileNames)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(value);
+  std::string part;
+  while (std::getline(stream, part, ','))
+  {
+    parts.push_back(part);
+  }
+  std::vector<std::string> names;
+  for (std::size_t first = 0; first < parts.size();)
+  {
+    std::size_t last = first; // the run first..last joined, if the file has it
+    std::string joined = parts[first];
+    std::string longest;
+    for (std::size_t k = first; k < parts.size(); ++k)
+    {
+      joined = k == first ? parts[first] : joined + "," + parts[k];
+      if (k > first && std::find(fileNames.begin(), fileNames.end(), joined) != fileNames.end())
+      {
+        last = k;
+        longest = joined;
+      }
+    }
+    const std::string name = last > first ? longest : parts[first];
+    if (!name.empty())
+    {
+      names.push_back(name);
+    }
+    first = last + 1;
+  }
+  return names;
+}
+} // namespace
+
 void KeepWholeNames(
   CommandOptions& options, const std::vector<std::string>& fileNames, vtkDGMFDeformFilter* filter)
 {
-  const auto whole = [&fileNames](const std::string& value)
+  std::vector<std::vector<std::string>> names;
+  bool changed = false;
+  for (const auto& value : options.NameValues)
   {
-    return value.find(',') != std::string::npos &&
-      std::find(fileNames.begin(), fileNames.end(), value) != fileNames.end();
-  };
-  if (std::none_of(options.NameValues.begin(), options.NameValues.end(),
-        [&whole](const auto& value) { return whole(value.second); }))
+    names.push_back(NamesOfValue(value.second, fileNames));
+    changed = changed || names.back() != SplitNames(value.second);
+  }
+  if (!changed)
   {
     return;
   }
@@ -534,10 +578,10 @@ void KeepWholeNames(
   filter->RemoveAllMovingBoundaries();
   filter->RemoveAllStaticBoundaries();
   filter->RemoveAllSlipBoundaries();
-  for (const auto& [role, value] : options.NameValues)
+  for (std::size_t v = 0; v < options.NameValues.size(); ++v)
   {
-    for (const std::string& name :
-      whole(value) ? std::vector<std::string>{ value } : SplitNames(value))
+    const char role = options.NameValues[v].first;
+    for (const std::string& name : names[v])
     {
       role == 'm'     ? filter->AddMovingBoundary(name.c_str())
         : role == 's' ? filter->AddStaticBoundary(name.c_str())

@@ -56,9 +56,10 @@ struct CommandOptions
 std::string Usage();
 
 /**
- * A value of --moving, --static or --slip that is, whole, one of the file's boundary names
- * (`fileNames`: a gmsh group "Flap, inner") is that name, not a list split at its commas: the
- * options' lists and the filter's boundaries are made again so.
+ * A value of --moving, --static or --slip, or a run of its comma-separated parts, that is one of
+ * the file's boundary names (`fileNames`: a gmsh group "Flap, inner", also in "farfield,Flap,
+ * inner") is that name, not parts split at its commas: the options' lists and the filter's
+ * boundaries are made again so.
  */
 void KeepWholeNames(
   CommandOptions& options, const std::vector<std::string>& fileNames, vtkDGMFDeformFilter* filter);
