@@ -56,7 +56,9 @@ struct NodeRoles
 {
   dgmf::UninitializedVector<dgmf::NodeKind> Kinds; ///< written in blocks on the threads
   std::vector<std::int32_t> BodyIds;               ///< with several moving bodies, else empty
-  /// per slip entry, its slip nodes (a node on two entries' planes is in both)
+  /// per slip entry, its slip nodes (a node on two entries' planes is in both); they fit its
+  /// plane, and those still SlipBoundary when it is fitted are held to it (FitSlipPlanes: an edge
+  /// on a boundary no block was read for is static by then, MakeSlipEdgesStatic)
   std::vector<std::vector<std::int32_t>> SlipNodes;
   std::vector<std::string> SlipNames; ///< the entries, for messages
   /// The planes of a one-cell-thick mesh the roles were assigned with (the gathering reuses them)

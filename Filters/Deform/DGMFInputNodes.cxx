@@ -327,15 +327,6 @@ void InputGatherer::GatherSlipPlanes(const GatherOptions& options, InputNodes& n
   {
     groups = options.Roles->SlipNodes;
     names = options.Roles->SlipNames;
-    // Less the nodes made static since (the edges of a slip plane on an unread boundary).
-    for (std::vector<std::int32_t>& group : groups)
-    {
-      group.erase(
-        std::remove_if(group.begin(), group.end(),
-          [&nodes](std::int32_t i)
-          { return nodes.Kinds[static_cast<std::size_t>(i)] != dgmf::NodeKind::SlipBoundary; }),
-        group.end());
-    }
   }
   else
   {

@@ -72,6 +72,10 @@ void FitSlipPlanes(const std::vector<std::vector<std::int32_t>>& groups,
       }
       for (std::int32_t node : *fitted.Nodes)
       {
+        if (nodes.Kinds[static_cast<std::size_t>(node)] != dgmf::NodeKind::SlipBoundary)
+        {
+          continue; // made static since the roles (an edge on the unread boundary): it fits only
+        }
         const auto [at, first] = slot.emplace(node, order.size());
         if (first)
         {
