@@ -61,6 +61,13 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     {
       alternative.erase(0, alternative.find_first_not_of(" \t"));
       alternative.erase(alternative.find_last_not_of(" \t") + 1);
+      for (const char* prefix : { "patch/", "boundary/" }) // OpenFOAM region names
+      {
+        if (alternative.rfind(prefix, 0) == 0)
+        {
+          alternative.erase(0, std::string(prefix).size());
+        }
+      }
       if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0)
       {
         return true;

@@ -47,10 +47,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fnmatch.h>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -253,11 +251,11 @@ int RunSeries(
   // is written; the output case's, or the input's that it will copy).
   double solverStart = 0.0;
   const std::filesystem::path outputCase = dgmf::openfoam::CaseDirectoryOf(options.Output);
+  const bool newCase = !dgmf::openfoam::IsCase(outputCase); // to be a copy of the input's
   if (!files &&
-    dgmf::openfoam::SolverStartTime(dgmf::openfoam::IsCase(outputCase)
-        ? outputCase
-        : dgmf::openfoam::CaseDirectoryOf(options.Input),
-      steps, solverStart))
+    dgmf::openfoam::SolverStartTime(
+      newCase ? dgmf::openfoam::CaseDirectoryOf(options.Input) : outputCase, steps, newCase,
+      solverStart))
   {
     // Every frame before it: no run of the case reads any (a run reads the frames from its start
     // on; a series before a later start is the mistake worth a word).

@@ -7,7 +7,6 @@
 #include "dgmf/ResultNames.h"
 
 #include "vtkCellTypes.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataAssembly.h"
@@ -15,11 +14,9 @@
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
-#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
-#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -27,7 +24,6 @@
 #include <algorithm>
 #include <fnmatch.h>
 #include <map>
-#include <set>
 #include <stdexcept>
 
 namespace dgmf_vtk
@@ -327,26 +323,6 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   {
     volumeCells += leaf.CellDimension == dimension ? leaf.Cells : 0;
   }
-  // The names of every leaf of the input, loaded or not.
-  std::set<std::string> allLeafNames;
-  if (auto* input = mesh.GetInput())
-  {
-    auto iterator = vtk::TakeSmartPointer(input->NewIterator());
-    iterator->SkipEmptyNodesOff();
-    for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
-    {
-      vtkInformation* metaData =
-        iterator->HasCurrentMetaData() ? iterator->GetCurrentMetaData() : nullptr;
-      if (metaData && metaData->Has(vtkCompositeDataSet::NAME()))
-      {
-        allLeafNames.insert(metaData->Get(vtkCompositeDataSet::NAME()));
-      }
-    }
-  }
-  for (const CompositeMesh::Leaf& leaf : leaves)
-  {
-    allLeafNames.insert(leaf.Name); // (partitions named by their collection's assembly)
-  }
   // The leaves of an entry.
   std::vector<std::uint8_t> foundEntries(
     piece ? selection.Moving.size() + selection.Static.size() + selection.Slip.size() : 0, 0);
@@ -358,8 +334,6 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     // Blocks of that very name first: a file's group named "boundary" or "patch/wing" is that
     // group, not the reader's container "boundary" (every patch: the whole mesh turned) or the
     // path to a block "wing" (until 2026-11-30).
-    // A piece of a distributed mesh may lack the block (an empty leaf): the name is still taken
-    // as the block's, never as a container's, or the pieces would disagree.
     for (const std::string& name : { entry, NameOf(entry) }) // as given, then without "patch/"
     {
       for (std::size_t l = 0; l < leaves.size(); ++l)
@@ -369,14 +343,15 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
           found.push_back(l);
         }
       }
-      if (!found.empty() || allLeafNames.count(name) > 0)
+      if (!found.empty())
       {
         return found;
       }
     }
     // A name that is no block's is not a container's either ("boundary", the reader's group of
     // patches: every boundary moving, the mesh turned rigidly): only a selector ("/Root/...")
-    // reaches into the reader's tree.
+    // reaches into the reader's tree. (A piece of a distributed mesh without the block finds
+    // none here: another piece holds it.)
     if (NameOf(entry).empty() || NameOf(entry)[0] != '/')
     {
       return found;

@@ -440,6 +440,8 @@ TEST(FoamFileText, TopLevelEntriesAreFoundPastSubDictionariesAndDirectives)
   EXPECT_EQ(of::FoamTopLevelEntry(text, "startTime"), "0.25");
   EXPECT_EQ(of::FoamTopLevelEntry(text, "type"), "");
   EXPECT_EQ(of::FoamTopLevelEntry(text, "endTime"), "");
+  // Given twice, the last counts (as foamDictionary says).
+  EXPECT_EQ(of::FoamTopLevelEntry(text + "startFrom latestTime;\n", "startFrom"), "latestTime");
 }
 
 TEST(CaseDirectory, TheSolversStartTimeFollowsStartFrom)
@@ -454,14 +456,18 @@ TEST(CaseDirectory, TheSolversStartTimeFollowsStartFrom)
   };
   double start = -1.0;
   controlDict("startFrom latestTime;\nstartTime 0;\n");
-  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, false, start));
   EXPECT_EQ(start, 100.0); // the case's time 100, after the frames written
   controlDict("startFrom firstTime;\n");
-  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, false, start));
   EXPECT_EQ(start, 0.0); // the case's 0
   controlDict("startFrom startTime;\nstartTime 0.75;\n");
-  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, start));
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, false, start));
   EXPECT_EQ(start, 0.75);
+  // The source of a new case: its copy has the first time only (0), not 100.
+  controlDict("startFrom latestTime;\nstartTime 0;\n");
+  ASSERT_TRUE(of::SolverStartTime(source, { 0.5, 1.0 }, true, start));
+  EXPECT_EQ(start, 1.0);
   controlDict("startFrom somewhere;\n");
-  EXPECT_FALSE(of::SolverStartTime(source, { 0.5 }, start));
+  EXPECT_FALSE(of::SolverStartTime(source, { 0.5 }, false, start));
 }

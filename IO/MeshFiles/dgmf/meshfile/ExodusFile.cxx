@@ -86,7 +86,6 @@ private:
   }
 };
 
-/// The file's sizes, checked against what the file can hold before anything is allocated.
 /// For a node number 0, what it most often means: the file ends before its data (a copy cut
 /// short reads back zeros where its arrays should be).
 std::string CutShortHint(std::int64_t node)
@@ -94,6 +93,7 @@ std::string CutShortHint(std::int64_t node)
   return node == 0 ? " (0: is the file cut short? Its arrays read back as zeros past its end)" : "";
 }
 
+/// The file's sizes, checked against what the file can hold before anything is allocated.
 ex_init_params ReadSizes(const ExodusHandle& file)
 {
   ex_init_params sizes{};

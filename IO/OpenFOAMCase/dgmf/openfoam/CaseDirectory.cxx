@@ -191,7 +191,7 @@ bool FirstTimeOf(const fs::path& caseDirectory, double& first)
 }
 
 bool SolverStartTime(
-  const fs::path& caseDirectory, const std::vector<double>& written, double& start)
+  const fs::path& caseDirectory, const std::vector<double>& written, bool copied, double& start)
 {
   std::string text;
   try
@@ -212,6 +212,10 @@ bool SolverStartTime(
     return false;
   }
   std::vector<double> times = TimesOf(caseDirectory);
+  if (copied && !times.empty()) // a copy has the first time directory only
+  {
+    times.assign(1, *std::min_element(times.begin(), times.end()));
+  }
   times.insert(times.end(), written.begin(), written.end());
   if (times.empty())
   {

@@ -38,10 +38,12 @@ bool FirstTimeOf(const std::filesystem::path& caseDirectory, double& first);
 /**
  * The time a solver run of the case starts from once the times `written` are in it, by its
  * controlDict's startFrom: startTime (its startTime), firstTime or latestTime (of the time
- * directories and `written`). False when the controlDict cannot be read or says something else.
+ * directories and `written`). With `copied`, the case is the source of a new case (CopyCase),
+ * which gets its first time directory only. False when the controlDict cannot be read or says
+ * something else.
  */
-bool SolverStartTime(
-  const std::filesystem::path& caseDirectory, const std::vector<double>& written, double& start);
+bool SolverStartTime(const std::filesystem::path& caseDirectory, const std::vector<double>& written,
+  bool copied, double& start);
 
 /// `caseDirectory`/constant/polyMesh for "constant", else `caseDirectory`/`time`/polyMesh.
 std::filesystem::path PolyMeshDirectory(

@@ -215,6 +215,7 @@ std::string FoamTopLevelEntry(const std::string& text, const std::string& keywor
 {
   const FoamHeader header = ParseFoamHeader(text);
   std::size_t at = header.Found ? header.End : 0;
+  std::string found;
   while ((at = SkipSpaceAndComments(text, at)) < text.size())
   {
     const std::size_t wordEnd = text.find_first_of(" \t\r\n{;", at);
@@ -249,16 +250,15 @@ std::string FoamTopLevelEntry(const std::string& text, const std::string& keywor
     {
       break;
     }
-    if (word == keyword)
+    if (word == keyword) // the last entry of a keyword is the one OpenFOAM takes
     {
       const std::size_t valueStart = SkipSpaceAndComments(text, wordEnd);
-      std::string value = text.substr(valueStart, semicolon - valueStart);
-      value.erase(value.find_last_not_of(" \t\r\n") + 1);
-      return value;
+      found = text.substr(valueStart, semicolon - valueStart);
+      found.erase(found.find_last_not_of(" \t\r\n") + 1);
     }
     at = semicolon + 1;
   }
-  return std::string();
+  return found;
 }
 
 std::string SetHeaderEntry(

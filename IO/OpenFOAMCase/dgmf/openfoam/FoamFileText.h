@@ -45,8 +45,8 @@ std::string FoamHeaderEntry(const std::string& text, const std::string& keyword)
 
 /**
  * The value of the top-level entry `keyword` of `text` after its header ("startFrom startTime;"
- * in a controlDict: "startTime"), or "" when absent; sub-dictionaries ("functions { ... }") are
- * skipped, not searched.
+ * in a controlDict: "startTime"; the last one when the keyword comes twice, as OpenFOAM reads
+ * it), or "" when absent; sub-dictionaries ("functions { ... }") are skipped, not searched.
  */
 std::string FoamTopLevelEntry(const std::string& text, const std::string& keyword);
 
