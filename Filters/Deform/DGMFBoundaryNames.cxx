@@ -1,24 +1,20 @@
 #include "DGMFBoundaryNames.h"
 
+#include "DGMFBoundaryNameParts.h"
+
 #include "DGMFCompositeMesh.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 #include "dgmf/HugePages.h"
-#include "dgmf/ResultNames.h"
 
-#include "vtkCellTypes.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkDataArray.h"
 #include "vtkDataAssembly.h"
 #include "vtkDataAssemblyUtilities.h"
 #include "vtkDataSet.h"
-#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPoints.h"
-#include "vtkStringArray.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -30,48 +26,6 @@ namespace dgmf_vtk
 {
 namespace
 {
-/// The block name of an entry: OpenFOAM region names ("patch/wing") without their prefix.
-std::string NameOf(std::string entry)
-{
-  for (const char* prefix : { "patch/", "boundary/" })
-  {
-    if (entry.rfind(prefix, 0) == 0)
-    {
-      entry = entry.substr(std::string(prefix).size());
-    }
-  }
-  return entry;
-}
-
-/// The alternatives of an entry "flap|slat|wing_*" (spaces around each dropped; empty ones too).
-std::vector<std::string> Alternatives(const std::string& entry)
-{
-  std::vector<std::string> parts;
-  std::size_t begin = 0;
-  while (begin <= entry.size())
-  {
-    const std::size_t end = std::min(entry.find('|', begin), entry.size());
-    std::string part = entry.substr(begin, end - begin);
-    const std::size_t first = part.find_first_not_of(" \t");
-    if (first != std::string::npos)
-    {
-      parts.push_back(part.substr(first, part.find_last_not_of(" \t") - first + 1));
-    }
-    begin = end + 1;
-  }
-  return parts;
-}
-
-/// A selector of the hierarchy for an entry: a path as given, else any node of that name.
-std::string SelectorOf(const std::string& entry)
-{
-  if (!entry.empty() && entry[0] == '/')
-  {
-    return entry;
-  }
-  return "//" + vtkDataAssembly::MakeValidNodeName(NameOf(entry).c_str());
-}
-
 /// Rank of a role: a moving body over static over slip over nothing.
 enum Rank : int
 {
@@ -112,51 +66,6 @@ bool InLayerPlanes(const CompositeMesh& mesh, const CompositeMesh::Leaf& leaf, c
   }
   return true;
 }
-/// The dimension of `name` among the input's named groups that are not boundaries
-/// (dgmf::names::NonBoundaryGroups, from a mesh file), or -1.
-int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& name)
-{
-  vtkFieldData* fields = input ? input->GetFieldData() : nullptr;
-  auto* groups = vtkStringArray::SafeDownCast(
-    fields ? fields->GetAbstractArray(dgmf::names::NonBoundaryGroups) : nullptr);
-  vtkDataArray* dimensions =
-    fields ? fields->GetArray(dgmf::names::NonBoundaryGroupDimensions) : nullptr;
-  if (!groups || !dimensions || dimensions->GetNumberOfTuples() != groups->GetNumberOfValues())
-  {
-    return -1;
-  }
-  for (vtkIdType g = 0; g < groups->GetNumberOfValues(); ++g)
-  {
-    if (groups->GetValue(g) == name)
-    {
-      return static_cast<int>(dimensions->GetTuple1(g));
-    }
-  }
-  return -1;
-}
-
-/// For a block of `leaf` whose own cells (not ghost) include cells of a lower dimension than
-/// `dimension` (a patch): its ghost cells (vtkGhostType) of dimension `dimension` or more; 0 for
-/// any other block.
-vtkIdType GhostVolumeCellsOfAPatch(
-  vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf, int dimension)
-{
-  auto* block = input && leaf.CellDimension >= dimension
-    ? vtkDataSet::SafeDownCast(input->GetDataSet(leaf.FlatIndex))
-    : nullptr;
-  vtkUnsignedCharArray* ghosts = block ? block->GetCellGhostArray() : nullptr;
-  vtkIdType volumeGhosts = 0;
-  bool faces = false;
-  for (vtkIdType c = 0; ghosts && c < block->GetNumberOfCells(); ++c)
-  {
-    const int cellDimension =
-      vtkCellTypes::GetDimension(static_cast<unsigned char>(block->GetCellType(c)));
-    faces = faces || (ghosts->GetValue(c) == 0 && cellDimension < dimension);
-    volumeGhosts += ghosts->GetValue(c) != 0 && cellDimension >= dimension ? 1 : 0;
-  }
-  return faces ? volumeGhosts : 0;
-}
-
 /// A block's name, or "(block N)" (its flat index) when it has none.
 std::string LabelOf(const CompositeMesh::Leaf& leaf)
 {
