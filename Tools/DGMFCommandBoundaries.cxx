@@ -3,12 +3,13 @@
 #include "DGMFCommandData.h"
 #include "DGMFCommandMessages.h"
 
+#include "DGMFBoundaryNameParts.h"
+
 #include "vtkDGMFDeformFilter.h"
 
 #include <algorithm>
 #include <fnmatch.h>
 #include <iostream>
-#include <sstream>
 
 namespace dgmf_cli
 {
@@ -55,19 +56,11 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     {
       return false;
     }
-    std::stringstream alternatives(entry);
-    std::string alternative;
-    while (std::getline(alternatives, alternative, '|'))
+    // Each alternative as the filter reads it (DGMFBoundaryNameParts: trimmed, without an
+    // OpenFOAM region prefix).
+    for (const std::string& given : dgmf_vtk::Alternatives(entry))
     {
-      alternative.erase(0, alternative.find_first_not_of(" \t"));
-      alternative.erase(alternative.find_last_not_of(" \t") + 1);
-      for (const char* prefix : { "patch/", "boundary/" }) // OpenFOAM region names
-      {
-        if (alternative.rfind(prefix, 0) == 0)
-        {
-          alternative.erase(0, std::string(prefix).size());
-        }
-      }
+      const std::string alternative = dgmf_vtk::NameOf(given);
       if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0)
       {
         return true;

@@ -63,6 +63,17 @@ bool ReadInteger(int argc, char* argv[], int& i, long minimum, long maximum, int
   return true;
 }
 
+/// Gives `filter` the boundary `name` in the role ('m' moving, 's' static, 'l' slip) and notes it
+/// in the options' list of that role.
+void AddBoundary(
+  char role, const std::string& name, CommandOptions& options, vtkDGMFDeformFilter* filter)
+{
+  role == 'm'     ? filter->AddMovingBoundary(name.c_str())
+    : role == 's' ? filter->AddStaticBoundary(name.c_str())
+                  : filter->AddSlipBoundary(name.c_str());
+  (role == 'm' ? options.Moving : role == 's' ? options.Static : options.Slip).push_back(name);
+}
+
 /// The comma-separated names of `list`.
 std::vector<std::string> SplitNames(const std::string& list)
 {
@@ -296,13 +307,7 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
         argv[i + 1]);
       for (const std::string& name : SplitNames(argv[++i]))
       {
-        option == "--moving"     ? filter->AddMovingBoundary(name.c_str())
-          : option == "--static" ? filter->AddStaticBoundary(name.c_str())
-                                 : filter->AddSlipBoundary(name.c_str());
-        (option == "--moving"      ? options.Moving
-            : option == "--static" ? options.Static
-                                   : options.Slip)
-          .push_back(name);
+        AddBoundary(options.NameValues.back().first, name, options, filter);
         options.ByName = true;
       }
     }
@@ -580,13 +585,9 @@ void KeepWholeNames(
   filter->RemoveAllSlipBoundaries();
   for (std::size_t v = 0; v < options.NameValues.size(); ++v)
   {
-    const char role = options.NameValues[v].first;
     for (const std::string& name : names[v])
     {
-      role == 'm'     ? filter->AddMovingBoundary(name.c_str())
-        : role == 's' ? filter->AddStaticBoundary(name.c_str())
-                      : filter->AddSlipBoundary(name.c_str());
-      (role == 'm' ? options.Moving : role == 's' ? options.Static : options.Slip).push_back(name);
+      AddBoundary(options.NameValues[v].first, name, options, filter);
     }
   }
 }

@@ -11,6 +11,7 @@
 #include "DGMFCompositeMesh.h"
 
 #include "vtkType.h"
+#include "vtkUnstructuredGrid.h" // for DGMFCompositeMesh.h's smart pointers
 
 #include <string>
 #include <vector>
