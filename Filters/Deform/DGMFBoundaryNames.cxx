@@ -261,7 +261,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     // patches: every boundary moving, the mesh turned rigidly): only a selector ("/Root/...")
     // reaches into the reader's tree. (A piece of a distributed mesh without the block finds
     // none here: another piece holds it.)
-    if (NameOf(entry).empty() || NameOf(entry)[0] != '/')
+    if (entry.empty() || entry[0] != '/')
     {
       return found;
     }

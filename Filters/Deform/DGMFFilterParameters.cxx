@@ -99,6 +99,14 @@ bool BodyMotionTable::Clear()
   return any;
 }
 
+namespace
+{
+/// How bodies are numbered, for the messages about a body the mesh does not have.
+constexpr const char* BodyNumbering =
+  " (numbered from 1: the body-id array, Body Id Array or dgmf-deform's --body-id, or the moving "
+  "boundaries in the order named).";
+} // namespace
+
 bool BodyMotionTable::PropertiesMove(
   vtkDGMFDeformFilter* filter, const InputNodes& nodes, const dgmf::Trajectory* trajectory) const
 {
@@ -128,18 +136,14 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
   {
     throw std::invalid_argument("Body Motions moves body " +
       std::to_string(this->Motions.rbegin()->first) + ", but the mesh has " +
-      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
-      " (numbered from 1: the body-id array, Body Id Array or dgmf-deform's --body-id, or the "
-      "moving boundaries in the order named).");
+      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") + BodyNumbering);
   }
   if (trajectory && trajectory->GetLargestBody() > bodies)
   {
     // A row for a body the mesh does not have would otherwise be ignored, and the mesh not moved.
     throw std::invalid_argument("The trajectory table moves body " +
       std::to_string(trajectory->GetLargestBody()) + ", but the mesh has " +
-      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") +
-      " (numbered from 1: the body-id array, Body Id Array or dgmf-deform's --body-id, or the "
-      "moving boundaries in the order named).");
+      std::to_string(bodies) + (bodies == 1 ? " moving body" : " moving bodies") + BodyNumbering);
   }
   // A row for a body id between 1 and the largest that no moving node has (ids 1 and 3, a row for
   // 2) would move nothing, and the body meant not at all: an error too (silent until
