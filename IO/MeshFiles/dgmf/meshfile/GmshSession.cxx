@@ -27,6 +27,9 @@ std::size_t& CheckedMessages()
   return checked;
 }
 
+/// The name of the link to the file in the session's private directory (Merge).
+constexpr const char* kLinkName = "mesh.msh";
+
 } // namespace
 
 GmshSession::GmshSession(const std::string& file)
@@ -113,13 +116,26 @@ void GmshSession::ThrowOnGmshError(const std::string& what)
 {
   std::vector<std::string> log;
   gmsh::logger::get(log);
+  // gmsh reads the file through a link (Merge): its messages name the user's file instead.
+  const std::string link =
+    this->LinkDirectory.empty() ? std::string() : (this->LinkDirectory / kLinkName).string();
   std::string errors;
   for (std::size_t k = CheckedMessages(); k < log.size(); ++k)
   {
-    if (log[k].rfind("Error", 0) == 0)
+    std::string message = log[k];
+    if (message.rfind("Error", 0) != 0)
     {
-      errors += (errors.empty() ? "" : "; ") + log[k];
+      continue;
     }
+    if (message.rfind("Error: ", 0) == 0)
+    {
+      message.erase(0, 7);
+    }
+    for (std::size_t at; !link.empty() && (at = message.find(link)) != std::string::npos;)
+    {
+      message.replace(at, link.size(), this->File);
+    }
+    errors += (errors.empty() ? "" : "; ") + message;
   }
   CheckedMessages() = log.size();
   if (!errors.empty())
@@ -138,7 +154,7 @@ void GmshSession::Merge(const std::string& path)
     this->Fail("no private temporary directory for gmsh to read the file through");
   }
   this->LinkDirectory = pattern;
-  const fs::path link = this->LinkDirectory / "mesh.msh";
+  const fs::path link = this->LinkDirectory / kLinkName;
   fs::create_symlink(absolute, link, error);
   if (error)
   {
@@ -152,7 +168,7 @@ void GmshSession::Merge(const std::string& path)
   {
     // AbortOnError is 0: gmsh reports through the logger. Anything thrown anyway is reported
     // below with the logged errors.
-    gmsh::logger::write("Error: gmsh threw while reading", "error");
+    gmsh::logger::write("gmsh threw while reading", "error");
   }
   this->ThrowOnGmshError("gmsh cannot read it");
 }
