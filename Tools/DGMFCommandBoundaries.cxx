@@ -68,6 +68,15 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     }
     return false;
   };
+  // A name the file does not have is the filter's error, which names it: no listing before it.
+  for (const std::string& entry : chosen)
+  {
+    if (std::none_of(fileNames.begin(), fileNames.end(),
+          [&](const std::string& name) { return reaches(entry, name); }))
+    {
+      return;
+    }
+  }
   for (const std::string& name : fileNames)
   {
     if (std::none_of(chosen.begin(), chosen.end(),
