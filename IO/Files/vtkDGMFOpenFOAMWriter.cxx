@@ -19,7 +19,6 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -177,6 +176,8 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
   // does (a restart from it; not the earlier frames of a series). And the processor directories
   // of a decomposed case (a parallel run reads theirs).
   const std::string written = this->TimeDirectory ? this->TimeDirectory : "constant";
+  double writtenTime = 0.0;
+  const bool toATime = dgmf::openfoam::TimeValue(written, writtenTime);
   std::error_code error;
   std::vector<std::string> shadowing, sameTime;
   bool decomposed = false;
@@ -184,22 +185,19 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
   {
     const std::string name = entry.path().filename().string();
     decomposed = decomposed || name.rfind("processor", 0) == 0;
-    char* end = nullptr;
-    const double time = std::strtod(name.c_str(), &end);
-    const bool isTime = !name.empty() && end && *end == '\0';
+    double time = 0.0;
+    const bool isTime = dgmf::openfoam::TimeValue(name, time);
     // A time of the series this write is a frame of is replaced by the series itself.
     const bool ofTheSeries = std::find(this->SeriesTimes.begin(), this->SeriesTimes.end(), name) !=
       this->SeriesTimes.end();
-    const bool hides = !ofTheSeries &&
-      (written == "constant" || (std::strtod(written.c_str(), nullptr) < time && name != written));
+    const bool hides = !ofTheSeries && (!toATime || (writtenTime < time && name != written));
     std::error_code missing;
     if (isTime && hides && fs::exists(entry.path() / "polyMesh", missing))
     {
       shadowing.push_back(name);
     }
     // The same time written another way ("0.0002" beside "2e-4"): OpenFOAM lists both.
-    if (isTime && written != "constant" && name != written &&
-      time == std::strtod(written.c_str(), nullptr))
+    if (isTime && toATime && name != written && time == writtenTime)
     {
       sameTime.push_back(name);
     }

@@ -289,6 +289,14 @@ TEST(CaseDirectory, NamesTimesAndPatches)
   {
     EXPECT_FALSE(of::IsTimeName(bad)) << bad;
   }
+  // The writer's check of other meshes reads the case's directory names with the same TimeValue.
+  double value = -1.0;
+  EXPECT_TRUE(of::TimeValue("2e-4", value));
+  EXPECT_EQ(value, 0.0002);
+  for (const char* notATime : { "constant", "processor0", "0x10", " 1", "1 ", "inf", "nan", "" })
+  {
+    EXPECT_FALSE(of::TimeValue(notATime, value)) << notATime;
+  }
   EXPECT_EQ(of::ReadPatchNames(dir), (std::vector<std::string>{ "wing", "symFront", "front" }));
   const std::vector<of::PatchEntry> patches = of::ReadPatches(dir);
   ASSERT_EQ(patches.size(), 3u);

@@ -18,18 +18,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/// The value of a time name, or false for other names.
-bool TimeValue(const std::string& name, double& value)
-{
-  if (name.empty())
-  {
-    return false;
-  }
-  const char* end = name.data() + name.size();
-  const std::from_chars_result read = std::from_chars(name.data(), end, value);
-  return read.ec == std::errc() && read.ptr == end && std::isfinite(value);
-}
-
 /// The times of the case's time directories, in no order.
 std::vector<double> TimesOf(const fs::path& caseDirectory)
 {
@@ -59,6 +47,17 @@ std::string Quoted(const fs::path& path)
   return "'" + path.string() + "'";
 }
 } // namespace
+
+bool TimeValue(const std::string& name, double& value)
+{
+  if (name.empty())
+  {
+    return false;
+  }
+  const char* end = name.data() + name.size();
+  const std::from_chars_result read = std::from_chars(name.data(), end, value);
+  return read.ec == std::errc() && read.ptr == end && std::isfinite(value);
+}
 
 bool IsCase(const fs::path& directory)
 {

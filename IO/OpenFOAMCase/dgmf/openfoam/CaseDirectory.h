@@ -29,6 +29,10 @@ std::filesystem::path CaseDirectoryOf(const std::filesystem::path& path);
 /// of their existing parts resolved); false when either cannot be resolved.
 bool IsInside(const std::filesystem::path& directory, const std::filesystem::path& path);
 
+/// The value of an OpenFOAM time name ("0", "0.05", "2e-4") in `value`; false for other names
+/// ("constant", "processor0", "inf", " 1").
+bool TimeValue(const std::string& name, double& value);
+
 /// True for "constant" and for an OpenFOAM time name (a number such as "0", "1", "0.05").
 bool IsTimeName(const std::string& time);
 
