@@ -23,7 +23,8 @@ std::string Listed(const std::vector<std::string>& names)
   return text.empty() ? "(none)" : text;
 }
 
-void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames)
+void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames,
+  const std::vector<std::string>& families)
 {
   const std::vector<std::string>&moving = options.Moving, &fixed = options.Static,
         &slip = options.Slip;
@@ -34,10 +35,17 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
   }
   const auto inFile = [&fileNames](const std::string& name)
   { return std::find(fileNames.begin(), fileNames.end(), name) != fileNames.end(); };
-  // Whether an entry reaches the file's name `name` as the filter takes it: the name itself, an
-  // OpenFOAM region name ("patch/wing") or a selector ending in it unless a block has that very
-  // name, or an alternative or wildcard of it ("flap|slat", "wing_*").
-  const auto reaches = [&inFile](const std::string& entry, const std::string& name)
+  // Whether `group` is the family of the file's boundary `name` (and no boundary's own name).
+  const auto inFamily = [&](const std::string& group, const std::string& name)
+  {
+    const auto at = static_cast<std::size_t>(
+      std::find(fileNames.begin(), fileNames.end(), name) - fileNames.begin());
+    return !group.empty() && at < families.size() && families[at] == group && !inFile(group);
+  };
+  // Whether an entry reaches the file's name `name` as the filter takes it: the name itself, its
+  // family, an OpenFOAM region name ("patch/wing") or a selector ending in it unless a block has
+  // that very name, or an alternative or wildcard of it ("flap|slat", "wing_*").
+  const auto reaches = [&inFile, &inFamily](const std::string& entry, const std::string& name)
   {
     if (entry == name)
     {
@@ -46,6 +54,10 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     if (inFile(entry))
     {
       return false;
+    }
+    if (inFamily(entry, name))
+    {
+      return true;
     }
     const std::size_t slash = entry.rfind('/');
     if (slash != std::string::npos && entry.compare(slash + 1, std::string::npos, name) == 0)
@@ -61,7 +73,8 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     for (const std::string& given : dgmf_vtk::Alternatives(entry))
     {
       const std::string alternative = dgmf_vtk::NameOf(given);
-      if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0)
+      if (alternative == name || fnmatch(alternative.c_str(), name.c_str(), 0) == 0 ||
+        inFamily(alternative, name))
       {
         return true;
       }

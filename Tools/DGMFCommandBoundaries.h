@@ -21,9 +21,12 @@ std::string Listed(const std::vector<std::string>& names);
 /**
  * Says which boundaries the run uses: the names given, and every other boundary of the file
  * (`fileNames`), which stays static, as the filter reads the names (wildcards, alternatives,
- * selectors, region prefixes). The file's names win over any detection of the mesh boundary.
+ * selectors, region prefixes, the families `families` of the boundaries in fileNames' order, ""
+ * for none). The file's names win over any detection of the mesh boundary. Nothing is printed
+ * when a name reaches no boundary (the filter's error says so).
  */
-void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames);
+void PrintBoundaries(const CommandOptions& options, const std::vector<std::string>& fileNames,
+  const std::vector<std::string>& families);
 
 /**
  * Gives `filter` the boundaries of `options` for the OpenFOAM case `input`: a patch group

@@ -207,6 +207,24 @@ std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks)
   return names;
 }
 
+std::vector<std::string> BoundaryFamiliesOf(vtkDataObject* blocks)
+{
+  std::vector<std::string> families;
+  for (const NamedLeaf& leaf : NamedLeavesOf(blocks))
+  {
+    if (leaf.Name != "internalMesh")
+    {
+      vtkFieldData* fields = leaf.Data ? leaf.Data->GetFieldData() : nullptr;
+      auto* family = fields
+        ? vtkStringArray::SafeDownCast(fields->GetAbstractArray(dgmf::names::BoundaryFamily))
+        : nullptr;
+      families.push_back(
+        family && family->GetNumberOfValues() > 0 ? family->GetValue(0) : std::string());
+    }
+  }
+  return families;
+}
+
 bool WriteSolverMeshFile(
   vtkAlgorithm* deformer, const std::string& source, const std::string& target)
 {

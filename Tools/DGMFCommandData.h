@@ -34,6 +34,10 @@ vtkSmartPointer<vtkAlgorithm> ReadSolverMeshFile(const std::string& path);
 /// the OpenFOAM reader's patches).
 std::vector<std::string> BoundaryNamesOf(vtkDataObject* blocks);
 
+/// The family (dgmf::names::BoundaryFamily: a CGNS family) of each block of BoundaryNamesOf, in
+/// its order, "" where a block has none.
+std::vector<std::string> BoundaryFamiliesOf(vtkDataObject* blocks);
+
 /**
  * `names` with each OpenFOAM patch group of the case at `path` (a name no patch has, in some
  * patches' `inGroups`: "wall", "motorBikeGroup") made the alternatives of its patches

@@ -477,7 +477,8 @@ int main(int argc, char* argv[])
     else if (options.ByName)
     {
       dgmf_cli::KeepWholeNames(options, names, filter);
-      dgmf_cli::PrintBoundaries(options, names);
+      dgmf_cli::PrintBoundaries(
+        options, names, dgmf_cli::BoundaryFamiliesOf(reader->GetOutputDataObject(0)));
     }
   }
   times.Read = vtkTimerLog::GetUniversalTime() - readStart;

@@ -76,6 +76,15 @@ int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& nam
   return -1;
 }
 
+std::string FamilyOf(vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf)
+{
+  auto* block = input ? input->GetDataSet(leaf.FlatIndex) : nullptr;
+  auto* family = block ? vtkStringArray::SafeDownCast(
+                           block->GetFieldData()->GetAbstractArray(dgmf::names::BoundaryFamily))
+                       : nullptr;
+  return family && family->GetNumberOfValues() > 0 ? family->GetValue(0) : std::string();
+}
+
 vtkIdType GhostVolumeCellsOfAPatch(
   vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf, int dimension)
 {

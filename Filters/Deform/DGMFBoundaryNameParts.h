@@ -33,6 +33,10 @@ std::string SelectorOf(const std::string& entry);
 /// (dgmf::names::NonBoundaryGroups, from a mesh file), or -1.
 int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& name);
 
+/// The file's group of boundaries the block of `leaf` is in (dgmf::names::BoundaryFamily: a CGNS
+/// family), or "".
+std::string FamilyOf(vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf);
+
 /// For a block of `leaf` whose own cells (not ghost) include cells of a lower dimension than
 /// `dimension` (a patch): its ghost cells (vtkGhostType) of dimension `dimension` or more; 0 for
 /// any other block.

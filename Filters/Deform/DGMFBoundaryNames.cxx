@@ -172,7 +172,9 @@ std::string ListBlockNames(const CompositeMesh& mesh)
   std::string names;
   for (const CompositeMesh::Leaf& leaf : mesh.GetLeaves())
   {
-    names += (names.empty() ? "" : ", ") + LabelOf(leaf);
+    const std::string family = FamilyOf(mesh.GetInput(), leaf);
+    names += (names.empty() ? "" : ", ") + LabelOf(leaf) +
+      (family.empty() || family == leaf.Name ? "" : " (family " + family + ")");
   }
   return names;
 }
@@ -296,12 +298,30 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     }
     return found;
   };
+  // The blocks of a file's group of boundaries (a CGNS family) of the name `name`, when no block
+  // has that name (a block of the very name wins, as over containers).
+  const auto familyLeaves = [&](const std::string& name)
+  {
+    std::vector<std::size_t> found;
+    for (std::size_t l = 0; l < leaves.size() && !name.empty() && name[0] != '/'; ++l)
+    {
+      if (FamilyOf(mesh.GetInput(), leaves[l]) == name)
+      {
+        found.push_back(l);
+      }
+    }
+    return found;
+  };
   // One entry, one role (one body): a block, or several ("wing_*", "flap|slat": a patch group,
-  // a body of several patches), each alternative naming at least one block.
+  // a family, a body of several patches), each alternative naming at least one block.
   const auto leavesOf = [&](const std::string& entry)
   {
     const std::size_t index = entryIndex++;
     std::vector<std::size_t> found = literalLeaves(entry);
+    if (found.empty() && entry.find_first_of("|*?") == std::string::npos)
+    {
+      found = familyLeaves(entry);
+    }
     if (found.empty() && entry.find_first_of("|*?") != std::string::npos)
     {
       for (const std::string& alternative : Alternatives(entry))
@@ -319,6 +339,9 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
         }
         more = more.empty() && pattern.find_first_of("*?") == std::string::npos
           ? literalLeaves(alternative)
+          : more;
+        more = more.empty() && pattern.find_first_of("*?") == std::string::npos
+          ? familyLeaves(pattern)
           : more;
         if (more.empty() && !piece)
         {

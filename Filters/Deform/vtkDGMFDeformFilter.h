@@ -464,8 +464,9 @@ public:
    * too) or a selector of the input's hierarchy ("/Root/boundary/wing", as ParaView's block tree
    * gives them); an entry may name several blocks as one boundary, "wing_*" (shell wildcards) or
    * "flap|slat" (alternatives, each naming a block: an OpenFOAM patch group is one of these for
-   * dgmf-deform). Each moving entry is one body (body 1, 2, ... in order: with several, each has
-   * its own damping field and motion, SetBodyMotion); static entries stay; the nodes of a slip
+   * dgmf-deform); a name no block has names the blocks of that family (field data BoundaryFamily,
+   * a CGNS FamilyName). Each moving entry is one body (body 1, 2, ... in order: with several, each
+   * has its own damping field and motion, SetBodyMotion); static entries stay; the nodes of a slip
    * entry (a plane: a symmetry plane) move only within it. The boundary blocks not named (blocks of
    * lower dimension than the mesh), and the nodes of the mesh's own boundary that no block holds
    * (a reader asked for the moving patch only), are static, but for the two planes of a

@@ -98,6 +98,13 @@ vtkSmartPointer<vtkMultiBlockDataSet> ToBlocks(const mf::NamedMesh& mesh)
     const auto block = static_cast<unsigned int>(b);
     boundaries->SetBlock(block, Grid(mesh, boundary.Faces, used, local));
     boundaries->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(), boundary.Name.c_str());
+    if (!boundary.Family.empty())
+    {
+      vtkNew<vtkStringArray> family;
+      family->SetName(dgmf::names::BoundaryFamily);
+      family->InsertNextValue(boundary.Family);
+      boundaries->GetBlock(block)->GetFieldData()->AddArray(family);
+    }
   }
 
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();

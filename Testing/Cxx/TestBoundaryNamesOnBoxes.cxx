@@ -13,6 +13,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -180,6 +181,64 @@ TEST(BoundaryNames, AnEntryOfSeveralBlocksIsOneBody)
   std::string error;
   EXPECT_TRUE(run({ "ymin|ymxa" }, &error).empty());
   EXPECT_NE(error.find("No block of the input matches 'ymxa'"), std::string::npos) << error;
+}
+
+TEST(BoundaryNames, AFamilyOfBlocksIsChosenByItsName)
+{
+  // A mesh file's family (a CGNS boundary condition's FamilyName, field data BoundaryFamily on
+  // its block): "ysides" names ymin and ymax as one body, the result of "ymin|ymax", also as an
+  // alternative. A block of the very name wins over a family of that name; unknown names list
+  // the families.
+  const int n = 4;
+  const auto run = [n](const std::vector<std::string>& moving, const std::string& familyOfZmax,
+                     std::string* error = nullptr)
+  {
+    vtkSmartPointer<vtkMultiBlockDataSet> blocks = dgmf_test::HexBoxBlocks(n, "");
+    auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+    for (unsigned int b = 0; b < boundary->GetNumberOfBlocks(); ++b)
+    {
+      const std::string name = boundary->GetMetaData(b)->Get(vtkCompositeDataSet::NAME());
+      const std::string family =
+        name == "ymin" || name == "ymax" ? "ysides" : (name == "zmax" ? familyOfZmax : "");
+      if (!family.empty())
+      {
+        vtkNew<vtkStringArray> array;
+        array->SetName("BoundaryFamily");
+        array->InsertNextValue(family);
+        boundary->GetBlock(b)->GetFieldData()->AddArray(array);
+      }
+    }
+    vtkNew<vtkDGMFDeformFilter> filter;
+    filter->SetInputData(blocks);
+    for (const std::string& entry : moving)
+    {
+      filter->AddMovingBoundary(entry.c_str());
+    }
+    filter->SetTranslation(0.0, 0.0, 0.3);
+    dgmf_test::ErrorMessages errors(filter);
+    filter->Update();
+    for (const std::string& message : errors.Messages)
+    {
+      *error += message;
+    }
+    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+    std::vector<double> xyz;
+    for (vtkIdType i = 0; volume && i < volume->GetNumberOfPoints(); ++i)
+    {
+      xyz.insert(xyz.end(), volume->GetPoint(i), volume->GetPoint(i) + 3);
+    }
+    return xyz;
+  };
+  std::string error;
+  const std::vector<double> family = run({ "ysides" }, "", &error);
+  ASSERT_EQ(family.size(), 3u * (n + 1) * (n + 1) * (n + 1)) << error;
+  EXPECT_EQ(family, run({ "ymin|ymax" }, "", &error));
+  EXPECT_EQ(run({ "ysides|zmin" }, "", &error), run({ "ymin|ymax|zmin" }, "", &error));
+  // zmax in a family named "ymin": "ymin" is still the block ymin.
+  EXPECT_EQ(run({ "ymin" }, "ymin", &error), run({ "ymin" }, "", &error));
+  EXPECT_TRUE(run({ "ysidez" }, "", &error).empty());
+  EXPECT_NE(error.find("ymin (family ysides)"), std::string::npos) << error;
+  EXPECT_NE(error.find("ymax (family ysides), zmin"), std::string::npos) << error;
 }
 
 TEST(BoundaryNames, MovingNodesOnStaticBoundariesAreSaid)

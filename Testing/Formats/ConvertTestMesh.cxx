@@ -1,13 +1,13 @@
-// dgmf-test-convert-mesh IN OUT: the test meshes of test_formats.py (gmsh files of tetrahedra or
-// triangles with named boundaries) written as Exodus II or CGNS by those formats' own libraries
-// (ParaView's vtkexodusII and vtkcgns), so that the round trips start from files the project's
-// readers did not write:
+// dgmf-test-convert-mesh IN OUT [BOUNDARY=FAMILY ...]: the test meshes of test_formats.py (gmsh
+// files of tetrahedra or triangles with named boundaries) written as Exodus II or CGNS by those
+// formats' own libraries (ParaView's vtkexodusII and vtkcgns), so that the round trips start from
+// files the project's readers did not write:
 // - Exodus (.exo): one element block; each named boundary a side set of that name, each face as
 //   (element, local side) in Exodus's side numbering.
 // - CGNS (.cgns): one unstructured zone; the volume cells one section, each named boundary a
 //   section of its faces and a boundary condition of type BCWall with a family of its name (the
-//   form ParaView 5.11's CGNS reader shows as a patch), points as an element range, GridLocation
-//   FaceCenter (EdgeCenter in 2D).
+//   form ParaView 5.11's CGNS reader shows as a patch; BOUNDARY=FAMILY puts it in FAMILY instead),
+//   points as an element range, GridLocation FaceCenter (EdgeCenter in 2D).
 // Test tool only: tetrahedra (3D) or triangles (2D).
 #include "dgmf/meshfile/MeshFileFormat.h"
 
@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -134,6 +135,7 @@ void WriteCGNS(const mf::NamedMesh& mesh, const std::string& path)
   }
 
   int fn = 0, base = 0, zone = 0, section = 0, coordinate = 0, boco = 0, family = 0;
+  std::set<std::string> families;
   Check(cg_open(path.c_str(), CG_MODE_WRITE, &fn) == CG_OK, path);
   const int d = mesh.Dimension;
   Check(cg_base_write(fn, "Base", d, d, &base) == CG_OK, "the base");
@@ -173,7 +175,11 @@ void WriteCGNS(const mf::NamedMesh& mesh, const std::string& path)
     last = write(
       boundary.Name.c_str(), d == 3 ? CGNS_ENUMV(TRI_3) : CGNS_ENUMV(BAR_2), boundary.Faces, first);
     const cgsize_t range[2] = { first, last };
-    Check(cg_family_write(fn, base, boundary.Name.c_str(), &family) == CG_OK, "a family");
+    const std::string familyName = boundary.Family.empty() ? boundary.Name : boundary.Family;
+    if (families.insert(familyName).second)
+    {
+      Check(cg_family_write(fn, base, familyName.c_str(), &family) == CG_OK, "a family");
+    }
     Check(cg_boco_write(fn, base, zone, boundary.Name.c_str(), CGNS_ENUMV(BCWall),
             CGNS_ENUMV(PointRange), 2, range, &boco) == CG_OK,
       boundary.Name);
@@ -181,7 +187,7 @@ void WriteCGNS(const mf::NamedMesh& mesh, const std::string& path)
             d == 3 ? CGNS_ENUMV(FaceCenter) : CGNS_ENUMV(EdgeCenter)) == CG_OK,
       "a grid location");
     Check(cg_goto(fn, base, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", boco, "end") == CG_OK &&
-        cg_famname_write(boundary.Name.c_str()) == CG_OK,
+        cg_famname_write(familyName.c_str()) == CG_OK,
       "a family name");
   }
   Check(cg_close(fn) == CG_OK, path);
@@ -190,14 +196,23 @@ void WriteCGNS(const mf::NamedMesh& mesh, const std::string& path)
 
 int main(int argc, char* argv[])
 {
-  if (argc != 3)
+  if (argc < 3)
   {
-    std::cerr << "usage: dgmf-test-convert-mesh IN.msh OUT.exo|OUT.cgns\n";
+    std::cerr << "usage: dgmf-test-convert-mesh IN.msh OUT.exo|OUT.cgns [BOUNDARY=FAMILY ...]\n";
     return 2;
   }
   try
   {
-    const mf::NamedMesh mesh = mf::ReadMeshFile(argv[1]);
+    mf::NamedMesh mesh = mf::ReadMeshFile(argv[1]);
+    for (int a = 3; a < argc; ++a)
+    {
+      const std::string given = argv[a];
+      const std::size_t equals = given.rfind('=');
+      const auto named = std::find_if(mesh.Boundaries.begin(), mesh.Boundaries.end(),
+        [&](const mf::NamedBoundary& b) { return b.Name == given.substr(0, equals); });
+      Check(equals != std::string::npos && named != mesh.Boundaries.end(), "no boundary " + given);
+      named->Family = given.substr(equals + 1);
+    }
     const std::string out = argv[2];
     if (mf::FormatOfFileName(out) == mf::MeshFileFormat::Exodus)
     {

@@ -51,6 +51,7 @@ struct CGNSContent
     CGNS_ENUMT(PointSetType_t) PointSet;
     CGNS_ENUMT(GridLocation_t) Location;
     Numbers Points;
+    std::string Family; // its FamilyName (a family of the base of that name), or none
   };
   std::vector<BoundaryCondition> BoundaryConditions;
   bool DataClassOnCoordinateX = false; // a child node under CoordinateX, kept by the writer
@@ -118,6 +119,11 @@ inline void WriteZone(int fn, const CGNSContent& c, const char* name)
     {
       Check(cg_boco_gridlocation_write(fn, 1, zone, index, bc.Location), bc.Name + "'s location");
     }
+    if (!bc.Family.empty())
+    {
+      Check(cg_goto(fn, 1, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", index, "end"), "(going to) a BC");
+      Check(cg_famname_write(bc.Family.c_str()), bc.Name + "'s family");
+    }
   }
 }
 
@@ -128,6 +134,17 @@ inline void WriteCGNS(const std::filesystem::path& path, const CGNSContent& c)
   Check(cg_open(path.c_str(), CG_MODE_WRITE, &fn), "the file");
   int base = 0;
   Check(cg_base_write(fn, "Base", c.CellDimension, c.PhysicalDimension, &base), "the base");
+  std::vector<std::string> families;
+  for (const auto& bc : c.BoundaryConditions)
+  {
+    if (!bc.Family.empty() && bc.Family[0] != '/' &&
+      std::find(families.begin(), families.end(), bc.Family) == families.end())
+    {
+      int family = 0;
+      Check(cg_family_write(fn, 1, bc.Family.c_str(), &family), "the family " + bc.Family);
+      families.push_back(bc.Family);
+    }
+  }
   WriteZone(fn, c, "Zone");
   if (c.UnstructuredSecondZone)
   {

@@ -64,6 +64,25 @@ TEST(CGNSFile, ReadsNodesInFileOrderTetrahedraAndBoundaryConditionsAsNamedBounda
   EXPECT_EQ(back->Faces.Connectivity, (std::vector<std::int64_t>{ 2, 3, 6, 7 }));
 }
 
+TEST(CGNSFile, ReadsTheFamiliesOfTheBoundaryConditions)
+{
+  // A boundary condition's FamilyName is its family, by name or by a path to it (CGNS 4): the
+  // name the filter chooses the family's boundaries by. Without one, none.
+  const fs::path file = WorkDirectory() / "families.cgns";
+  CGNSContent c = SplitCube();
+  c.BoundaryConditions[0].Family = "walls";
+  c.BoundaryConditions[1].Family = "/Base/walls";
+  c.BoundaryConditions[2].Family = "inlet";
+  WriteCGNS(file, c);
+  const mf::NamedMesh mesh = mf::ReadCGNS(file.string());
+  ASSERT_EQ(mesh.Boundaries.size(), 4u);
+  EXPECT_EQ(mesh.Boundaries[0].Family, "walls");
+  EXPECT_EQ(mesh.Boundaries[1].Family, "walls");
+  EXPECT_EQ(mesh.Boundaries[2].Family, "inlet");
+  EXPECT_EQ(mesh.Boundaries[3].Family, "");
+  EXPECT_EQ(mesh.Boundaries[0].Name, "floor");
+}
+
 TEST(CGNSFile, ReadsBoundaryConditionsGivenAsElementRangeOrElementList)
 {
   // The CGNS 2 forms, which the library turns into PointRange/PointList at FaceCenter.

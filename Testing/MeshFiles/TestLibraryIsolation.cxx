@@ -66,6 +66,7 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
   {
     mf::NamedBoundary boundary;
     boundary.Name = name;
+    boundary.Family = std::string(name) == "wall" ? "body" : "";
     const std::int64_t face[3] = { 0, 2, 1 };
     boundary.Faces.Add(mf::Triangle, face, 3);
     mesh.Boundaries.push_back(boundary);
@@ -81,6 +82,7 @@ TEST(LibraryIsolation, AMeshGoesThroughTheBytesUnchanged)
   for (std::size_t b = 0; b < 3; ++b)
   {
     EXPECT_EQ(back.Boundaries[b].Name, mesh.Boundaries[b].Name);
+    EXPECT_EQ(back.Boundaries[b].Family, mesh.Boundaries[b].Family);
     EXPECT_EQ(back.Boundaries[b].Faces.Connectivity, mesh.Boundaries[b].Faces.Connectivity);
   }
   // The length announced is the length written, and every array starts 8-byte aligned (the

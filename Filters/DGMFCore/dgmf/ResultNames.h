@@ -64,6 +64,9 @@ constexpr const char* UnrepairedCellCount = "UnrepairedCellCount";
 // group) and their dimensions, so that such a name given as a boundary is said to be one.
 constexpr const char* NonBoundaryGroups = "NonBoundaryGroups";
 constexpr const char* NonBoundaryGroupDimensions = "NonBoundaryGroupDimensions";
+// ... and on a boundary block, the file's group of boundaries it is in (a CGNS family): the
+// group's name chooses all its blocks.
+constexpr const char* BoundaryFamily = "BoundaryFamily";
 } // namespace names
 } // namespace dgmf
 

@@ -41,6 +41,19 @@ NamedBoundary ReadBoundaryCondition(const CGNSHandle& file, const ZoneLayout& la
   NamedBoundary boundary;
   boundary.Name = name;
   const std::string where = "boundary condition '" + boundary.Name + "' of " + layout.Zone;
+  // Its family (FamilyName_t), if it has one: a name, or a path to the family in CGNS 4
+  // ("/Base/wing"), whose last part is the family's name.
+  // (The library's room for one: CG_MAX_GOTO_DEPTH names of 32 characters and their slashes.)
+  char family[4096] = { 0 };
+  file.Check(cg_goto(file.Id, 1, "Zone_t", 1, "ZoneBC_t", 1, "BC_t", bc, "end"), where);
+  const int familyRead = cg_famname_read(family);
+  if (familyRead != CG_NODE_NOT_FOUND)
+  {
+    file.Check(familyRead, "the family name of " + where);
+    family[sizeof(family) - 1] = '\0';
+    const std::string path = family;
+    boundary.Family = path.substr(path.rfind('/') + 1);
+  }
   CGNS_ENUMT(GridLocation_t) location = CGNS_ENUMV(GridLocationNull);
   file.Check(cg_boco_gridlocation_read(file.Id, 1, 1, bc, &location), "the location of " + where);
 

@@ -101,7 +101,8 @@ std::size_t MeshBytes(const NamedMesh& mesh)
     BytesOf<std::int64_t>(mesh.NodeIds.size()) + BytesOfCells(mesh.Volume) + number;
   for (const NamedBoundary& boundary : mesh.Boundaries)
   {
-    bytes += BytesOf<char>(boundary.Name.size()) + BytesOfCells(boundary.Faces);
+    bytes += BytesOf<char>(boundary.Name.size()) + BytesOf<char>(boundary.Family.size()) +
+      BytesOfCells(boundary.Faces);
   }
   return bytes;
 }
@@ -118,6 +119,7 @@ void MeshToBytes(const NamedMesh& mesh, char* out)
   for (const NamedBoundary& boundary : mesh.Boundaries)
   {
     Put(out, boundary.Name.data(), boundary.Name.size());
+    Put(out, boundary.Family.data(), boundary.Family.size());
     PutCells(out, boundary.Faces);
   }
 }
@@ -152,9 +154,9 @@ NamedMesh MeshFromBytes(const char* in, std::size_t size)
   GetCells(in, size, at, mesh.Volume);
   Get(in, size, at, number);
   const std::size_t boundaries = number.empty() ? 0 : static_cast<std::size_t>(number[0]);
-  if (boundaries > size / (4 * sizeof(std::uint64_t)))
+  if (boundaries > size / (5 * sizeof(std::uint64_t)))
   {
-    throw FileError("short answer from a reader's process"); // (each takes at least 4 counts)
+    throw FileError("short answer from a reader's process"); // (each takes at least 5 counts)
   }
   mesh.Boundaries.resize(boundaries);
   for (NamedBoundary& boundary : mesh.Boundaries)
@@ -162,6 +164,8 @@ NamedMesh MeshFromBytes(const char* in, std::size_t size)
     std::vector<char> name;
     Get(in, size, at, name);
     boundary.Name.assign(name.begin(), name.end());
+    Get(in, size, at, name);
+    boundary.Family.assign(name.begin(), name.end());
     GetCells(in, size, at, boundary.Faces);
   }
   return mesh;

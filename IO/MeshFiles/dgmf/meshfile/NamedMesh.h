@@ -65,6 +65,9 @@ struct NamedBoundary
 {
   std::string Name;
   Cells Faces;
+  /// The group of boundaries the file puts it in (a CGNS boundary condition's FamilyName), or
+  /// empty: the group's name chooses all its boundaries (docs: formats.md, "CGNS").
+  std::string Family;
 };
 
 /// A mesh read from a file.
