@@ -4,6 +4,7 @@
 #include "DGMFCommandMessages.h"
 
 #include "DGMFBoundaryNameParts.h"
+#include "dgmf/openfoam/CaseDirectory.h"
 
 #include "vtkDGMFDeformFilter.h"
 
@@ -101,6 +102,40 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
   std::cout << "dgmf-deform: boundaries from the file's names: moving " << Listed(moving)
             << "; slip " << Listed(slip) << "; static " << Listed(fixed) << " and the others ("
             << Listed(others) << ")" << std::endl;
+}
+
+std::string CyclicSlipProblem(const std::string& input, const CommandOptions& options)
+{
+  std::vector<dgmf::openfoam::PatchEntry> patches;
+  try
+  {
+    patches = dgmf::openfoam::ReadPatches(dgmf::openfoam::CaseDirectoryOf(input));
+  }
+  catch (const std::exception&)
+  {
+    return std::string(); // the reader says what is wrong with the case
+  }
+  const std::vector<std::string> expanded = ExpandPatchGroups(input, options.Slip);
+  for (std::size_t k = 0; k < expanded.size(); ++k)
+  {
+    for (const std::string& alternative : dgmf_vtk::Alternatives(expanded[k]))
+    {
+      for (const dgmf::openfoam::PatchEntry& patch : patches)
+      {
+        if (patch.Type.rfind("cyclic", 0) == 0 &&
+          fnmatch(dgmf_vtk::NameOf(alternative).c_str(), patch.Name.c_str(), 0) == 0)
+        {
+          return "the patch '" + patch.Name + "' (of --slip " + options.Slip[k] + ") is " +
+            patch.Type +
+            ": a slip boundary's nodes slide within its plane apart from any other plane's, so "
+            "the two planes of the cyclic pair would no longer match (checkMesh: \"face area "
+            "does not match neighbour\"). Leave cyclic patches static (they are when not named; a "
+            "body crossing the pair then shears their faces: openfoam.md).";
+        }
+      }
+    }
+  }
+  return std::string();
 }
 
 void GiveOpenFOAMBoundaries(

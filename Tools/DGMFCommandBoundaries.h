@@ -34,6 +34,14 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
  * patches are not one plane, as "wedge", is a plane per patch: FitSlipPlanes), and messages name
  * a group of several patches as the user did.
  */
+/**
+ * Why the slip boundaries of `options` cannot be used on the OpenFOAM case `input`, or "": a
+ * cyclic patch (cyclic, cyclicAMI, cyclicACMI, cyclicSlip) named as slip, alone or through a
+ * group. A slip plane's nodes slide within it apart from any other plane's, so the two planes of
+ * a cyclic pair would no longer match (checkMesh: "face area does not match neighbour").
+ */
+std::string CyclicSlipProblem(const std::string& input, const CommandOptions& options);
+
 void GiveOpenFOAMBoundaries(
   vtkDGMFDeformFilter* filter, const std::string& input, const CommandOptions& options);
 } // namespace dgmf_cli

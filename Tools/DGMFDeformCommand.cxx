@@ -471,6 +471,12 @@ int main(int argc, char* argv[])
     if (kind == InputKind::OpenFOAMCase)
     {
       // A patch group ("wall", "motorBikeGroup") is one boundary of its patches.
+      const std::string cyclic = dgmf_cli::CyclicSlipProblem(input, options);
+      if (!cyclic.empty())
+      {
+        std::cerr << "dgmf-deform: error: " << cyclic << "\n";
+        return ExitUsage;
+      }
       dgmf_cli::GiveOpenFOAMBoundaries(filter, input, options);
       filter->ComputeNonOrthogonalityOn(); // what checkMesh will say
     }

@@ -106,7 +106,8 @@ std::string MovingNodesOnStaticBlocks(const std::vector<CompositeMesh::Leaf>& le
     (blocks > 5 ? " and " + std::to_string(blocks - 5) + " more" : std::string()) +
     ". They move with the body, so the static boundary's faces around them stretch or shear "
     "(a wedge, symmetry or cyclic patch, a ground plane: the solver's mesh check may fail). Name "
-    "a plane the body slides along as a slip boundary; check the result otherwise.";
+    "a plane the body slides along as a slip boundary (a symmetry or wedge plane; not the two "
+    "planes of a cyclic pair, which would then no longer match); check the result otherwise.";
 }
 
 /**

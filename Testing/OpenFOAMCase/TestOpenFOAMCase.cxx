@@ -303,6 +303,9 @@ TEST(CaseDirectory, NamesTimesAndPatches)
   EXPECT_EQ(patches[0].Groups, (std::vector<std::string>{ "wall", "body" }));
   EXPECT_EQ(patches[1].Groups, (std::vector<std::string>{ "symmetryPlane" }));
   EXPECT_TRUE(patches[2].Groups.empty());
+  EXPECT_EQ(patches[0].Type, "wall");
+  EXPECT_EQ(patches[1].Type, "symmetryPlane");
+  EXPECT_EQ(patches[2].Type, "empty");
 }
 
 TEST(CaseDirectory, UnmovedPointsKeepTheirBitsAndTheReadersRoundingDoesNotReachTheCase)

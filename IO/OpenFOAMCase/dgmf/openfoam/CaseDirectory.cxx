@@ -131,6 +131,16 @@ std::vector<PatchEntry> ReadPatches(const fs::path& caseDirectory)
         patch.Groups.push_back(word);
       }
     }
+    // type cyclic;
+    std::istringstream entries(text.substr(nameEnd, close - nameEnd));
+    for (std::string word; entries >> word;)
+    {
+      if (word == "type" && entries >> patch.Type)
+      {
+        patch.Type = patch.Type.substr(0, patch.Type.find(';'));
+        break;
+      }
+    }
     patches.push_back(std::move(patch));
     at = close + 1;
   }

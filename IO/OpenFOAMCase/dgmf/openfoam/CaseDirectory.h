@@ -53,11 +53,12 @@ bool SolverStartTime(const std::filesystem::path& caseDirectory, const std::vect
 std::filesystem::path PolyMeshDirectory(
   const std::filesystem::path& caseDirectory, const std::string& time);
 
-/// A patch of a case's boundary file: its name and the groups it is in (`inGroups`).
+/// A patch of a case's boundary file: its name, its type and the groups it is in (`inGroups`).
 struct PatchEntry
 {
   std::string Name;
   std::vector<std::string> Groups;
+  std::string Type; ///< "wall", "cyclic", "empty", ...; "" when the entry has none
 };
 
 /// The patches in `caseDirectory`/constant/polyMesh/boundary, in order.
