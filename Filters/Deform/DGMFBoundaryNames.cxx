@@ -403,6 +403,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   std::vector<std::uint8_t> rank;
   dgmf::AssignOnHugePages(rank, n, std::uint8_t(None));
   std::vector<std::int32_t> body(selection.Moving.size() > 1 ? n : 0, 0);
+  std::size_t movingNodes = 0;
   const auto mark = [&](std::size_t l, int role, std::int32_t bodyId)
   {
     for (vtkIdType point = 0; point < leaves[l].NumberOfPoints; ++point)
@@ -411,6 +412,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       if (role > rank[i] ||
         (role == MovingRank && rank[i] == MovingRank && !body.empty() && body[i] == 0))
       {
+        movingNodes += role == MovingRank && rank[i] != MovingRank ? 1 : 0;
         rank[i] = static_cast<std::uint8_t>(role);
         if (!body.empty())
         {
@@ -439,6 +441,22 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
       choose(l, selection.Moving[k], "moving");
       mark(l, MovingRank, static_cast<std::int32_t>(k + 1));
     }
+  }
+  // Moving boundaries that hold every node (the empty patch of a 2D mesh, "frontAndBack": both
+  // planes of a one-cell-thick mesh) would only turn the mesh rigidly, as its volume block would.
+  // (A piece of a distributed mesh may lie on the body alone.)
+  if (!piece && n > 0 && movingNodes == n)
+  {
+    std::string names;
+    for (const std::string& entry : selection.Moving)
+    {
+      names += (names.empty() ? "'" : ", '") + entry + "'";
+    }
+    throw std::invalid_argument("The moving boundaries (" + names +
+      ") hold every node of the mesh (the two planes of a one-cell-thick mesh, as an empty patch "
+      "frontAndBack, hold them all): the mesh would only move rigidly. Name the patches of the "
+      "body that moves. The input's blocks are: " +
+      ListBlockNames(mesh) + ".");
   }
   std::vector<std::size_t> staticLeaves; // for the warning of moving nodes on them
   std::vector<bool> staticNamed;

@@ -241,6 +241,25 @@ TEST(BoundaryNames, AFamilyOfBlocksIsChosenByItsName)
   EXPECT_NE(error.find("ymax (family ysides), zmin"), std::string::npos) << error;
 }
 
+TEST(BoundaryNames, MovingBoundariesHoldingEveryNodeAreRefused)
+{
+  // One cell between xmin and xmax: the two sides hold every node, as the empty patch
+  // frontAndBack of a 2D mesh does; moving them turned the whole mesh rigidly until 2026-11-30.
+  // One side alone is a deformation.
+  for (const auto& [moving, refused] :
+    { std::pair{ "xmin|xmax", true }, std::pair{ "xmin", false } })
+  {
+    vtkNew<vtkDGMFDeformFilter> filter;
+    dgmf_test::ErrorMessages errors(filter);
+    filter->SetInputData(dgmf_test::HexBoxBlocks(1, ""));
+    filter->AddMovingBoundary(moving);
+    filter->SetTranslation(0.0, 0.0, 0.1);
+    filter->Update();
+    EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)) == nullptr, refused) << moving;
+    EXPECT_EQ(errors.Contains("hold every node of the mesh"), refused) << moving;
+  }
+}
+
 TEST(BoundaryNames, MovingNodesOnStaticBoundariesAreSaid)
 {
   // The box's side xmin moving: its edges lie on the four sides around it, static (named so, or
