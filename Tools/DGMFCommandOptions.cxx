@@ -229,12 +229,13 @@ std::string Usage()
     "  --mode 1|2              DGMF1 or DGMF2 (default 2)\n"
     "  --damping 1..7          damping function u1..u7 (default 1)\n"
     "  --r0s VALUE             static-boundary r0, >= 1 (default 1)\n"
-    "  --sub-steps N           large motions: N sub-steps, 0 = automatic (default 1)\n"
+    "  --sub-steps N           large motions: N sub-steps (at most 1000), 0 = automatic "
+    "(default 1)\n"
     "  --repair T              quality guard: repair cells with SizeSkew below T (default 0: "
     "off)\n"
-    "  --repair-layers N       layers around bad cells whose interior nodes may move "
-    "(default 2)\n"
-    "  --repair-passes N       most repair passes per step (default 20)\n"
+    "  --repair-layers N       layers around bad cells whose interior nodes may move, 0 to "
+    "100 (default 2)\n"
+    "  --repair-passes N       most repair passes per step, 0 to 10000 (default 20)\n"
     "  --threads N             number of threads, 0 = all (default 0)\n"
     "  --no-quality            skip the SizeSkew quality metric\n"
     "  --fail-on-inverted      exit with code 3, writing nothing, if a cell is inverted\n"
@@ -404,19 +405,25 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       filter->SetStaticBoundaryR0(v[0]);
     }
-    else if (option == "--sub-steps" && ReadInteger(argc, argv, i, 0, 100000, k))
+    else if (option == "--sub-steps" &&
+      ReadInteger(argc, argv, i, filter->GetSubStepsMinValue(), filter->GetSubStepsMaxValue(), k))
     {
+      // The filter's own range: a larger value was clamped without a word until 2026-11-30.
       filter->SetSubSteps(k);
     }
     else if (option == "--repair" && ReadDoubles(argc, argv, i, 1, v) && v[0] >= 0 && v[0] <= 1)
     {
       filter->SetRepairThreshold(v[0]);
     }
-    else if (option == "--repair-layers" && ReadInteger(argc, argv, i, 0, 1000, k))
+    else if (option == "--repair-layers" &&
+      ReadInteger(
+        argc, argv, i, filter->GetRepairLayersMinValue(), filter->GetRepairLayersMaxValue(), k))
     {
       filter->SetRepairLayers(k);
     }
-    else if (option == "--repair-passes" && ReadInteger(argc, argv, i, 0, 100000, k))
+    else if (option == "--repair-passes" &&
+      ReadInteger(
+        argc, argv, i, filter->GetRepairPassesMinValue(), filter->GetRepairPassesMaxValue(), k))
     {
       filter->SetRepairPasses(k);
     }
@@ -472,7 +479,9 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
     else
     {
-      std::cerr << "dgmf-deform: bad option or value: " << option << "\n" << Usage();
+      // The reason alone: the whole usage after it buried it (until 2026-11-30).
+      std::cerr << "dgmf-deform: bad option or value: " << option
+                << " (dgmf-deform --help lists the options and their values)\n";
       return ExitUsage;
     }
   }
