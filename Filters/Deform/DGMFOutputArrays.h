@@ -60,8 +60,9 @@ void AddMethodResults(vtkUnstructuredGrid* output, vtkDoubleArray* r, vtkDoubleA
 
 /**
  * The size-skew quality of `mesh`'s cells between `originalPoints` and `deformedPoints` (3 doubles
- * per point): the cell arrays SizeSkew and Inverted into `cellData`, and the summary
- * (SizeSkewMean, SizeSkewMinimum, InvertedCellCount, SizeSkewEvaluatedCells) into `fieldData`.
+ * per point): the cell arrays SizeSkew, Inverted and InputInvalid into `cellData`, and the summary
+ * (SizeSkewMean, SizeSkewMinimum, InvertedCellCount, InputInvalidCellCount,
+ * SizeSkewEvaluatedCells) into `fieldData`.
  * Returns the summary. The hexahedra's reference sizes are read from, or left in, `references`
  * (ComputeCellQuality). With `kept`, the arrays are the last execution's when nobody else holds
  * them (QualityArrays).

@@ -417,7 +417,7 @@ public:
 
   ///@{
   /**
-   * Compute the SizeSkew and Inverted cell arrays and the quality summary. Default: on.
+   * Compute the cell arrays SizeSkew, Inverted, InputInvalid and the quality summary. Default: on.
    */
   vtkSetMacro(ComputeQuality, bool);
   vtkGetMacro(ComputeQuality, bool);
