@@ -1,5 +1,7 @@
 #include "DGMFCompositeMeshCache.h"
 
+#include "DGMFContentKey.h"
+
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -34,8 +36,8 @@ const CompositeMesh& CompositeMeshCache::Get(
   vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName)
 {
   std::vector<LeafKey> leaves = KeyOf(input);
-  this->Reused = this->Mesh && this->Input == input && this->Leaves == leaves &&
-    this->Displacement == displacementName && this->Marker == markerName;
+  this->Reused = !DistrustedObjects::Active() && this->Mesh && this->Input == input &&
+    this->Leaves == leaves && this->Displacement == displacementName && this->Marker == markerName;
   if (!this->Reused)
   {
     this->Mesh.reset(); // its memory is free for the new merge

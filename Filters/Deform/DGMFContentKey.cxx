@@ -9,6 +9,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <vector>
 
@@ -121,7 +122,39 @@ void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& ha
 
 bool ContentKey::MatchesObject(vtkObject* object) const
 {
-  return this->Valid && this->Object == object && this->MTime == object->GetMTime();
+  return this->Valid && this->Object == object && this->MTime == object->GetMTime() &&
+    !DistrustedObjects::Active();
+}
+
+namespace
+{
+std::atomic<int>& DistrustCount()
+{
+  static std::atomic<int> count{ 0 };
+  return count;
+}
+} // namespace
+
+DistrustedObjects::DistrustedObjects(bool active)
+  : Counted(active)
+{
+  if (this->Counted)
+  {
+    ++DistrustCount();
+  }
+}
+
+DistrustedObjects::~DistrustedObjects()
+{
+  if (this->Counted)
+  {
+    --DistrustCount();
+  }
+}
+
+bool DistrustedObjects::Active()
+{
+  return DistrustCount().load() > 0;
 }
 
 void ContentKey::SetHash(std::uint64_t hash)

@@ -39,6 +39,28 @@ std::uint64_t HashArray(vtkDataArray* array, std::uint64_t seed = 0, bool onThre
 std::uint64_t HashCells(vtkUnstructuredGrid* mesh, bool onThreads = true);
 
 /**
+ * While one with `active` true lives (on any thread of the process), no ContentKey trusts an
+ * object's identity and MTime alone (MatchesObject is false, Matches compares the content's hash)
+ * and no composite merge is reused. The filter opens one for an execution whose input was marked
+ * Modified() since its last execution: grid->Modified() after the grid's points or cells were
+ * changed in place leaves their arrays' own MTimes as they were (the graph built for the old
+ * points was reused until 2026-11-30). Costs hashing or work done again, never a wrong match.
+ */
+class DistrustedObjects
+{
+public:
+  explicit DistrustedObjects(bool active);
+  ~DistrustedObjects();
+  DistrustedObjects(const DistrustedObjects&) = delete;
+  DistrustedObjects& operator=(const DistrustedObjects&) = delete;
+  /// True while any active instance lives.
+  static bool Active();
+
+private:
+  bool Counted;
+};
+
+/**
  * The content of an input object between executions: the object and its MTime, and, when either
  * changed (a reader that reads the same mesh again at each time step, a composite input merged
  * anew), a hash of the content. A reader's new object with the same content then matches.

@@ -1,6 +1,7 @@
 #include "vtkDGMFDeformFilter.h"
 
 #include "DGMFCompositeMesh.h"
+#include "DGMFContentKey.h"
 #include "DGMFCoreDeformation.h"
 #include "DGMFDistributed.h"
 #include "DGMFFilterParameters.h"
@@ -44,6 +45,9 @@ struct vtkDGMFDeformFilter::Internals
   dgmf_vtk::BodyMotionTable BodyMotions;  ///< SetBodyMotion
   dgmf_vtk::BoundarySelection Boundaries; ///< AddMovingBoundary, AddStaticBoundary, AddSlipBoundary
   dgmf_vtk::MotionInTime Motion; ///< this execution's time, and the trajectory table's motions
+  /// The last execution's input and its own MTime after it (DistrustedObjects).
+  const void* LastInput = nullptr;
+  vtkMTimeType LastInputMTime = 0;
 };
 
 vtkDGMFDeformFilter::vtkDGMFDeformFilter()
@@ -302,6 +306,10 @@ int vtkDGMFDeformFilter::RequestData(
     output = mergedOutput;
   }
   int status = 0;
+  // The input marked Modified() since the last execution (its points or cells changed in place,
+  // then grid->Modified()): compared by content, not by its arrays' identity and MTime.
+  const dgmf_vtk::DistrustedObjects distrust(inputObject == internal.LastInput &&
+    inputObject->vtkObject::GetMTime() != internal.LastInputMTime);
   try
   {
     dgmf_vtk::RunWithThreads(this->NumberOfThreads,
@@ -382,6 +390,9 @@ int vtkDGMFDeformFilter::RequestData(
   {
     outputObject->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), internal.Motion.Time);
   }
+  // After the execution: what it did to the input (a cell array built on demand) is no change.
+  internal.LastInput = inputObject;
+  internal.LastInputMTime = inputObject->vtkObject::GetMTime();
   return status;
 }
 

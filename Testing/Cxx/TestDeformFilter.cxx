@@ -328,6 +328,28 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
   filter->SetRotationAngles(0, 0, 10);
   filter->Update();
   EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+
+  // A point moved in place and the grid marked Modified() (not its points): the graph is built
+  // again, the result a fresh filter's (until 2026-11-30 the graph of the old points was reused,
+  // results off by 1e-2: the arrays' own MTimes are unchanged). Marked but unchanged: reused.
+  moved->GetPoint(interior, p);
+  p[0] += 2e-2;
+  moved->GetPoints()->GetData()->SetTuple(interior, p); // no MTime change of the points
+  moved->Modified();
+  filter->Update();
+  EXPECT_FALSE(filter->GetLastExecutionReusedGraph());
+  vtkNew<vtkDGMFDeformFilter> afresh;
+  vtkNew<vtkUnstructuredGrid> copy;
+  copy->DeepCopy(moved);
+  afresh->SetInputData(copy);
+  afresh->SetBoundaryMarkerArrayName("BoundaryMarker");
+  afresh->SetRotationAngles(0, 0, 10);
+  afresh->SetDampingFunction(vtkDGMFDeformFilter::U2);
+  afresh->Update();
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == Fingerprint(afresh->GetOutput()));
+  moved->Modified();
+  filter->Update();
+  EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
 }
 
 TEST(DeformFilter, RepeatedDeformationReusesOutputPointsOnlyWhenNobodyElseHoldsThem)
