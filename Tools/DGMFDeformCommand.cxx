@@ -257,16 +257,21 @@ int RunSeries(
       newCase ? dgmf::openfoam::CaseDirectoryOf(options.Input) : outputCase, steps, newCase,
       solverStart))
   {
-    // Every frame before it: no run of the case reads any (a run reads the frames from its start
-    // on; a series before a later start is the mistake worth a word).
+    // Every frame before it: a run of the case meshes its start with the newest polyMesh at or
+    // before it, the last frame's (which the fields of that time were not computed on), and
+    // never reaches the others (a series before a later start is the mistake worth a word).
     if (std::all_of(
           steps.begin(), steps.end(), [solverStart](double t) { return t < solverStart; }))
     {
       std::cerr << "dgmf-deform: warning: all " << steps.size()
                 << " frames come before the time a solver run of the case starts from, "
                 << dgmf::NumberText(solverStart)
-                << " (its controlDict's startFrom): such a run reads none of them (give --times, "
-                   "or change startFrom)\n";
+                << " (its controlDict's startFrom): such a run takes the newest mesh at or before "
+                   "its start, the last frame's (time "
+                << dgmf::NumberText(steps.back())
+                << ", unless the start time has a polyMesh of its own), with its start time's "
+                   "fields, and never reaches the other frames (give --times up to "
+                << dgmf::NumberText(solverStart) << ", or change startFrom)\n";
     }
   }
   const std::string firstFrame = files ? dgmf_cli::FramePath(options.Output, 0, steps.size()) : "";

@@ -2,6 +2,7 @@
 
 #include "DGMFWriterInputs.h"
 
+#include "dgmf/NumberText.h"
 #include "dgmf/openfoam/CaseDirectory.h"
 #include "dgmf/openfoam/PointsFile.h"
 
@@ -215,6 +216,21 @@ void vtkDGMFOpenFOAMWriter::WarnAboutOtherMeshes(const std::filesystem::path& ca
                     << " has a mesh of its own: a solver started at time " << name
                     << " or later reads it, not the deformed points written to " << written
                     << "/polyMesh (remove it, or write to that time).");
+  }
+  // One time written after the time a solver run of the case starts from: the run meshes its
+  // start with an older mesh (constant's, as a rule) and a solver whose mesh does not move never
+  // reads these points (silent until 2026-11-30). A series says this of all its frames at once.
+  double start = 0.0;
+  if (toATime && this->SeriesTimes.empty() &&
+    dgmf::openfoam::SolverStartTime(caseDirectory, { writtenTime }, false, start) &&
+    start < writtenTime)
+  {
+    vtkWarningMacro(<< "A solver run of " << caseDirectory.string() << " starts from time "
+                    << dgmf::NumberText(start)
+                    << " (its controlDict's startFrom) on the newest mesh at or before it, not on "
+                       "the deformed points written to "
+                    << written << "/polyMesh: write to --time " << dgmf::NumberText(start)
+                    << " (TimeDirectory), or change startFrom.");
   }
   if (decomposed && (this->SeriesTimes.empty() || written == this->SeriesTimes.back()))
   {
