@@ -2,6 +2,7 @@
 
 #include "DGMFArrayAllocation.h"
 #include "DGMFFaceCells.h"
+#include "DGMFFacetCounting.h"
 #include "DGMFMeshConversion.h"
 #include "DGMFSMPTools.h"
 
@@ -35,18 +36,6 @@ namespace dgmf_vtk
 {
 namespace
 {
-void AddFacet(BoundaryFacets& facets, const vtkIdType* ids, vtkIdType count)
-{
-  facets.Ids.insert(facets.Ids.end(), ids, ids + count);
-  facets.Offsets.push_back(static_cast<vtkIdType>(facets.Ids.size()));
-}
-
-/// Whether `cell` is a ghost cell (vtkGhostType DUPLICATECELL) of a mesh with `ghosts` (or none).
-bool IsGhostCell(vtkUnsignedCharArray* ghosts, vtkIdType cell)
-{
-  return ghosts && (ghosts->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0;
-}
-
 /// The boundary faces from vtkGeometryFilter: any cell type, several times slower than matching.
 void FindBoundaryFacesByGeometryFilter(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
@@ -345,58 +334,6 @@ BoundaryFacets SortedFacets(const BoundaryFacets& facets)
   return sorted;
 }
 
-struct PairHash
-{
-  std::size_t operator()(const std::pair<vtkIdType, vtkIdType>& p) const
-  {
-    return std::hash<vtkIdType>()(p.first) * 1000003u ^ std::hash<vtkIdType>()(p.second);
-  }
-};
-
-void FindBoundaryEdges(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
-{
-  // Count how many 2D cells use each edge (keyed by its end nodes); edges used once are on the
-  // boundary.
-  using EdgeKey = std::pair<vtkIdType, vtkIdType>;
-  std::unordered_map<EdgeKey, int, PairHash> uses;
-  uses.reserve(static_cast<std::size_t>(2 * mesh->GetNumberOfCells()));
-  vtkNew<vtkGenericCell> cell;
-  std::vector<vtkIdType> ids;
-  // Ghost cells count as cells (their edges with real cells are inside), but their own boundary
-  // edges (the outer side of the ghost layer) are not the mesh's boundary.
-  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
-  for (int pass = 0; pass < 2; ++pass)
-  {
-    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-    {
-      mesh->GetCell(c, cell);
-      if (cell->GetCellDimension() != 2)
-      {
-        continue;
-      }
-      if (pass == 1 && IsGhostCell(ghosts, c))
-      {
-        continue;
-      }
-      for (int e = 0; e < cell->GetNumberOfEdges(); ++e)
-      {
-        vtkIdList* edge = cell->GetEdge(e)->GetPointIds();
-        const vtkIdType a = edge->GetId(0);
-        const vtkIdType b = edge->GetId(1);
-        const EdgeKey key(std::min(a, b), std::max(a, b));
-        if (pass == 0)
-        {
-          ++uses[key];
-        }
-        else if (uses[key] == 1)
-        {
-          ids.assign(edge->GetPointer(0), edge->GetPointer(0) + edge->GetNumberOfIds());
-          AddFacet(facets, ids.data(), edge->GetNumberOfIds());
-        }
-      }
-    }
-  }
-}
 /// The first point at each point's exact position, or an empty vector when no two points coincide.
 std::vector<vtkIdType> CanonicalPointIds(vtkUnstructuredGrid* mesh)
 {
@@ -460,9 +397,18 @@ vtkSmartPointer<vtkUnstructuredGrid> RenumberedCopy(
 /// type), on its canonical points when `facets` has them.
 BoundaryFacets EdgesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets facets)
 {
-  FindBoundaryEdges(
+  FindBoundaryEdgesByCounting(
     facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
   return facets;
+}
+
+/// The boundary faces of a 3D `mesh` by counting each face's cells (any cell type), on its
+/// canonical points when `facets` has them, sorted.
+BoundaryFacets FacesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets facets)
+{
+  FindBoundaryFacesByCounting(
+    facets.Canonical.empty() ? mesh : RenumberedCopy(mesh, facets.Canonical).Get(), facets);
+  return SortedFacets(facets);
 }
 
 /// The boundary faces of `mesh` from vtkGeometryFilter, on its canonical points when `facets` has
@@ -497,7 +443,7 @@ BoundaryFacets FindBoundaryFacets(vtkUnstructuredGrid* mesh, int dimension, bool
   }
   if (!VTKFaceCells::CoversAll3DCells(types) || !polygonsOnly)
   {
-    return FacetsByGeometryFilter(mesh, std::move(facets));
+    return FacesByCounting(mesh, std::move(facets));
   }
   FindBoundaryFacesByMatching(mesh, facets.Canonical, has2DCells, facets);
   return SortedFacets(facets);

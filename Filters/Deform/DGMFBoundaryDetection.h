@@ -33,10 +33,10 @@ struct BoundaryFacets
  * The boundary of a mesh.
  * - 3D meshes: the faces used by one 3D cell, plus any 2D cell of the grid (typically boundary
  *   patches), sorted by their point ids. The faces come from the core's face matching
- *   (dgmf::FindBoundaryFaces, on the vtkSMPTools threads) for linear cells and polyhedra, from
- *   vtkGeometryFilter when the grid has other 3D cells (quadratic, Lagrange: their faces carry
- *   mid-edge nodes) or 2D cells other than polygons. The same facets in the same order whatever
- *   the number of threads.
+ *   (dgmf::FindBoundaryFaces, on the vtkSMPTools threads) for linear cells and polyhedra, by
+ *   counting each of VTK's cell faces (DGMFFacetCounting.h) when the grid has other 3D cells
+ *   (quadratic, Lagrange: their faces carry mid-edge nodes) or 2D cells other than polygons. The
+ * same facets in the same order whatever the number of threads.
  * - 2D meshes: the edges used by one 2D cell only, in the order of their cells and of VTK's
  *   edges (end nodes first, then mid-edge nodes of higher-order cells): by the face matching for
  *   polygons, by counting each edge's cells in a hash map when there are quadratic cells.

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -343,6 +344,57 @@ TEST(BoundaryDetection, QuadraticCellsStillGetTheirMidEdgeNodesOnTheBoundary)
   dgmf_vtk::RunWithThreads(1, [&]() { facets = dgmf_vtk::FindBoundaryFacets(mesh, 3); });
   const auto flags = dgmf_vtk::FlagBoundaryNodes(facets, 20);
   EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 20);
+}
+
+TEST(BoundaryDetection, QuadraticCellsInsideAMeshAreNotOnTheBoundary)
+{
+  // 2 x 2 x 2 quadratic hexahedra in [0, 2]^3: the boundary nodes are exactly the nodes on the
+  // box's surface (vtkGeometryFilter's original point ids, read until 2026-11-30, named interior
+  // nodes and left 3 face nodes out).
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  std::map<std::array<int, 3>, vtkIdType> ids; // doubled coordinates -> point
+  const auto point = [&](int x, int y, int z)
+  {
+    const auto found = ids.emplace(std::array<int, 3>{ x, y, z }, points->GetNumberOfPoints());
+    if (found.second)
+    {
+      points->InsertNextPoint(0.5 * x, 0.5 * y, 0.5 * z);
+    }
+    return found.first->second;
+  };
+  const int corner[8][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 2, 0 }, { 0, 2, 0 }, { 0, 0, 2 },
+    { 2, 0, 2 }, { 2, 2, 2 }, { 0, 2, 2 } };
+  const int edges[12][2] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 },
+    { 7, 4 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k)
+      {
+        std::vector<vtkIdType> cell;
+        for (const auto& c : corner)
+        {
+          cell.push_back(point(2 * i + c[0], 2 * j + c[1], 2 * k + c[2]));
+        }
+        for (const auto& e : edges)
+        {
+          cell.push_back(point(2 * i + (corner[e[0]][0] + corner[e[1]][0]) / 2,
+            2 * j + (corner[e[0]][1] + corner[e[1]][1]) / 2,
+            2 * k + (corner[e[0]][2] + corner[e[1]][2]) / 2));
+        }
+        mesh->InsertNextCell(VTK_QUADRATIC_HEXAHEDRON, 20, cell.data());
+      }
+  mesh->SetPoints(points);
+  dgmf_vtk::BoundaryFacets facets;
+  dgmf_vtk::RunWithThreads(1, [&]() { facets = dgmf_vtk::FindBoundaryFacets(mesh, 3); });
+  const auto flags = dgmf_vtk::FlagBoundaryNodes(facets, mesh->GetNumberOfPoints());
+  for (const auto& [xyz, id] : ids)
+  {
+    const bool surface =
+      std::any_of(xyz.begin(), xyz.end(), [](int c) { return c == 0 || c == 4; });
+    EXPECT_EQ(flags[static_cast<std::size_t>(id)] != 0, surface)
+      << "node " << id << " at " << xyz[0] << " " << xyz[1] << " " << xyz[2];
+  }
 }
 
 TEST(BoundaryDetection, TheEdgeMatchingFindsTheEdgesTheCountingFinds)
