@@ -158,22 +158,39 @@ void vtkDGMFDeformFilter::RemoveAllSlipBoundaries()
   this->Modified();
 }
 
+namespace
+{
+/// Selects the point array `name` at `index` of `filter`; null forgets the selection, so that the
+/// default applies again (VTK's SetInputArrayToProcess ignores a null name: the old one stayed).
+void SelectPointArray(vtkDGMFDeformFilter* filter, int index, const char* name)
+{
+  if (name)
+  {
+    filter->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+    return;
+  }
+  vtkInformation* info = filter->GetInputArrayInformation(index);
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    info->Remove(vtkDataObject::FIELD_NAME());
+    filter->Modified();
+  }
+}
+} // namespace
+
 void vtkDGMFDeformFilter::SetDisplacementArrayName(const char* name)
 {
-  this->SetInputArrayToProcess(
-    dgmf_vtk::DisplacementArrayIndex, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+  SelectPointArray(this, dgmf_vtk::DisplacementArrayIndex, name);
 }
 
 void vtkDGMFDeformFilter::SetBoundaryMarkerArrayName(const char* name)
 {
-  this->SetInputArrayToProcess(
-    dgmf_vtk::MarkerArrayIndex, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+  SelectPointArray(this, dgmf_vtk::MarkerArrayIndex, name);
 }
 
 void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
 {
-  this->SetInputArrayToProcess(
-    dgmf_vtk::BodyIdArrayIndex, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+  SelectPointArray(this, dgmf_vtk::BodyIdArrayIndex, name);
 }
 
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const

@@ -511,8 +511,8 @@ public:
    * displacement (index 0), the boundary-marker point array (index 1) and the body-id point array
    * (index 2: 0 = not on a moving body, 1, 2, ... = the moving body; DGMF only: each body gets its
    * own damping field and rigid motion, and the bodies' displacements are summed). "None": no
-   * array. Defaults, when never set: the input's point array `Displacement` (3 components) and
-   * `BoundaryMarker` (1 component) when it has them, else none (as the plugin's).
+   * array; null: the default again. Defaults, when never set: the input's point array
+   * `Displacement` (3 components) and `BoundaryMarker` (1 component) when it has them, else none.
    */
   void SetDisplacementArrayName(const char* name);
   void SetBoundaryMarkerArrayName(const char* name);

@@ -2,6 +2,8 @@
 // input safety, caching, threads and bad input.
 #include "vtkDGMFDeformFilter.h"
 
+#include "ErrorMessages.h"
+
 #include "FieldValue.h"
 #include "ShippedMesh.h"
 #include "vtkCallbackCommand.h"
@@ -350,6 +352,33 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
   moved->Modified();
   filter->Update();
   EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+}
+
+TEST(DeformFilter, ANullArrayNameGivesTheDefaultBack)
+{
+  // A wrong name fails; null then selects the default (BoundaryMarker) again. VTK's
+  // SetInputArrayToProcess ignores a null name: until 2026-11-30 the wrong name stayed, the filter
+  // was not even modified, and Update gave the failed run's empty output without a word.
+  auto mesh = dgmf_test::ReadShippedMesh("rotating_circle.vtu", CirclePoints, CircleCells);
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetRotationAngles(0, 0, 30);
+  filter->SetBoundaryMarkerArrayName("Nope");
+  filter->SetDisplacementArrayName("Nope");
+  {
+    dgmf_test::ErrorMessages errors(filter);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  filter->SetBoundaryMarkerArrayName(nullptr);
+  filter->SetDisplacementArrayName(nullptr);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+  vtkNew<vtkDGMFDeformFilter> fresh;
+  fresh->SetInputData(mesh);
+  fresh->SetRotationAngles(0, 0, 30);
+  fresh->Update();
+  EXPECT_TRUE(Fingerprint(filter->GetOutput()) == Fingerprint(fresh->GetOutput()));
 }
 
 TEST(DeformFilter, RepeatedDeformationReusesOutputPointsOnlyWhenNobodyElseHoldsThem)
