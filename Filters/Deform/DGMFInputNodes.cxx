@@ -84,6 +84,12 @@ vtkDataArray* FindPointArray(
   vtkUnstructuredGrid* mesh, const std::string& name, int components, const std::string& what)
 {
   vtkDataArray* array = mesh->GetPointData()->GetArray(name.c_str());
+  if (!array && mesh->GetPointData()->GetAbstractArray(name.c_str()))
+  {
+    throw std::invalid_argument("The " + what + " array '" + name + "' is a point array of " +
+      mesh->GetPointData()->GetAbstractArray(name.c_str())->GetDataTypeAsString() +
+      " values, not of numbers.");
+  }
   if (!array)
   {
     throw std::invalid_argument(
@@ -222,6 +228,17 @@ void InputGatherer::Gather(
     options.Dimension != 0 ? options.Dimension : DetectDimension(mesh, nodes.Points, n);
   if (nodes.Dimension < 0)
   {
+    vtkUnsignedCharArray* types = mesh->GetDistinctCellTypesArray();
+    bool surfaceCells = false;
+    for (vtkIdType t = 0; types && t < types->GetNumberOfValues(); ++t)
+    {
+      surfaceCells = surfaceCells || vtkCellTypes::GetDimension(types->GetValue(t)) == 2;
+    }
+    if (!surfaceCells)
+    {
+      throw std::invalid_argument("The mesh has no 2D or 3D cell (only lines or vertices): there "
+                                  "is no area or volume to deform.");
+    }
     throw std::invalid_argument(
       "The mesh has no 3D cell but its points do not all have the same z: 2D meshes must lie in a "
       "plane z = constant (up to 1e-6 of their extent in x and y). Turn a mesh in another plane "

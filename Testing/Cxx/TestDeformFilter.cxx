@@ -511,10 +511,14 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
   realMarker->SetName("RealMarker");
   realMarker->SetNumberOfTuples(mesh->GetNumberOfPoints());
   realMarker->Fill(1.5);
+  vtkNew<vtkStringArray> textMarker;
+  textMarker->SetName("TextMarker");
+  textMarker->SetNumberOfValues(mesh->GetNumberOfPoints());
   vtkNew<vtkUnstructuredGrid> withBadArrays;
   withBadArrays->DeepCopy(mesh);
   withBadArrays->GetPointData()->AddArray(twoComponents);
   withBadArrays->GetPointData()->AddArray(realMarker);
+  withBadArrays->GetPointData()->AddArray(textMarker);
   vtkNew<vtkUnstructuredGrid> empty;
 
   const std::vector<Case> cases = {
@@ -536,6 +540,10 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
       { f->SetBoundaryMarkerArrayName("RealMarker"); },
       "has the value 1.5" },
+    { "marker of strings (it was said not to be a point array)",
+      [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
+      { f->SetBoundaryMarkerArrayName("TextMarker"); },
+      "'TextMarker' is a point array of string values, not of numbers" },
     { "None selected",
       [](vtkDGMFDeformFilter* f, vtkUnstructuredGrid*)
       {
@@ -562,6 +570,26 @@ TEST(DeformFilter, BadInputGetsAClearErrorAndNoOutput)
     EXPECT_TRUE(errors.Contains(c.Message))
       << c.Name << ": got " << (errors.Messages.empty() ? "no message" : errors.Messages[0]);
   }
+  // Lines only, not in one plane: no area or volume (it was told that 2D meshes must lie in a
+  // plane, as if the mesh were one).
+  vtkNew<vtkUnstructuredGrid> lines;
+  vtkNew<vtkPoints> linePoints;
+  for (int k = 0; k < 4; ++k)
+  {
+    linePoints->InsertNextPoint(k, k % 2, k / 2);
+  }
+  lines->SetPoints(linePoints);
+  for (vtkIdType k = 0; k < 3; ++k)
+  {
+    const vtkIdType line[2] = { k, k + 1 };
+    lines->InsertNextCell(VTK_LINE, 2, line);
+  }
+  vtkNew<vtkDGMFDeformFilter> onLines;
+  ErrorCatcher lineErrors(onLines);
+  onLines->SetInputData(lines);
+  onLines->Update();
+  EXPECT_EQ(onLines->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(lineErrors.Contains("no 2D or 3D cell (only lines or vertices)"));
   // Nothing selected (C++ without the setters): the input's BoundaryMarker array, as in ParaView
   // (until 2026-11-30 an error, though properties.md gave it as the default).
   vtkNew<vtkDGMFDeformFilter> unselected;

@@ -230,7 +230,7 @@ class CommandFailures(unittest.TestCase):
         before = digest(target)
         process = subprocess.Popen(
             [ARGS.deform, mesh, target, "--rotate", "10", "20", "30", "--center", "0.5", "0.5",
-             "0.5", "--sub-steps", "2000"],
+             "0.5", "--sub-steps", "1000"],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         time.sleep(2.0)
         self.assertIsNone(process.poll(), "the run ended before it could be interrupted")
