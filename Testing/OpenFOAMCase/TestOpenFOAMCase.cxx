@@ -375,6 +375,33 @@ TEST(CaseDirectory, ExtraPointsAfterTheCasesAreNotWritten)
   ExpectSameBits(of::ReadPointsFile(written).Points, Sample);
 }
 
+TEST(CaseDirectory, ACopyOfAReadOnlyCaseCanTakeThePoints)
+{
+  // A read-only source (a tutorial tree, a colleague's case): the copy's directories and files
+  // are its owner's to write (fs::copy kept the source's modes: as a user, the copy's own
+  // constant/polyMesh could not be written, and the half copy blocked a second try).
+  const fs::path source = MakeCase(Scratch("readonly"), AsciiPoints(Sample));
+  const auto writable = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(source))
+  {
+    fs::permissions(entry.path(), writable, fs::perm_options::remove);
+  }
+  const fs::path target = Scratch("readonly-copy") / "case";
+  of::CopyCase(source, target);
+  std::size_t entries = 0;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(target))
+  {
+    EXPECT_NE(entry.status().permissions() & fs::perms::owner_write, fs::perms::none)
+      << entry.path();
+    ++entries;
+  }
+  EXPECT_GE(entries, 6u); // system, controlDict, constant, polyMesh, points, boundary, 0, ...
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(source))
+  {
+    fs::permissions(entry.path(), fs::perms::owner_write, fs::perm_options::add);
+  }
+}
+
 TEST(CaseDirectory, WrongInputsWriteNothingAndSayWhy)
 {
   const fs::path source = MakeCase(Scratch("wrong"), AsciiPoints(Sample));

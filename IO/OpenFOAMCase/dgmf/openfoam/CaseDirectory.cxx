@@ -235,6 +235,38 @@ bool SolverStartTime(
   return true;
 }
 
+namespace
+{
+/**
+ * Copies the directory tree `from` into the new directory `to`: directories made with the
+ * default permissions and files given their owner's write permission, so that the copy of a
+ * read-only case (a tutorial tree, a colleague's case) can take the deformed points (fs::copy
+ * kept the source's modes: the copy's own constant/polyMesh could not be written). Symbolic
+ * links are copied as links.
+ */
+void CopyTree(const fs::path& from, const fs::path& to)
+{
+  fs::create_directory(to);
+  for (const fs::directory_entry& entry : fs::directory_iterator(from))
+  {
+    const fs::path target = to / entry.path().filename();
+    if (entry.is_symlink())
+    {
+      fs::copy_symlink(entry.path(), target);
+    }
+    else if (entry.is_directory())
+    {
+      CopyTree(entry.path(), target);
+    }
+    else
+    {
+      fs::copy_file(entry.path(), target);
+      fs::permissions(target, fs::perms::owner_write, fs::perm_options::add);
+    }
+  }
+}
+} // namespace
+
 void CopyCase(const fs::path& source, const fs::path& target)
 {
   if (!IsCase(source))
@@ -250,27 +282,54 @@ void CopyCase(const fs::path& source, const fs::path& target)
   // The first time directory holds the fields a solver starts from; later ones are results.
   double first = HUGE_VAL;
   FirstTimeOf(source, first);
+  const bool created = !fs::exists(target, error);
   fs::create_directories(target, error);
   if (error)
   {
     throw std::runtime_error(Quoted(target) + " cannot be created: " + error.message());
   }
-  for (const fs::directory_entry& entry : fs::directory_iterator(source))
+  fs::path copying;
+  try
   {
-    const std::string name = entry.path().filename().string();
-    double value = 0.0;
-    const bool laterTime = entry.is_directory() && TimeValue(name, value) && value != first;
-    if (laterTime || name.rfind("processor", 0) == 0 || name == "postProcessing")
+    for (const fs::directory_entry& entry : fs::directory_iterator(source))
     {
-      continue;
+      const std::string name = entry.path().filename().string();
+      double value = 0.0;
+      const bool laterTime = entry.is_directory() && TimeValue(name, value) && value != first;
+      if (laterTime || name.rfind("processor", 0) == 0 || name == "postProcessing")
+      {
+        continue;
+      }
+      copying = entry.path();
+      if (entry.is_directory() && !entry.is_symlink())
+      {
+        CopyTree(entry.path(), target / name);
+      }
+      else
+      {
+        fs::copy(entry.path(), target / name, fs::copy_options::copy_symlinks);
+        if (!entry.is_symlink())
+        {
+          fs::permissions(target / name, fs::perms::owner_write, fs::perm_options::add);
+        }
+      }
     }
-    fs::copy(entry.path(), target / name,
-      fs::copy_options::recursive | fs::copy_options::copy_symlinks, error);
-    if (error)
+  }
+  catch (const fs::filesystem_error& e)
+  {
+    // Nothing half-copied is left: the target was empty or new (CopyTargetProblem), and a
+    // second try would refuse a directory holding files.
+    std::error_code ignored;
+    for (const fs::directory_entry& entry : fs::directory_iterator(target, ignored))
     {
-      throw std::runtime_error("cannot copy " + Quoted(entry.path()) + " to " +
-        Quoted(target / name) + ": " + error.message());
+      fs::remove_all(entry.path(), ignored);
     }
+    if (created)
+    {
+      fs::remove(target, ignored);
+    }
+    throw std::runtime_error("cannot copy " + Quoted(copying) + " to " +
+      Quoted(target / copying.filename()) + ": " + e.code().message());
   }
 }
 
