@@ -31,6 +31,37 @@ InputKind KindOf(const std::string& input)
                                : InputKind::VTKFile;
 }
 
+std::string InputProblem(InputKind kind, const std::string& input)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  // (A case's .foam file need not exist: the case is its directory.)
+  if (kind != InputKind::OpenFOAMCase && !fs::exists(input, error))
+  {
+    return input + " does not exist";
+  }
+  if (kind != InputKind::OpenFOAMCase)
+  {
+    return fs::is_directory(input, error)
+      ? input + " is a directory but not an OpenFOAM case (it has no system/controlDict)"
+      : "";
+  }
+  const fs::path caseDirectory = dgmf::openfoam::CaseDirectoryOf(input);
+  if (fs::is_directory(caseDirectory / "constant" / "polyMesh", error))
+  {
+    return "";
+  }
+  bool decomposed = false;
+  for (const fs::directory_entry& entry : fs::directory_iterator(caseDirectory, error))
+  {
+    decomposed = decomposed || entry.path().filename().string().rfind("processor", 0) == 0;
+  }
+  return caseDirectory.string() + " has no mesh (no constant/polyMesh): " +
+    (decomposed ? "its processor* directories hold the decomposed mesh; run reconstructParMesh "
+                  "-constant (or reconstructPar) first"
+                : "make it first (blockMesh, snappyHexMesh, or a mesh converter)");
+}
+
 std::string OutputProblem(InputKind kind, const std::string& input, const std::string& output)
 {
   if (kind == InputKind::OpenFOAMCase && !IsMeshFileName(output) && !IsOpenFOAMCase(output))

@@ -26,6 +26,15 @@ enum class InputKind
 /// The kind of `input` (by its name, or its being a case directory).
 InputKind KindOf(const std::string& input);
 
+/**
+ * Why `input` cannot be read, said before anything else ("" when it may be): it does not exist; it
+ * is a directory but no OpenFOAM case (no system/controlDict); it is a case without a mesh (no
+ * constant/polyMesh: blockMesh not run, or a decomposed case whose processor* directories alone
+ * hold the mesh). These were told as "the output must end in .vtu" or "controlDict contains no
+ * meshes" until 2026-11-30.
+ */
+std::string InputProblem(InputKind kind, const std::string& input);
+
 /// Why `output` cannot be written from `input` ("" when it can): .vtu and .vtk always; the
 /// solver's file back in its own format; an OpenFOAM case back into a case, but not into a new
 /// directory inside it (it would be copied into itself).

@@ -416,6 +416,12 @@ int main(int argc, char* argv[])
   // case (boundaries by name).
   const std::string& input = options.Input;
   const InputKind kind = dgmf_cli::KindOf(input);
+  const std::string inputProblem = dgmf_cli::InputProblem(kind, input);
+  if (!inputProblem.empty())
+  {
+    std::cerr << "dgmf-deform: error: " << inputProblem << "\n";
+    return ExitFailure;
+  }
   const std::string outputProblem = dgmf_cli::OutputProblem(kind, input, options.Output);
   if (!outputProblem.empty())
   {
