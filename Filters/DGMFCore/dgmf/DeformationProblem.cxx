@@ -45,6 +45,13 @@ void ValidateMotion(
   {
     throw std::invalid_argument(which + e.what());
   }
+  if (problem.Dimension == 2 && !motion.KeepsPlane() && problem.LayerAxis >= 0)
+  {
+    const char axis = "xyz"[problem.LayerAxis];
+    throw std::invalid_argument(which + "This is a one-cell-thick mesh (two planes normal to " +
+      axis + "): it can only rotate about " + axis + " and translate within the planes. Set the " +
+      "other rotations and the " + axis + " translation to 0.");
+  }
   if (problem.Dimension == 2 && !motion.KeepsPlane())
   {
     throw std::invalid_argument(which + "This is a 2D mesh (all points at z = " +

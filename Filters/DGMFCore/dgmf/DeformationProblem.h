@@ -27,7 +27,10 @@ namespace dgmf
  */
 struct DeformationProblem
 {
-  int Dimension = 3;                     ///< 2 (a plane z = constant) or 3
+  int Dimension = 3; ///< 2 (a plane z = constant) or 3
+  /// The extrusion axis (0 x, 1 y, 2 z) when this is the 2D problem of a one-cell-thick mesh's
+  /// layer (ReduceToLayer), for messages in the mesh's own axes; -1 otherwise.
+  int LayerAxis = -1;
   std::size_t NumberOfNodes = 0;         ///< nodes of the mesh
   const double* Points = nullptr;        ///< original positions
   const NodeKind* Kinds = nullptr;       ///< interior, static or moving boundary

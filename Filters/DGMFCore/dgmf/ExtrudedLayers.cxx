@@ -286,6 +286,7 @@ DeformationProblem ReduceToLayer(
   }
   DeformationProblem layer = problem;
   layer.Dimension = 2;
+  layer.LayerAxis = axis;
   layer.NumberOfNodes = m;
   layer.Points = storage.Points.data();
   layer.Kinds = storage.Kinds.data();
