@@ -2,6 +2,8 @@
 
 #include "vtkDGMFDeformFilter.h"
 
+#include "dgmf/openfoam/CaseDirectory.h"
+
 #include "dgmf/MotionLaw.h"
 
 #include <algorithm>
@@ -314,7 +316,15 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     }
     else if (option == "--time" && hasValue(i))
     {
+      // A time directory's name, or constant: "latestTime" and the like were refused only after
+      // the case was read, with exit 1 (until 2026-11-30).
       options.Time = argv[++i];
+      if (!dgmf::openfoam::IsTimeName(options.Time))
+      {
+        std::cerr << "dgmf-deform: bad option or value: --time " << options.Time
+                  << ": a time directory's name (0, 0.5, 100) or constant\n";
+        return ExitUsage;
+      }
     }
     else if (option == "--decompose-polyhedra")
     {
