@@ -415,6 +415,52 @@ TEST(ExtrudedLayers, TheTwoLayersArePairedAndMoveTogether)
   EXPECT_NEAR(z, std::sin(40.0 * Pi / 180.0), 1e-12);
 }
 
+TEST(ExtrudedLayers, TheLayersOfAMeshWithRoundOffAreFoundWithinTheTolerance)
+{
+  // The extruded circle in a square with the round-off of a transform (OpenFOAM's
+  // transformPoints turning an x-y mesh into the x-z plane): every coordinate off by up to
+  // 3e-14, so no two nodes share a plane or a partner's in-plane coordinates bit for bit. Found
+  // within the tolerance, deformed as the exact mesh is (until 2026-11-30 it was taken for a 3D
+  // mesh: 35 inverted cells with its planes static). Off by 1e-6, it is no such mesh.
+  const dgmf::NodeKind none = dgmf::NodeKind::Interior;
+  const dgmf_test::NodeSet flat = dgmf_test::CircleInSquare(32, 10, 400);
+  dgmf_test::NodeSet exact, noisy, far;
+  exact.Dimension = noisy.Dimension = far.Dimension = 3;
+  std::uint64_t state = 12345;
+  const auto noise = [&state](double size)
+  {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return size * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+  };
+  for (double x : { -0.5, 0.25 })
+  {
+    for (std::size_t i = 0; i < flat.Size(); ++i)
+    {
+      const double u = flat.Points[3 * i], v = flat.Points[3 * i + 1];
+      exact.Add(x, u, v, flat.Kinds[i]);
+      noisy.Add(x + noise(6e-14), u + noise(6e-14), v + noise(6e-14), flat.Kinds[i]);
+      far.Add(x + noise(2e-6), u, v, none);
+    }
+  }
+  const dgmf::ExtrudedLayers layers = dgmf::FindExtrudedLayers(noisy.Points.data(), noisy.Size());
+  ASSERT_TRUE(layers.Found());
+  EXPECT_EQ(layers.Axis, 0);
+  EXPECT_GT(layers.Tolerance, 0.0);
+  EXPECT_EQ(layers.Front.size(), flat.Size());
+  EXPECT_EQ(layers.Layer[flat.Size() + 7], 7);
+  EXPECT_EQ(dgmf::FindExtrudedLayers(exact.Points.data(), exact.Size()).Tolerance, 0.0);
+  EXPECT_FALSE(dgmf::FindExtrudedLayers(far.Points.data(), far.Size()).Found());
+  const std::vector<double> expected = DeformThroughLayer(
+    dgmf::FindExtrudedLayers(exact.Points.data(), exact.Size()), Turned(exact, 0, 40.0));
+  const std::vector<double> deformed = DeformThroughLayer(layers, Turned(noisy, 0, 40.0));
+  double largest = 0.0;
+  for (std::size_t k = 0; k < deformed.size(); ++k)
+  {
+    largest = std::max(largest, std::abs(deformed[k] - expected[k]));
+  }
+  EXPECT_LT(largest, 1e-10); // the round-off, through the graph's weights (5e-12 measured)
+}
+
 TEST(ExtrudedLayers, TheFirstPassGivesTheSameAnswerOnTwoThreadsOverManyBlocks)
 {
   // Two planes z = -0.5 and z = 2 of a 300 x 300 grid, the nodes of both planes interleaved so

@@ -144,6 +144,125 @@ Extremes FindExtremes(const double* points, std::size_t begin, std::size_t end)
   }
   return all;
 }
+/**
+ * The layers of nodes along `axis` between the planes `low` and `high` within `tolerance`
+ * (FindExtrudedLayers' second try): the nodes within it of a plane are its nodes, each node of
+ * the high plane paired with the low plane's node within it in the other two coordinates, found
+ * in a grid of cells of twice the tolerance (the 3 x 3 cells around a node hold its partner).
+ * False when the nodes are not so.
+ */
+bool FindLayersWithin(const double* points, std::size_t n, int axis, double low, double high,
+  double tolerance, ExtrudedLayers& layers)
+{
+  std::size_t lowNodes = 0, highNodes = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double value = points[3 * i + axis];
+    lowNodes += std::abs(value - low) <= tolerance ? 1 : 0;
+    highNodes += std::abs(value - high) <= tolerance ? 1 : 0;
+  }
+  if (lowNodes != highNodes || 3 * lowNodes <= n || !(high - low > 2 * tolerance))
+  {
+    return false;
+  }
+  const double cell = 2 * tolerance;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto cellOf = [&](std::size_t i, int du, int dv, PlaneKey& key)
+  {
+    const double cu = std::floor(points[3 * i + u] / cell) + du;
+    const double cv = std::floor(points[3 * i + v] / cell) + dv;
+    if (!(std::abs(cu) < 4e18 && std::abs(cv) < 4e18))
+    {
+      return false;
+    }
+    key = { static_cast<std::uint64_t>(static_cast<std::int64_t>(cu)),
+      static_cast<std::uint64_t>(static_cast<std::int64_t>(cv)) };
+    return true;
+  };
+  std::unordered_map<PlaneKey, std::int32_t, PlaneKeyHash> front;
+  front.reserve(lowNodes);
+  std::vector<std::int32_t> layer(n, -1), frontNodes;
+  frontNodes.reserve(lowNodes);
+  PlaneKey key{};
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (std::abs(points[3 * i + axis] - low) <= tolerance)
+    {
+      // Two nodes of a plane within one cell: not a mesh's nodes (or not its planes).
+      if (!cellOf(i, 0, 0, key) ||
+        !front.emplace(key, static_cast<std::int32_t>(frontNodes.size())).second)
+      {
+        return false;
+      }
+      layer[i] = static_cast<std::int32_t>(frontNodes.size());
+      frontNodes.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  // The low plane's node within the tolerance of node i in the other two coordinates, or -1.
+  const auto partnerOf = [&](std::size_t i)
+  {
+    for (int du = -1; du <= 1; ++du)
+    {
+      for (int dv = -1; dv <= 1; ++dv)
+      {
+        const auto found = cellOf(i, du, dv, key) ? front.find(key) : front.end();
+        if (found == front.end())
+        {
+          continue;
+        }
+        const auto j =
+          static_cast<std::size_t>(frontNodes[static_cast<std::size_t>(found->second)]);
+        if (std::abs(points[3 * j + u] - points[3 * i + u]) <= tolerance &&
+          std::abs(points[3 * j + v] - points[3 * i + v]) <= tolerance)
+        {
+          return found->second;
+        }
+      }
+    }
+    return std::int32_t(-1);
+  };
+  const std::size_t pairs = frontNodes.size();
+  std::vector<std::uint8_t> taken(pairs, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double value = points[3 * i + axis];
+    if (std::abs(value - low) <= tolerance)
+    {
+      continue;
+    }
+    const std::int32_t partner = partnerOf(i);
+    if (std::abs(value - high) <= tolerance)
+    {
+      if (partner < 0 || taken[static_cast<std::size_t>(partner)])
+      {
+        return false;
+      }
+      taken[static_cast<std::size_t>(partner)] = 1;
+      layer[i] = partner;
+    }
+    else if (partner >= 0) // above a plane node: a layer of a thicker mesh
+    {
+      return false;
+    }
+    else
+    {
+      layer[i] = static_cast<std::int32_t>(frontNodes.size());
+      frontNodes.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  if (pairs * 2 <= n - pairs) // the inner nodes are a minority
+  {
+    return false;
+  }
+  layers.Axis = axis;
+  layers.Low = low;
+  layers.High = high;
+  layers.Tolerance = tolerance;
+  layers.Front = std::move(frontNodes);
+  layers.Pairs = pairs;
+  layers.Layer = std::move(layer);
+  return true;
+}
 } // namespace
 
 void ToLayer(int axis, const double in[3], double out[3])
@@ -259,6 +378,23 @@ ExtrudedLayers FindExtrudedLayers(
       layers.Front = std::move(frontNodes);
       layers.Pairs = pairs;
       layers.Layer = std::move(layer);
+      return layers;
+    }
+  }
+  // No exact planes: a thin axis within the tolerance (a mesh turned by a transform).
+  double extent[3], diagonal = 0.0, largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    extent[axis] = high[axis] - low[axis];
+    diagonal += extent[axis] * extent[axis];
+    largest = std::max(largest, extent[axis]);
+  }
+  const double tolerance = ExtrudedLayersTolerance * std::sqrt(diagonal);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (extent[axis] > 0.0 && 4.0 * extent[axis] <= largest && std::isfinite(diagonal) &&
+      FindLayersWithin(points, n, axis, low[axis], high[axis], tolerance, layers))
+    {
       return layers;
     }
   }

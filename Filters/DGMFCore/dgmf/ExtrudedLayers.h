@@ -11,6 +11,7 @@
 #include "dgmf/ParallelFor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -21,16 +22,20 @@ namespace dgmf
 /**
  * The two layers of a one-cell-thick mesh: every node lies on one of two planes normal to a
  * coordinate axis (the extrusion axis), and each node of one plane has exactly one partner on the
- * other with the same two other coordinates (bit for bit). Nodes strictly between the planes whose
- * in-plane coordinates are no plane node's (the cell centres VTK's OpenFOAM reader adds when it
- * decomposes polyhedra) are inner nodes: each is a layer node of its own, and keeps its coordinate
- * along the axis.
+ * other with the same two other coordinates (bit for bit, or within Tolerance: a mesh turned into
+ * another plane by a transform, such as OpenFOAM's transformPoints, carries round-off). Nodes
+ * strictly between the planes whose in-plane coordinates are no plane node's (the cell centres
+ * VTK's OpenFOAM reader adds when it decomposes polyhedra) are inner nodes: each is a layer node of
+ * its own, and keeps its coordinate along the axis.
  */
 struct ExtrudedLayers
 {
   int Axis = -1;     ///< the extrusion axis (0 x, 1 y, 2 z); -1: the mesh is not one cell thick
   double Low = 0.0;  ///< the coordinate of the first plane along Axis
   double High = 0.0; ///< and of the second
+  /// How far from its plane (and from its partner, in the other two coordinates) a node may be:
+  /// 0 when every node is exactly on a plane, else ExtrudedLayersTolerance of the mesh's size
+  double Tolerance = 0.0;
   /// The layer nodes: the nodes on the Low plane in increasing order, then the inner nodes.
   std::vector<std::int32_t> Front;
   std::size_t Pairs = 0;           ///< the number of nodes on each plane (the first of Front)
@@ -38,7 +43,11 @@ struct ExtrudedLayers
 
   bool Found() const { return this->Axis >= 0; }
   /// True when node coordinate `value` along Axis is one of the two planes.
-  bool OnPlane(double value) const { return value == this->Low || value == this->High; }
+  bool OnPlane(double value) const
+  {
+    return std::abs(value - this->Low) <= this->Tolerance ||
+      std::abs(value - this->High) <= this->Tolerance;
+  }
 
   /**
    * The plane the nodes `ids[0..count)` of `points` (3 coordinates each) all lie on, a face or
@@ -52,7 +61,11 @@ struct ExtrudedLayers
     {
       const double plane = side == 0 ? this->Low : this->High;
       if (std::all_of(ids, ids + count,
-            [&](Id id) { return points[3 * static_cast<std::size_t>(id) + this->Axis] == plane; }))
+            [&](Id id)
+            {
+              return std::abs(points[3 * static_cast<std::size_t>(id) + this->Axis] - plane) <=
+                this->Tolerance;
+            }))
       {
         return side;
       }
@@ -61,12 +74,18 @@ struct ExtrudedLayers
   }
 };
 
+/// The tolerance of a one-cell-thick mesh's planes and pairs whose coordinates carry round-off,
+/// relative to the diagonal of the nodes' bounding box.
+constexpr double ExtrudedLayersTolerance = 1e-9;
+
 /**
  * Finds the layers of a one-cell-thick mesh among `n` nodes (3 coordinates each): the first axis
  * along which the nodes' coordinates lie between two values, every node at those two values
- * paired, and the nodes between them (if any) inner nodes (see ExtrudedLayers). Not Found() when
- * there is none. O(n) with a hash of the in-plane coordinates; the first pass (every axis's
- * extremes) on `parallelFor`'s threads (none: the calling thread), in fixed blocks.
+ * paired, and the nodes between them (if any) inner nodes (see ExtrudedLayers). When no axis has
+ * exact planes and pairs, a thin axis (at most a quarter of the largest extent) is tried again
+ * within ExtrudedLayersTolerance (one more pass over the nodes; Tolerance is then set). Not
+ * Found() when there is none. O(n) with a hash of the in-plane coordinates; the first pass (every
+ * axis's extremes) on `parallelFor`'s threads (none: the calling thread), in fixed blocks.
  */
 ExtrudedLayers FindExtrudedLayers(
   const double* points, std::size_t n, const ParallelFor& parallelFor = {});
