@@ -203,8 +203,8 @@ std::string Usage()
     "  --decompose-polyhedra   OpenFOAM: read polyhedra as tetrahedra and pyramids\n"
     "  --one-cell-thick MODE   detect, on or off: a one-cell-thick 2D mesh (default detect)\n"
     "  --rotate AX AY AZ       rotation angles in degrees about x, y, z (2D: AZ)\n"
-    "  --center X Y Z          rotation centre (default 0 0 0); --center moving: the centroid\n"
-    "                          of each moving boundary\n"
+    "  --center X Y Z          rotation centre (default 0 0 0); --center body: the centroid\n"
+    "                          of each moving body's boundary nodes (also: --center moving)\n"
     "  --translate TX TY TZ    rigid translation (default 0 0 0)\n"
     "  --axis AX AY AZ         rotation axis through the centre (default 0 0 1), with --angle\n"
     "  --angle DEG             rotation about --axis in degrees, instead of --rotate\n"
@@ -293,8 +293,10 @@ int ParseCommandLine(int argc, char* argv[], vtkDGMFDeformFilter* filter, Comman
     {
       filter->SetRotationAngles(v);
     }
-    else if (option == "--center" && i + 1 < argc && std::strcmp(argv[i + 1], "moving") == 0)
+    else if (option == "--center" && i + 1 < argc &&
+      (std::strcmp(argv[i + 1], "body") == 0 || std::strcmp(argv[i + 1], "moving") == 0))
     {
+      // BODY_CENTROID, "Body Centroid" in ParaView; "moving" is the name it had until 2026-11-30.
       filter->SetRotationCenterMode(vtkDGMFDeformFilter::BODY_CENTROID);
       ++i;
     }

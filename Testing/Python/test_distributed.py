@@ -331,7 +331,7 @@ def main():
     deform = DGMFDeform(Input=ghosts)  # noqa: F821
     deform.BoundaryMarkerArray = ["POINTS", "BoundaryMarker"]
     deform.DisplacementArray = ["POINTS", "None"]
-    deform.RotationCenterMode = "Moving Boundary Centroid"
+    deform.RotationCenterMode = "Body Centroid"
     deform.RotationAngles = [10.0, 20.0, 30.0]
     deform.Translation = [0.2, -0.1, 0.05]
     piece = local_piece(deform)

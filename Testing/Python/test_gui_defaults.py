@@ -1,6 +1,6 @@
 """What the ParaView proxy gives a user who does not set everything: array choices that never
 default to an unrelated array (a velocity is not a displacement), the conventional names taken when
-present, the rotation centre's default as its help says (0 0 0), and the Moving Boundary Centroid
+present, the rotation centre's default as its help says (0 0 0), and the Body Centroid
 mode turning a body about itself."""
 import argparse
 
@@ -53,7 +53,7 @@ def main():
     turned.BoundaryMarkerArray = ["POINTS", "BoundaryMarker"]
     turned.DisplacementArray = ["POINTS", "None"]
     turned.RotationAngles = [0, 0, 90]
-    turned.RotationCenterMode = "Moving Boundary Centroid"
+    turned.RotationCenterMode = "Body Centroid"
     turned.UpdatePipeline()
     a = servermanager.Fetch(circle)
     b = servermanager.Fetch(turned)
