@@ -58,6 +58,35 @@ std::vector<double> PointsAfterXminMoves(vtkMultiBlockDataSet* input,
   }
   return xyz;
 }
+/// The volume's points after the entries `moving` (one body each) of `blocks` translated by 0.3
+/// along z; empty when the filter fails (its messages appended to `error`, if given).
+std::vector<double> PointsAfterTranslation(
+  vtkMultiBlockDataSet* blocks, const std::vector<std::string>& moving, std::string* error)
+{
+  vtkNew<vtkDGMFDeformFilter> filter;
+  filter->SetInputData(blocks);
+  for (const std::string& entry : moving)
+  {
+    filter->AddMovingBoundary(entry.c_str());
+  }
+  filter->SetTranslation(0.0, 0.0, 0.3);
+  dgmf_test::ErrorMessages errors(filter);
+  filter->Update();
+  for (const std::string& message : errors.Messages)
+  {
+    if (error)
+    {
+      *error += message;
+    }
+  }
+  vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
+  std::vector<double> xyz;
+  for (vtkIdType i = 0; volume && i < volume->GetNumberOfPoints(); ++i)
+  {
+    xyz.insert(xyz.end(), volume->GetPoint(i), volume->GetPoint(i) + 3);
+  }
+  return xyz;
+}
 } // namespace
 
 TEST(BoundaryNames, PatchesThatCloseTheVolumeGiveTheResultOfTheMeshsOwnBoundary)
@@ -138,31 +167,7 @@ TEST(BoundaryNames, AnEntryOfSeveralBlocksIsOneBody)
   // names no block is an error.
   const int n = 6;
   const auto run = [n](const std::vector<std::string>& moving, std::string* error = nullptr)
-  {
-    vtkNew<vtkDGMFDeformFilter> filter;
-    filter->SetInputData(dgmf_test::HexBoxBlocks(n, ""));
-    for (const std::string& entry : moving)
-    {
-      filter->AddMovingBoundary(entry.c_str());
-    }
-    filter->SetTranslation(0.0, 0.0, 0.3);
-    dgmf_test::ErrorMessages errors(filter);
-    filter->Update();
-    if (error)
-    {
-      for (const std::string& message : errors.Messages)
-      {
-        *error += message;
-      }
-    }
-    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
-    std::vector<double> xyz;
-    for (vtkIdType i = 0; volume && i < volume->GetNumberOfPoints(); ++i)
-    {
-      xyz.insert(xyz.end(), volume->GetPoint(i), volume->GetPoint(i) + 3);
-    }
-    return xyz;
-  };
+  { return PointsAfterTranslation(dgmf_test::HexBoxBlocks(n, ""), moving, error); };
   const std::vector<double> glob = run({ "y*" });
   const std::vector<double> alternatives = run({ "ymin | ymax" });
   const std::vector<double> twoBodies = run({ "ymin", "ymax" });
@@ -208,26 +213,7 @@ TEST(BoundaryNames, AFamilyOfBlocksIsChosenByItsName)
         boundary->GetBlock(b)->GetFieldData()->AddArray(array);
       }
     }
-    vtkNew<vtkDGMFDeformFilter> filter;
-    filter->SetInputData(blocks);
-    for (const std::string& entry : moving)
-    {
-      filter->AddMovingBoundary(entry.c_str());
-    }
-    filter->SetTranslation(0.0, 0.0, 0.3);
-    dgmf_test::ErrorMessages errors(filter);
-    filter->Update();
-    for (const std::string& message : errors.Messages)
-    {
-      *error += message;
-    }
-    vtkUnstructuredGrid* volume = VolumeOf(filter->GetOutputDataObject(0));
-    std::vector<double> xyz;
-    for (vtkIdType i = 0; volume && i < volume->GetNumberOfPoints(); ++i)
-    {
-      xyz.insert(xyz.end(), volume->GetPoint(i), volume->GetPoint(i) + 3);
-    }
-    return xyz;
+    return PointsAfterTranslation(blocks, moving, error);
   };
   std::string error;
   const std::vector<double> family = run({ "ysides" }, "", &error);
