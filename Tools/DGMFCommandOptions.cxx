@@ -250,7 +250,8 @@ std::string Usage()
     "                          write), lz4 (default inline: files ~0.6 times as large), zlib\n"
     "                          or lzma (meshio 5 reads zlib best)\n"
     "  --non-orthogonality     report the maximum face non-orthogonality as checkMesh does\n"
-    "                          (on for OpenFOAM cases)\n"
+    "                          (on for OpenFOAM cases; of VTK's pieces with\n"
+    "                          --decompose-polyhedra, which checkMesh does not see)\n"
     "exit codes: 0 written; 1 could not read, deform or write; 2 bad option; 3 inverted cells\n"
     "            with --fail-on-inverted (nothing written)\n";
   return usage;

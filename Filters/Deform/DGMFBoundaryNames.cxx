@@ -434,9 +434,25 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     }
     chosenBy[l] = by;
   };
+  // Entries whose blocks hold no point (an OpenFOAM patch of 0 faces): no effect, said.
+  std::vector<std::string> emptyEntries;
+  const auto noteIfEmpty =
+    [&](const std::vector<std::size_t>& found, const std::string& entry, const char* role)
+  {
+    vtkIdType points = 0;
+    for (std::size_t l : found)
+    {
+      points += leaves[l].NumberOfPoints;
+    }
+    if (!piece && points == 0)
+    {
+      emptyEntries.push_back("'" + entry + "' (" + role + ")");
+    }
+    return found;
+  };
   for (std::size_t k = 0; k < selection.Moving.size(); ++k)
   {
-    for (std::size_t l : leavesOf(selection.Moving[k]))
+    for (std::size_t l : noteIfEmpty(leavesOf(selection.Moving[k]), selection.Moving[k], "moving"))
     {
       choose(l, selection.Moving[k], "moving");
       mark(l, MovingRank, static_cast<std::int32_t>(k + 1));
@@ -462,7 +478,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   std::vector<bool> staticNamed;
   for (const std::string& entry : selection.Static)
   {
-    for (std::size_t l : leavesOf(entry))
+    for (std::size_t l : noteIfEmpty(leavesOf(entry), entry, "static"))
     {
       choose(l, entry, "static");
       mark(l, StaticRank, 0);
@@ -473,7 +489,7 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   std::vector<std::vector<std::size_t>> slipLeaves(selection.Slip.size());
   for (std::size_t k = 0; k < selection.Slip.size(); ++k)
   {
-    for (std::size_t l : leavesOf(selection.Slip[k]))
+    for (std::size_t l : noteIfEmpty(leavesOf(selection.Slip[k]), selection.Slip[k], "slip"))
     {
       choose(l, selection.Slip[k], "slip");
       mark(l, SlipRank, 0);
@@ -502,6 +518,16 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   }
 
   NodeRoles roles;
+  if (!emptyEntries.empty())
+  {
+    std::string listed;
+    for (const std::string& entry : emptyEntries)
+    {
+      listed += (listed.empty() ? "" : ", ") + entry;
+    }
+    roles.Warnings.push_back("The boundaries " + listed +
+      " hold no point of the input (a patch of no faces): they have no effect.");
+  }
   const std::string shared = MovingNodesOnStaticBlocks(leaves, staticLeaves, staticNamed, rank);
   if (!shared.empty())
   {

@@ -6,6 +6,7 @@
 #include "ErrorMessages.h"
 #include "HexBoxBlocks.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -244,6 +245,26 @@ TEST(BoundaryNames, MovingBoundariesHoldingEveryNodeAreRefused)
     EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)) == nullptr, refused) << moving;
     EXPECT_EQ(errors.Contains("hold every node of the mesh"), refused) << moving;
   }
+}
+
+TEST(BoundaryNames, AnEntryOfAnEmptyBlockIsSaid)
+{
+  // An OpenFOAM patch of no faces named as slip (accepted without a word until 2026-11-30): it
+  // has no effect, and the warning says so; the result is that of the run without it.
+  vtkSmartPointer<vtkMultiBlockDataSet> blocks = dgmf_test::HexBoxBlocks(3, "");
+  auto* boundary = vtkMultiBlockDataSet::SafeDownCast(blocks->GetBlock(1));
+  const unsigned int last = boundary->GetNumberOfBlocks();
+  boundary->SetBlock(last, vtkNew<vtkPolyData>());
+  boundary->GetMetaData(last)->Set(vtkCompositeDataSet::NAME(), "left");
+  vtkNew<vtkDGMFDeformFilter> filter;
+  dgmf_test::ErrorMessages warnings(filter, vtkCommand::WarningEvent);
+  filter->SetInputData(blocks);
+  filter->AddMovingBoundary("xmin");
+  filter->AddSlipBoundary("left");
+  filter->SetTranslation(0.1, 0.0, 0.0);
+  filter->Update();
+  ASSERT_NE(VolumeOf(filter->GetOutputDataObject(0)), nullptr);
+  EXPECT_TRUE(warnings.Contains("The boundaries 'left' (slip) hold no point of the input"));
 }
 
 TEST(BoundaryNames, MovingNodesOnStaticBoundariesAreSaid)
