@@ -36,6 +36,12 @@ const CompositeMesh& CompositeMeshCache::Get(
   vtkCompositeDataSet* input, const std::string& displacementName, const std::string& markerName)
 {
   std::vector<LeafKey> leaves = KeyOf(input);
+  this->LeafChangedInPlace = false;
+  for (std::size_t k = 0; this->Input == input && k < leaves.size() && k < this->Leaves.size(); ++k)
+  {
+    this->LeafChangedInPlace = this->LeafChangedInPlace ||
+      (leaves[k].Object == this->Leaves[k].Object && leaves[k].MTime != this->Leaves[k].MTime);
+  }
   this->Reused = !DistrustedObjects::Active() && this->Mesh && this->Input == input &&
     this->Leaves == leaves && this->Displacement == displacementName && this->Marker == markerName;
   if (!this->Reused)

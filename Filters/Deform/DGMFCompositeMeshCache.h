@@ -42,6 +42,11 @@ public:
   /// True when the last Get() returned the kept merge.
   bool WasReused() const { return this->Reused; }
 
+  /// True when the last Get() found a leaf of the kept input changed in place (the same object,
+  /// a new MTime): the new merge may share that leaf's arrays, whose own MTimes need not have
+  /// changed (DistrustedObjects).
+  bool FoundLeafChangedInPlace() const { return this->LeafChangedInPlace; }
+
   /// Counts the merges made: what is derived from a merge is valid while this is unchanged.
   std::uint64_t GetGeneration() const { return this->Generation; }
 
@@ -69,6 +74,7 @@ private:
   std::string Displacement, Marker;
   std::unique_ptr<CompositeMesh> Mesh;
   bool Reused = false;
+  bool LeafChangedInPlace = false;
   std::uint64_t Generation = 0;
 };
 

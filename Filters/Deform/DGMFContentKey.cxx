@@ -108,6 +108,7 @@ bool ContentKey::Matches(vtkObject* object, const std::function<std::uint64_t()>
   }
   this->Object = object;
   this->MTime = object->GetMTime();
+  this->VerifiedEpoch = DistrustedObjects::Epoch();
   return true;
 }
 
@@ -118,12 +119,13 @@ void ContentKey::Set(vtkObject* object, const std::function<std::uint64_t()>& ha
   this->Hash = hash();
   this->Valid = true;
   this->ObjectOnly = false;
+  this->VerifiedEpoch = DistrustedObjects::Epoch();
 }
 
 bool ContentKey::MatchesObject(vtkObject* object) const
 {
   return this->Valid && this->Object == object && this->MTime == object->GetMTime() &&
-    !DistrustedObjects::Active();
+    (!DistrustedObjects::Active() || this->VerifiedEpoch == DistrustedObjects::Epoch());
 }
 
 namespace
@@ -133,6 +135,12 @@ std::atomic<int>& DistrustCount()
   static std::atomic<int> count{ 0 };
   return count;
 }
+
+std::atomic<std::uint64_t>& DistrustEpoch()
+{
+  static std::atomic<std::uint64_t> epoch{ 0 };
+  return epoch;
+}
 } // namespace
 
 DistrustedObjects::DistrustedObjects(bool active)
@@ -140,6 +148,7 @@ DistrustedObjects::DistrustedObjects(bool active)
 {
   if (this->Counted)
   {
+    ++DistrustEpoch();
     ++DistrustCount();
   }
 }
@@ -157,6 +166,11 @@ bool DistrustedObjects::Active()
   return DistrustCount().load() > 0;
 }
 
+std::uint64_t DistrustedObjects::Epoch()
+{
+  return DistrustEpoch().load();
+}
+
 void ContentKey::SetHash(std::uint64_t hash)
 {
   this->Hash = hash;
@@ -170,6 +184,7 @@ void ContentKey::SetObjectOnly(vtkObject* object)
   this->Hash = 0;
   this->Valid = true;
   this->ObjectOnly = true;
+  this->VerifiedEpoch = DistrustedObjects::Epoch();
 }
 
 } // namespace dgmf_vtk

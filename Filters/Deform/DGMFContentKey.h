@@ -44,7 +44,9 @@ std::uint64_t HashCells(vtkUnstructuredGrid* mesh, bool onThreads = true);
  * and no composite merge is reused. The filter opens one for an execution whose input was marked
  * Modified() since its last execution: grid->Modified() after the grid's points or cells were
  * changed in place leaves their arrays' own MTimes as they were (the graph built for the old
- * points was reused until 2026-11-30). Costs hashing or work done again, never a wrong match.
+ * points was reused until 2026-11-30). Costs hashing or work done again, never a wrong match;
+ * each activation starts an epoch, and a key verified by its hash (or set) in the current epoch
+ * is trusted again for the rest of it, so one execution hashes each array once.
  */
 class DistrustedObjects
 {
@@ -55,6 +57,8 @@ public:
   DistrustedObjects& operator=(const DistrustedObjects&) = delete;
   /// True while any active instance lives.
   static bool Active();
+  /// The number of activations so far (the current epoch).
+  static std::uint64_t Epoch();
 
 private:
   bool Counted;
@@ -91,6 +95,7 @@ private:
   const void* Object = nullptr;
   vtkMTimeType MTime = 0;
   std::uint64_t Hash = 0;
+  std::uint64_t VerifiedEpoch = 0; ///< DistrustedObjects::Epoch() when last hashed or set
   bool Valid = false;
   bool ObjectOnly = false; ///< SetObjectOnly: no hash to compare
 };

@@ -419,7 +419,7 @@ void InputGatherer::GatherKinds(
   // HugePages.h).
   if (marker &&
     !(this->Marker == marker && this->MarkerMTime == marker->GetMTime() &&
-      this->MarkerKinds.size() == n))
+      !DistrustedObjects::Active() && this->MarkerKinds.size() == n))
   {
     this->Marker = nullptr;      // until the conversion succeeds
     this->MarkerKinds.resize(n); // every kind written by the conversion

@@ -32,6 +32,7 @@
 #include <chrono>
 #include <exception>
 #include <new>
+#include <optional>
 #include <system_error>
 
 vtkStandardNewMacro(vtkDGMFDeformFilter);
@@ -323,16 +324,24 @@ int vtkDGMFDeformFilter::RequestData(
     output = mergedOutput;
   }
   int status = 0;
-  // The input marked Modified() since the last execution (its points or cells changed in place,
-  // then grid->Modified()): compared by content, not by its arrays' identity and MTime.
-  const dgmf_vtk::DistrustedObjects distrust(inputObject == internal.LastInput &&
-    inputObject->vtkObject::GetMTime() != internal.LastInputMTime);
+  // An input marked Modified() since the last execution (its points or cells changed in place,
+  // then grid->Modified()), or another input object (one changed in place while another was
+  // deformed): compared by content, not by its arrays' identity and MTime; in a distributed run
+  // on every process when on one (the graph holds every piece's boundary nodes).
+  bool changed = inputObject != internal.LastInput ||
+    inputObject->vtkObject::GetMTime() != internal.LastInputMTime;
+  if (dgmf_vtk::IsDistributed(this->Controller))
+  {
+    changed = !dgmf_vtk::AllProcessesAgree(this->Controller, !changed);
+  }
+  const dgmf_vtk::DistrustedObjects distrust(changed);
   try
   {
     dgmf_vtk::RunWithThreads(this->NumberOfThreads,
       [&]()
       {
         std::string mergeFailure;
+        std::optional<dgmf_vtk::DistrustedObjects> leafDistrust;
         if (merged)
         {
           // Kept while the blocks are unchanged: a new motion does not merge them again. In a
@@ -343,6 +352,11 @@ int vtkDGMFDeformFilter::RequestData(
               dgmf_vtk::GetSelectedArrays(this, compositeInput);
             composite = &this->Internal->Cache->Composite.Get(
               compositeInput, arrays.Displacement, arrays.Marker);
+            // A block changed in place (block->Modified()): the merge may share its arrays.
+            if (this->Internal->Cache->Composite.FoundLeafChangedInPlace())
+            {
+              leafDistrust.emplace(true);
+            }
           }
           catch (const std::bad_alloc&)
           {

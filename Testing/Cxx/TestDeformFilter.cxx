@@ -352,6 +352,18 @@ TEST(DeformFilter, CachedGraphIsReusedForANewMotionAndRebuiltForANewMarking)
   moved->Modified();
   filter->Update();
   EXPECT_TRUE(filter->GetLastExecutionReusedGraph());
+
+  // The marker changed in place and the grid marked: the new marking is read (the kinds of the
+  // old one were kept, and with them the graph, until a review of 2026-11-30).
+  vtkDataArray* movedMarker = moved->GetPointData()->GetArray("BoundaryMarker");
+  vtkIdType another = interior + 1;
+  while (movedMarker->GetTuple1(another) != 0)
+    ++another;
+  movedMarker->SetTuple1(another, 1); // no MTime change of the array
+  moved->Modified();
+  filter->Update();
+  EXPECT_FALSE(filter->GetLastExecutionReusedGraph());
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("r")->GetTuple1(another), 1.0);
 }
 
 TEST(DeformFilter, ANullArrayNameGivesTheDefaultBack)
