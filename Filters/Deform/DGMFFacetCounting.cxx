@@ -8,8 +8,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
-#include <map>
+#include <cstdint>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -23,6 +24,33 @@ struct PairHash
   std::size_t operator()(const std::pair<vtkIdType, vtkIdType>& p) const
   {
     return std::hash<vtkIdType>()(p.first) * 1000003u ^ std::hash<vtkIdType>()(p.second);
+  }
+};
+
+/// A face by its corner nodes: the smallest four, sorted, and how many it has (a polygon of
+/// more corners is known by its four smallest: two faces of a conforming mesh sharing four
+/// corners are one face).
+struct FaceKey
+{
+  std::array<vtkIdType, 4> Corners;
+  vtkIdType Count;
+  bool operator==(const FaceKey& other) const
+  {
+    return this->Corners == other.Corners && this->Count == other.Count;
+  }
+};
+
+struct FaceKeyHash
+{
+  std::size_t operator()(const FaceKey& key) const
+  {
+    std::uint64_t h = static_cast<std::uint64_t>(key.Count) * 0x9e3779b97f4a7c15ull;
+    for (vtkIdType id : key.Corners)
+    {
+      h = (h ^ static_cast<std::uint64_t>(id)) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return static_cast<std::size_t>(h);
   }
 };
 
@@ -96,10 +124,11 @@ void FindBoundaryEdgesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets& face
 void FindBoundaryFacesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets& facets)
 {
   // Count how many 3D cells use each face (keyed by its sorted corner nodes); faces used once are
-  // on the boundary. Only for the meshes the face matching does not read: a map is enough.
-  std::map<std::vector<vtkIdType>, int> uses;
+  // on the boundary.
+  std::unordered_map<FaceKey, int, FaceKeyHash> uses;
+  uses.reserve(static_cast<std::size_t>(3 * mesh->GetNumberOfCells()));
   vtkNew<vtkGenericCell> cell;
-  std::vector<vtkIdType> key, ids;
+  std::vector<vtkIdType> corners, ids;
   vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
   for (int pass = 0; pass < 2; ++pass)
   {
@@ -124,8 +153,10 @@ void FindBoundaryFacesByCounting(vtkUnstructuredGrid* mesh, BoundaryFacets& face
       {
         vtkCell* face = cell->GetFace(f);
         vtkIdList* points = face->GetPointIds();
-        key.assign(points->GetPointer(0), points->GetPointer(0) + CornersOf(face));
-        std::sort(key.begin(), key.end());
+        corners.assign(points->GetPointer(0), points->GetPointer(0) + CornersOf(face));
+        std::sort(corners.begin(), corners.end());
+        FaceKey key{ { -1, -1, -1, -1 }, static_cast<vtkIdType>(corners.size()) };
+        std::copy_n(corners.begin(), std::min<std::size_t>(4, corners.size()), key.Corners.begin());
         if (pass == 0)
         {
           ++uses[key];

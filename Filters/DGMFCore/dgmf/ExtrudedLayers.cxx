@@ -152,14 +152,26 @@ Extremes FindExtremes(const double* points, std::size_t begin, std::size_t end)
  * False when the nodes are not so.
  */
 bool FindLayersWithin(const double* points, std::size_t n, int axis, double low, double high,
-  double tolerance, ExtrudedLayers& layers)
+  double tolerance, const ParallelFor& parallelFor, ExtrudedLayers& layers)
 {
+  // The nodes near each plane, counted on the threads in fixed blocks.
+  const std::size_t blocks = (n + ExtremesBlock - 1) / ExtremesBlock;
+  std::vector<std::size_t> lowPerBlock(blocks, 0), highPerBlock(blocks, 0);
+  ForEachBlock(parallelFor, blocks,
+    [&](std::size_t block)
+    {
+      for (std::size_t i = block * ExtremesBlock; i < std::min(n, (block + 1) * ExtremesBlock); ++i)
+      {
+        const double value = points[3 * i + axis];
+        lowPerBlock[block] += std::abs(value - low) <= tolerance ? 1 : 0;
+        highPerBlock[block] += std::abs(value - high) <= tolerance ? 1 : 0;
+      }
+    });
   std::size_t lowNodes = 0, highNodes = 0;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t block = 0; block < blocks; ++block)
   {
-    const double value = points[3 * i + axis];
-    lowNodes += std::abs(value - low) <= tolerance ? 1 : 0;
-    highNodes += std::abs(value - high) <= tolerance ? 1 : 0;
+    lowNodes += lowPerBlock[block];
+    highNodes += highPerBlock[block];
   }
   if (lowNodes != highNodes || 3 * lowNodes <= n || !(high - low > 2 * tolerance))
   {
@@ -393,7 +405,7 @@ ExtrudedLayers FindExtrudedLayers(
   for (int axis = 0; axis < 3; ++axis)
   {
     if (extent[axis] > 0.0 && 4.0 * extent[axis] <= largest && std::isfinite(diagonal) &&
-      FindLayersWithin(points, n, axis, low[axis], high[axis], tolerance, layers))
+      FindLayersWithin(points, n, axis, low[axis], high[axis], tolerance, parallelFor, layers))
     {
       return layers;
     }
