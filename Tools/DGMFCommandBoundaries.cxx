@@ -82,13 +82,19 @@ void PrintBoundaries(const CommandOptions& options, const std::vector<std::strin
     }
     return false;
   };
-  // A name the file does not have is the filter's error, which names it: no listing before it.
+  // A name the file does not have is the filter's error, which names it: no listing before it
+  // (nor for an alternative of an entry, 'wing|typo').
   for (const std::string& entry : chosen)
   {
-    if (std::none_of(fileNames.begin(), fileNames.end(),
-          [&](const std::string& name) { return reaches(entry, name); }))
+    const bool whole = inFile(entry) || entry.find('|') == std::string::npos;
+    for (const std::string& part :
+      whole ? std::vector<std::string>{ entry } : dgmf_vtk::Alternatives(entry))
     {
-      return;
+      if (std::none_of(fileNames.begin(), fileNames.end(),
+            [&](const std::string& name) { return reaches(part, name); }))
+      {
+        return;
+      }
     }
   }
   for (const std::string& name : fileNames)

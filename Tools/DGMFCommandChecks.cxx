@@ -47,6 +47,15 @@ std::string InputProblem(InputKind kind, const std::string& input)
       : "";
   }
   const fs::path caseDirectory = dgmf::openfoam::CaseDirectoryOf(input);
+  if (!fs::is_directory(caseDirectory, error))
+  {
+    return caseDirectory.string() + " (the case of " + input + ") does not exist";
+  }
+  if (!dgmf::openfoam::IsCase(caseDirectory))
+  {
+    return caseDirectory.string() + " (the case of " + input +
+      ") is not an OpenFOAM case (it has no system/controlDict)";
+  }
   if (fs::is_directory(caseDirectory / "constant" / "polyMesh", error))
   {
     return "";

@@ -459,8 +459,10 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     }
   }
   // Moving boundaries that hold every node (the empty patch of a 2D mesh, "frontAndBack": both
-  // planes of a one-cell-thick mesh) would only turn the mesh rigidly, as its volume block would.
-  // (A piece of a distributed mesh may lie on the body alone.)
+  // planes of a one-cell-thick mesh) leave nothing to interpolate: one body would move the mesh
+  // as itself, as its volume block would (refused); several bodies may be meant (a film between
+  // two moving walls: said). (A piece of a distributed mesh may lie on the body alone.)
+  std::string everyNodeMoving;
   if (!piece && n > 0 && movingNodes == n)
   {
     std::string names;
@@ -468,11 +470,15 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     {
       names += (names.empty() ? "'" : ", '") + entry + "'";
     }
-    throw std::invalid_argument("The moving boundaries (" + names +
+    everyNodeMoving = "The moving boundaries (" + names +
       ") hold every node of the mesh (the two planes of a one-cell-thick mesh, as an empty patch "
-      "frontAndBack, hold them all): the mesh would only move rigidly. Name the patches of the "
-      "body that moves. The input's blocks are: " +
-      ListBlockNames(mesh) + ".");
+      "frontAndBack, hold them all): nothing is interpolated, every node moves as its body. ";
+    if (selection.Moving.size() == 1)
+    {
+      throw std::invalid_argument(everyNodeMoving +
+        "Name the patches of the body that moves. The input's blocks are: " + ListBlockNames(mesh) +
+        ".");
+    }
   }
   std::vector<std::size_t> staticLeaves; // for the warning of moving nodes on them
   std::vector<bool> staticNamed;
@@ -518,6 +524,10 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
   }
 
   NodeRoles roles;
+  if (!everyNodeMoving.empty())
+  {
+    roles.Warnings.push_back(everyNodeMoving + "Check that these are the bodies meant.");
+  }
   if (!emptyEntries.empty())
   {
     std::string listed;

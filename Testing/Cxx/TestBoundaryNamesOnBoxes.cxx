@@ -245,6 +245,15 @@ TEST(BoundaryNames, MovingBoundariesHoldingEveryNodeAreRefused)
     EXPECT_EQ(VolumeOf(filter->GetOutputDataObject(0)) == nullptr, refused) << moving;
     EXPECT_EQ(errors.Contains("hold every node of the mesh"), refused) << moving;
   }
+  // Two bodies that hold every node (a film between two moving walls) may be meant: said.
+  vtkNew<vtkDGMFDeformFilter> twoBodies;
+  dgmf_test::ErrorMessages warnings(twoBodies, vtkCommand::WarningEvent);
+  twoBodies->SetInputData(dgmf_test::HexBoxBlocks(1, ""));
+  twoBodies->AddMovingBoundary("xmin");
+  twoBodies->AddMovingBoundary("xmax");
+  twoBodies->Update();
+  EXPECT_NE(VolumeOf(twoBodies->GetOutputDataObject(0)), nullptr);
+  EXPECT_TRUE(warnings.Contains("hold every node of the mesh"));
 }
 
 TEST(BoundaryNames, ABlockChangedInPlaceIsReadAgain)

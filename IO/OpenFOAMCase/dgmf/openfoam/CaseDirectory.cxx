@@ -132,7 +132,9 @@ std::vector<PatchEntry> ReadPatches(const fs::path& caseDirectory)
       }
     }
     // type cyclic;
-    std::istringstream entries(text.substr(nameEnd, close - nameEnd));
+    std::string body = text.substr(nameEnd, close - nameEnd);
+    std::replace(body.begin(), body.end(), '{', ' '); // "{type cyclic;"
+    std::istringstream entries(body);
     for (std::string word; entries >> word;)
     {
       if (word == "type" && entries >> patch.Type)
