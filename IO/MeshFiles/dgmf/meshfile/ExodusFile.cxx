@@ -429,7 +429,7 @@ static NamedMesh ReadExodusInThisProcess(const std::string& path)
   for (std::size_t s = 0; s < ids.size(); ++s)
   {
     mesh.Boundaries.push_back(
-      { names[s], ReadSideSet(file, ids[s], names[s], mesh, sizes.num_elem) });
+      { names[s], ReadSideSet(file, ids[s], names[s], mesh, sizes.num_elem), std::string() });
   }
   const std::size_t sideSets = mesh.Boundaries.size();
   ReadIdsAndNames(file, EX_NODE_SET, sizes.num_node_sets, "nodeset", ids, names);
@@ -441,12 +441,12 @@ static NamedMesh ReadExodusInThisProcess(const std::string& path)
       [&](const NamedBoundary& b) { return b.Name == names[s]; });
     if (twin == mesh.Boundaries.begin() + static_cast<std::ptrdiff_t>(sideSets))
     {
-      mesh.Boundaries.push_back({ names[s], std::move(nodes) });
+      mesh.Boundaries.push_back({ names[s], std::move(nodes), std::string() });
     }
     else if (NodesOf(twin->Faces) != nodes.Connectivity)
     {
       // A node set named as a side set but holding other nodes keeps its nodes under its own name.
-      mesh.Boundaries.push_back({ names[s] + " (node set)", std::move(nodes) });
+      mesh.Boundaries.push_back({ names[s] + " (node set)", std::move(nodes), std::string() });
     }
   }
   // Empty sets name nothing.
