@@ -1,6 +1,7 @@
 #include "DGMFCommandChecks.h"
 
 #include "DGMFCommandData.h"
+#include "DGMFCommandSeries.h"
 
 #include "dgmf/meshfile/MeshFileFormat.h"
 #include "dgmf/openfoam/CaseDirectory.h"
@@ -100,6 +101,19 @@ bool OptionsFitTheInput(InputKind kind, const CommandOptions& options, vtkDGMFDe
     std::cerr << "dgmf-deform: --time names the time directory of an OpenFOAM case; "
               << options.Input << " is not one\n";
     return false;
+  }
+  // A time written otherwise than OpenFOAM writes it ("1e1", "0.50"): a solver run writes its
+  // own directory of that time ("10", "0.5") beside it (silent until 2026-11-30).
+  double time = 0.0;
+  if (dgmf::openfoam::TimeValue(options.Time, time) &&
+    OpenFOAMTimeNames({ time }).front() != options.Time)
+  {
+    std::cerr << "dgmf-deform: warning: OpenFOAM names the time " << options.Time << " '"
+              << OpenFOAMTimeNames({ time }).front()
+              << "' (6 significant digits, its default): a solver run writes that directory "
+                 "beside "
+              << options.Time << "; write to --time " << OpenFOAMTimeNames({ time }).front()
+              << "\n";
   }
   if (options.MarkerGiven && options.ByName)
   {
