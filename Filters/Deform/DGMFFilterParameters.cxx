@@ -3,6 +3,9 @@
 #include "DGMFInputNodes.h"
 #include "vtkDGMFDeformFilter.h"
 
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -238,6 +241,21 @@ std::vector<dgmf::RigidMotion> BodyMotionTable::For(vtkDGMFDeformFilter* filter,
     }
   }
   return motions;
+}
+
+void SelectPointArray(vtkDGMFDeformFilter* filter, int index, const char* name)
+{
+  if (name)
+  {
+    filter->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+    return;
+  }
+  vtkInformation* info = filter->GetInputArrayInformation(index);
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    info->Remove(vtkDataObject::FIELD_NAME());
+    filter->Modified();
+  }
 }
 
 } // namespace dgmf_vtk

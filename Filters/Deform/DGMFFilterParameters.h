@@ -35,6 +35,10 @@ std::string SettingsError(vtkDGMFDeformFilter* filter);
 /// than DGMF), or "".
 std::string SettingsWarning(vtkDGMFDeformFilter* filter);
 
+/// Selects the point array `name` at `index` of `filter`; null forgets the selection, so that the
+/// default applies again (VTK's SetInputArrayToProcess ignores a null name: the old one stayed).
+void SelectPointArray(vtkDGMFDeformFilter* filter, int index, const char* name);
+
 /// The rigid motions given per body (vtkDGMFDeformFilter::SetBodyMotion).
 class BodyMotionTable
 {

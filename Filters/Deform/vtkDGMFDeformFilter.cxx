@@ -159,39 +159,19 @@ void vtkDGMFDeformFilter::RemoveAllSlipBoundaries()
   this->Modified();
 }
 
-namespace
-{
-/// Selects the point array `name` at `index` of `filter`; null forgets the selection, so that the
-/// default applies again (VTK's SetInputArrayToProcess ignores a null name: the old one stayed).
-void SelectPointArray(vtkDGMFDeformFilter* filter, int index, const char* name)
-{
-  if (name)
-  {
-    filter->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
-    return;
-  }
-  vtkInformation* info = filter->GetInputArrayInformation(index);
-  if (info && info->Has(vtkDataObject::FIELD_NAME()))
-  {
-    info->Remove(vtkDataObject::FIELD_NAME());
-    filter->Modified();
-  }
-}
-} // namespace
-
 void vtkDGMFDeformFilter::SetDisplacementArrayName(const char* name)
 {
-  SelectPointArray(this, dgmf_vtk::DisplacementArrayIndex, name);
+  dgmf_vtk::SelectPointArray(this, dgmf_vtk::DisplacementArrayIndex, name);
 }
 
 void vtkDGMFDeformFilter::SetBoundaryMarkerArrayName(const char* name)
 {
-  SelectPointArray(this, dgmf_vtk::MarkerArrayIndex, name);
+  dgmf_vtk::SelectPointArray(this, dgmf_vtk::MarkerArrayIndex, name);
 }
 
 void vtkDGMFDeformFilter::SetBodyIdArrayName(const char* name)
 {
-  SelectPointArray(this, dgmf_vtk::BodyIdArrayIndex, name);
+  dgmf_vtk::SelectPointArray(this, dgmf_vtk::BodyIdArrayIndex, name);
 }
 
 std::size_t vtkDGMFDeformFilter::GetCacheMemorySize() const
