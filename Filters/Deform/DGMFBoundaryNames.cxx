@@ -92,7 +92,12 @@ std::string MovingNodesOnStaticBlocks(const std::vector<CompositeMesh::Leaf>& le
     {
       shared += rank[static_cast<std::size_t>(leaf.Node(point))] == MovingRank ? 1 : 0;
     }
-    if (shared > 0 && ++blocks <= 5)
+    // A node set (an Exodus file's boundaries as meshio writes them) wholly on the body shears
+    // nothing; one partly on it is a boundary the body drags (no warning for them until
+    // 2026-11-30).
+    const bool nodeSet = leaf.CellDimension == 0;
+    if (shared > 0 && (!nodeSet || shared < static_cast<std::size_t>(leaf.NumberOfPoints)) &&
+      ++blocks <= 5)
     {
       listed += std::string(listed.empty() ? "" : ", ") + "'" + LabelOf(leaf) + "' (" +
         std::to_string(shared) + (named[k] ? "" : ", static for not being named") + ")";
@@ -515,11 +520,8 @@ NodeRoles AssignRoles(const CompositeMesh& mesh, const BoundarySelection& select
     if (!inPlane)
     {
       mark(l, StaticRank, 0);
-      if (leaves[l].CellDimension > 0) // (a node set on the body shears nothing)
-      {
-        staticLeaves.push_back(l);
-        staticNamed.push_back(false);
-      }
+      staticLeaves.push_back(l);
+      staticNamed.push_back(false);
     }
   }
 
