@@ -43,8 +43,13 @@ std::string InputProblem(InputKind kind, const std::string& input)
   }
   if (kind != InputKind::OpenFOAMCase)
   {
-    return fs::is_directory(input, error)
-      ? input + " is a directory but not an OpenFOAM case (it has no system/controlDict)"
+    if (fs::is_directory(input, error))
+    {
+      return input + " is a directory but not an OpenFOAM case (it has no system/controlDict)";
+    }
+    // (The Exodus and CGNS libraries word an empty file as one that does not exist.)
+    return fs::is_regular_file(input, error) && fs::file_size(input, error) == 0 && !error
+      ? input + " is empty (0 bytes)"
       : "";
   }
   const fs::path caseDirectory = dgmf::openfoam::CaseDirectoryOf(input);

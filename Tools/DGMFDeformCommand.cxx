@@ -474,8 +474,18 @@ int main(int argc, char* argv[])
       : dgmf_cli::BoundaryNamesOf(reader->GetOutputDataObject(0));
     if (!options.ByName && !options.MarkerGiven)
     {
+      // With their families (a CGNS FamilyName), which name boundaries too.
+      std::vector<std::string> labels = names;
+      const std::vector<std::string> families = kind == InputKind::OpenFOAMCase
+        ? std::vector<std::string>()
+        : dgmf_cli::BoundaryFamiliesOf(reader->GetOutputDataObject(0));
+      for (std::size_t k = 0; k < labels.size() && k < families.size(); ++k)
+      {
+        labels[k] +=
+          families[k].empty() || families[k] == labels[k] ? "" : " (family " + families[k] + ")";
+      }
       std::cerr << "dgmf-deform: name the moving boundaries with --moving (the file has: "
-                << dgmf_cli::Listed(names) << ")\n";
+                << dgmf_cli::Listed(labels) << ")\n";
       return ExitUsage;
     }
     filter->SetInputConnection(reader->GetOutputPort());
