@@ -140,11 +140,15 @@ TEST(BoundaryNames, AnEntryOfSeveralBlocksIsOneBody)
   { return PointsAfterTranslation(dgmf_test::HexBoxBlocks(n, ""), moving, error); };
   const std::vector<double> glob = run({ "y*" });
   const std::vector<double> alternatives = run({ "ymin | ymax" });
-  const std::vector<double> twoBodies = run({ "ymin", "ymax" });
+  // Two bodies differ from one where a graph element touches both (the damping is not linear):
+  // adjacent sides, whose common edge such elements surround (opposite sides of the cube may
+  // have no node in an element touching both, and then give the same points either way).
+  const std::vector<double> adjacentOne = run({ "ymin|zmin" });
+  const std::vector<double> twoBodies = run({ "ymin", "zmin" });
   const std::size_t side = n + 1;
   ASSERT_EQ(glob.size(), 3 * side * side * side);
   EXPECT_EQ(glob, alternatives);
-  EXPECT_NE(glob, twoBodies);
+  EXPECT_NE(adjacentOne, twoBodies);
   for (std::size_t i = 0; i < side * side * side; ++i)
   {
     const std::size_t y = i / side % side;

@@ -27,15 +27,17 @@ std::uint64_t Mix(std::uint64_t x)
   return x ^ (x >> 31);
 }
 
-/// A hash of the point's coordinate bits.
-std::uint64_t HashPoint(const double* p, int dimension)
+/// A hash of the point's coordinates rounded to a grid of spacing `cell` from `origin`
+/// (PerturbPoints).
+std::uint64_t HashPoint(const double* p, int dimension, const double* origin, double cell)
 {
   std::uint64_t h = 0x12345678ull;
   for (int c = 0; c < dimension; ++c)
   {
-    std::uint64_t bits;
-    std::memcpy(&bits, p + c, sizeof(bits));
-    h = Mix(h ^ bits);
+    // To the nearest grid point: a mesh's round values (i / 8 of its size) lie on grid points,
+    // far from the half-way lines where round-off could change the hash.
+    const double q = std::floor((p[c] - origin[c]) / cell + 0.5);
+    h = Mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(q)));
   }
   return h;
 }
@@ -115,11 +117,29 @@ std::vector<double> PerturbPoints(
   }
   const std::vector<double> nearest =
     dimension == 2 ? NearestDistances<2>(unique) : NearestDistances<3>(unique);
+  // The grid the directions are hashed on: 2^-33 of the bounding box (about 1e-10), far above
+  // round-off and far below any mesh spacing (coordinates are finite: ValidateProblem).
+  double origin[3] = { unique[0][0], unique[0][1], unique[0][2] },
+         top[3] = { origin[0], origin[1], origin[2] };
+  for (const auto& p : unique)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      origin[c] = std::min(origin[c], p[c]);
+      top[c] = std::max(top[c], p[c]);
+    }
+  }
+  double size = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    size = std::max(size, top[c] - origin[c]);
+  }
+  const double cell = size > 0.0 && std::isfinite(size) ? std::ldexp(size, -33) : 1.0;
   for (std::size_t i = 0; i < count; ++i)
   {
     const std::size_t u = uniqueOf[i];
     const double step = relative * nearest[u];
-    std::uint64_t h = HashPoint(unique[u].data(), dimension);
+    std::uint64_t h = HashPoint(unique[u].data(), dimension, origin, cell);
     for (int c = 0; c < 3; ++c)
     {
       h = Mix(h);

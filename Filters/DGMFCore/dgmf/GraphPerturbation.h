@@ -25,8 +25,13 @@ constexpr double GraphPerturbation = 1e-11;
 /**
  * Copies of `count` points (3 coordinates each; in 2D z is ignored and set to 0), each moved by at
  * most `relative` times the distance to its nearest distinct neighbour (per coordinate), in a
- * direction that is a hash of its coordinates: deterministic, and coincident points stay
- * coincident.
+ * direction that is a hash of its coordinates rounded to the nearest point of a grid of 2^-33 of
+ * the points' bounding box: deterministic, coincident points stay coincident, and the same mesh
+ * written with other round-off (an ASCII and a binary file: last-bit differences) gets the same
+ * directions but where a coordinate lies within its round-off of a half-way line (a mesh's round
+ * values lie on grid points) (the directions followed the coordinates'
+ * bits until 2026-11-30: a degenerate boundary, such as a structured grid's, then took another
+ * of its equally valid graphs, and interior nodes moved differently).
  */
 std::vector<double> PerturbPoints(
   int dimension, const double* xyz, std::size_t count, double relative);
