@@ -7,6 +7,7 @@
 #include "dgmf/ResultNames.h"
 #include "dgmf/openfoam/CaseDirectory.h"
 
+#include "DGMFBoundaryNameParts.h"
 #include "DGMFCommandMessages.h"
 #include "DGMFVTUReader.h"
 #include "DGMFVTUWriter.h"
@@ -214,12 +215,7 @@ std::vector<std::string> BoundaryFamiliesOf(vtkDataObject* blocks)
   {
     if (leaf.Name != "internalMesh")
     {
-      vtkFieldData* fields = leaf.Data ? leaf.Data->GetFieldData() : nullptr;
-      auto* family = fields
-        ? vtkStringArray::SafeDownCast(fields->GetAbstractArray(dgmf::names::BoundaryFamily))
-        : nullptr;
-      families.push_back(
-        family && family->GetNumberOfValues() > 0 ? family->GetValue(0) : std::string());
+      families.push_back(dgmf_vtk::FamilyOfBlock(leaf.Data));
     }
   }
   return families;

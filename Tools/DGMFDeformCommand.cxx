@@ -15,6 +15,7 @@
  * is printed on one line. Exit codes: DGMFCommandOptions.h (ExitCode). Messages:
  * DGMFCommandMessages.h.
  */
+#include "DGMFBoundaryNameParts.h"
 #include "DGMFCommandBoundaries.h"
 #include "DGMFCommandChecks.h"
 #include "DGMFCommandData.h"
@@ -481,8 +482,7 @@ int main(int argc, char* argv[])
         : dgmf_cli::BoundaryFamiliesOf(reader->GetOutputDataObject(0));
       for (std::size_t k = 0; k < labels.size() && k < families.size(); ++k)
       {
-        labels[k] +=
-          families[k].empty() || families[k] == labels[k] ? "" : " (family " + families[k] + ")";
+        labels[k] = dgmf_vtk::WithFamily(labels[k], families[k]);
       }
       std::cerr << "dgmf-deform: name the moving boundaries with --moving (the file has: "
                 << dgmf_cli::Listed(labels) << ")\n";

@@ -76,13 +76,23 @@ int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& nam
   return -1;
 }
 
+std::string FamilyOfBlock(vtkDataObject* block)
+{
+  vtkFieldData* fields = block ? block->GetFieldData() : nullptr;
+  auto* family = fields
+    ? vtkStringArray::SafeDownCast(fields->GetAbstractArray(dgmf::names::BoundaryFamily))
+    : nullptr;
+  return family && family->GetNumberOfValues() > 0 ? family->GetValue(0) : std::string();
+}
+
 std::string FamilyOf(vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf)
 {
-  auto* block = input ? input->GetDataSet(leaf.FlatIndex) : nullptr;
-  auto* family = block ? vtkStringArray::SafeDownCast(
-                           block->GetFieldData()->GetAbstractArray(dgmf::names::BoundaryFamily))
-                       : nullptr;
-  return family && family->GetNumberOfValues() > 0 ? family->GetValue(0) : std::string();
+  return FamilyOfBlock(input ? input->GetDataSet(leaf.FlatIndex) : nullptr);
+}
+
+std::string WithFamily(const std::string& name, const std::string& family)
+{
+  return family.empty() || family == name ? name : name + " (family " + family + ")";
 }
 
 vtkIdType GhostVolumeCellsOfAPatch(

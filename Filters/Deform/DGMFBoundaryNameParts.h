@@ -17,6 +17,7 @@
 #include <vector>
 
 class vtkCompositeDataSet;
+class vtkDataObject;
 
 namespace dgmf_vtk
 {
@@ -33,9 +34,16 @@ std::string SelectorOf(const std::string& entry);
 /// (dgmf::names::NonBoundaryGroups, from a mesh file), or -1.
 int NonBoundaryGroupDimension(vtkCompositeDataSet* input, const std::string& name);
 
-/// The file's group of boundaries the block of `leaf` is in (dgmf::names::BoundaryFamily: a CGNS
-/// family), or "".
+/// The file's group of boundaries `block` is in (field data dgmf::names::BoundaryFamily: a CGNS
+/// family), or "" (also for null).
+std::string FamilyOfBlock(vtkDataObject* block);
+
+/// FamilyOfBlock of the block of `leaf`.
 std::string FamilyOf(vtkCompositeDataSet* input, const CompositeMesh::Leaf& leaf);
+
+/// `name` for messages with its family: "wing_upper (family wing)"; the name alone without one
+/// or when the family has the name.
+std::string WithFamily(const std::string& name, const std::string& family);
 
 /// For a block of `leaf` whose own cells (not ghost) include cells of a lower dimension than
 /// `dimension` (a patch): its ghost cells (vtkGhostType) of dimension `dimension` or more; 0 for

@@ -178,9 +178,8 @@ std::string ListBlockNames(const CompositeMesh& mesh)
   std::string names;
   for (const CompositeMesh::Leaf& leaf : mesh.GetLeaves())
   {
-    const std::string family = FamilyOf(mesh.GetInput(), leaf);
-    names += (names.empty() ? "" : ", ") + LabelOf(leaf) +
-      (family.empty() || family == leaf.Name ? "" : " (family " + family + ")");
+    names +=
+      (names.empty() ? "" : ", ") + WithFamily(LabelOf(leaf), FamilyOf(mesh.GetInput(), leaf));
   }
   return names;
 }
