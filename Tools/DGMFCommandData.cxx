@@ -110,14 +110,7 @@ bool IsOpenFOAMCase(const std::string& path)
 
 vtkSmartPointer<vtkUnstructuredGrid> ReadMeshFile(const std::string& path)
 {
-  SetStage("reading " + path);
-  std::error_code error;
-  if (fs::is_regular_file(path, error) && fs::file_size(path, error) == 0 && !error)
-  {
-    // VTK's readers would only say that the XML does not parse.
-    std::cerr << "dgmf-deform: error: " << path << " is empty (0 bytes)\n";
-    return nullptr;
-  }
+  SetStage("reading " + path); // (an empty file is said before: InputProblem)
   if (EndsWith(path, ".vtk"))
   {
     vtkNew<vtkUnstructuredGridReader> reader;
